@@ -6,5 +6,6 @@
 
 pub mod camera;
 pub mod config;
+pub mod gradcheck;
 pub mod image_io;
 pub mod surfels;

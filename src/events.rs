@@ -1,0 +1,49 @@
+//! Typed training events: one stream consumed by the progress bar, the JSON-lines progress file and
+//! the service's job records, so the three never disagree.
+
+use serde::{Deserialize, Serialize};
+
+/// The stage of the schedule (METHOD.md §7).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stage {
+    /// Plain 2DGS: colour = albedo, photometric + mask + depth–normal losses.
+    Geometry,
+    /// Environment map and roughness warm-up.
+    Material,
+    /// PolarDR with the Stokes loss.
+    Polar,
+}
+
+/// What a training run reports while it runs.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum TrainEvent {
+    /// The run started (or resumed from `resumed_from`).
+    Started {
+        iterations: u32,
+        mode: String,
+        backend: String,
+        train_views: usize,
+        test_views: usize,
+        resumed_from: Option<u32>,
+    },
+    /// One optimization step finished (emitted every few steps, not every one).
+    Step {
+        iteration: u32,
+        iterations: u32,
+        stage: Stage,
+        /// Total loss and its named terms.
+        loss: f64,
+        losses: std::collections::BTreeMap<String, f64>,
+        num_surfels: usize,
+        elapsed_seconds: f64,
+        eta_seconds: f64,
+    },
+    /// Test-view PSNR (sRGB 8-bit S0 inside the mask).
+    Evaluated { iteration: u32, test_psnr: f64 },
+    /// A checkpoint was written; training can resume from here.
+    Checkpoint { iteration: u32 },
+    /// The run finished; the model folder is complete.
+    Finished { iteration: u32, seconds: f64 },
+}

@@ -5,7 +5,9 @@
 //! `shared/docs/METHOD.md`; each module is named after the concept it computes.
 
 pub mod camera;
+pub mod checkpoint;
 pub mod config;
+pub mod densify;
 pub mod events;
 pub mod gradcheck;
 pub mod image_io;

@@ -134,9 +134,9 @@ pub fn plan(surfels: &Surfels, stats: &DensifyStats, rules: &DensifyRules) -> De
     // preserved copy, so they must survive retain; keep them and mark them for removal after.
     let mut remap = vec![usize::MAX; n];
     let mut next = 0;
-    for i in 0..n {
-        if keep[i] || split.binary_search(&i).is_ok() {
-            remap[i] = next;
+    for (i, (slot, &kept)) in remap.iter_mut().zip(&keep).enumerate() {
+        if kept || split.binary_search(&i).is_ok() {
+            *slot = next;
             next += 1;
         }
     }

@@ -92,7 +92,7 @@ impl DensifyRules {
 /// new positions and scales written by [`apply`]).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct DensifyPlan {
-    /// One flag per surfel before the pass; false = removed (pruned, or split and replaced).
+    /// One flag per surfel before the pass; false = pruned.
     pub keep: Vec<bool>,
     /// Indices (in the kept, re-indexed array) whose copies are appended, in order.
     pub append_from: Vec<usize>,
@@ -108,53 +108,41 @@ pub fn plan(surfels: &Surfels, stats: &DensifyStats, rules: &DensifyRules) -> De
     let mut clone = Vec::new();
     let mut split = Vec::new();
     let mut budget = rules.max_surfels.saturating_sub(n);
-    let mut pruned = 0;
-    for i in 0..n {
+    for (i, kept) in keep.iter_mut().enumerate() {
         let max_scale = surfels.log_scale[i][0].max(surfels.log_scale[i][1]).exp();
         let opacity = sigmoid(surfels.opacity[i]);
         if opacity < rules.prune_opacity || max_scale > rules.prune_scale {
-            keep[i] = false;
-            pruned += 1;
-            continue;
-        }
-        if stats.mean(i) < rules.grad_threshold || budget == 0 {
-            continue;
-        }
-        if max_scale <= rules.split_scale {
-            clone.push(i);
+            *kept = false;
+        } else if stats.mean(i) >= rules.grad_threshold && budget > 0 {
+            // A clone adds one surfel; a split replaces one by two: both grow the count by one.
             budget -= 1;
-        } else {
-            // A split replaces one surfel by two: net growth of one.
-            split.push(i);
-            keep[i] = false;
-            budget -= 1;
+            if max_scale <= rules.split_scale {
+                clone.push(i);
+            } else {
+                split.push(i);
+            }
         }
     }
-    // Re-index into the kept array: the originals of split surfels are appended twice from a
-    // preserved copy, so they must survive retain; keep them and mark them for removal after.
+    // Indices after `retain(keep)`: split parents survive it and are dropped by `apply` once their
+    // two children have been appended.
     let mut remap = vec![usize::MAX; n];
     let mut next = 0;
-    for (i, (slot, &kept)) in remap.iter_mut().zip(&keep).enumerate() {
-        if kept || split.binary_search(&i).is_ok() {
+    for (slot, &kept) in remap.iter_mut().zip(&keep) {
+        if kept {
             *slot = next;
             next += 1;
         }
     }
     let mut append_from: Vec<usize> = clone.iter().map(|&i| remap[i]).collect();
     for &i in &split {
-        append_from.push(remap[i]);
-        append_from.push(remap[i]);
-    }
-    let mut keep_for_retain = keep.clone();
-    for &i in &split {
-        keep_for_retain[i] = true;
+        append_from.extend([remap[i], remap[i]]);
     }
     DensifyPlan {
-        keep: keep_for_retain,
+        pruned: keep.iter().filter(|k| !**k).count(),
+        keep,
         append_from,
         cloned: clone.len(),
         split: split.len(),
-        pruned,
     }
 }
 

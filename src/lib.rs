@@ -5,10 +5,13 @@
 //! `shared/docs/METHOD.md`; each module is named after the concept it computes.
 
 pub mod camera;
+pub mod capture;
 pub mod checkpoint;
 pub mod config;
 pub mod densify;
 pub mod events;
 pub mod gradcheck;
 pub mod image_io;
+pub mod mesh_io;
+pub mod ply;
 pub mod surfels;

@@ -3,6 +3,9 @@
 //! Parameters are stored structure-of-arrays so the optimizer can treat each group as one flat
 //! slice. Gradients with respect to the raw parameters use the same layout ([`SurfelGrads`]).
 
+pub mod init;
+pub mod ply;
+
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
 /// Offset of the IoR activation: η = `IOR_MIN` + sigmoid(raw), so η ∈ (1.3, 2.3).

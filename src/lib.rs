@@ -8,4 +8,6 @@ pub mod camera;
 pub mod config;
 pub mod gradcheck;
 pub mod image_io;
+pub mod loss;
+pub mod optim;
 pub mod surfels;

@@ -12,6 +12,8 @@ pub mod densify;
 pub mod events;
 pub mod gradcheck;
 pub mod image_io;
+pub mod loss;
 pub mod mesh_io;
+pub mod optim;
 pub mod ply;
 pub mod surfels;

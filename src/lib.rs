@@ -9,5 +9,6 @@ pub mod config;
 pub mod gradcheck;
 pub mod image_io;
 pub mod loss;
+pub mod metrics;
 pub mod optim;
 pub mod surfels;

@@ -14,6 +14,7 @@ pub mod gradcheck;
 pub mod image_io;
 pub mod loss;
 pub mod mesh_io;
+pub mod metrics;
 pub mod optim;
 pub mod ply;
 pub mod surfels;

@@ -8,4 +8,5 @@ pub mod camera;
 pub mod config;
 pub mod gradcheck;
 pub mod image_io;
+pub mod raster;
 pub mod surfels;

@@ -17,4 +17,5 @@ pub mod mesh_io;
 pub mod metrics;
 pub mod optim;
 pub mod ply;
+pub mod raster;
 pub mod surfels;

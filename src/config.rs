@@ -62,6 +62,8 @@ pub struct TrainConfig {
     pub max_surfels: u32,
     /// Densification starts at this fraction of `iterations` (500 / 15,000).
     pub densify_from: f64,
+    /// Densification (and opacity resets) stop after this fraction of `iterations`.
+    pub densify_until: f64,
     /// Steps between densifications during the geometry stage.
     pub densify_interval: u32,
     /// Steps between densify/prune passes once PolarDR is on.
@@ -118,6 +120,7 @@ impl Default for TrainConfig {
             initial_surfels: 20_000,
             max_surfels: 300_000,
             densify_from: 500.0 / 15_000.0,
+            densify_until: 0.8,
             densify_interval: 100,
             densify_interval_polar: 500,
             densify_grad_threshold: 2e-4,
@@ -187,6 +190,9 @@ impl TrainConfig {
         }
         if !(0.0..=1.0).contains(&self.densify_from) {
             return bad("densify_from", "must be a fraction in [0, 1]");
+        }
+        if !(self.densify_from..=1.0).contains(&self.densify_until) {
+            return bad("densify_until", "must be a fraction in [densify_from, 1]");
         }
         if self.initial_surfels == 0 || self.initial_surfels > self.max_surfels {
             return bad("initial_surfels", "must be in 1..=max_surfels");

@@ -109,23 +109,26 @@ struct IntrinsicDefaults {
     camera_angle_x: Option<f64>,
 }
 
-/// Parses the whole JSON document of a capture rooted at `root`.
-pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
-    let mut problems = Vec::new();
+/// The top level of a capture document: conventions, intrinsics defaults and the frame list.
+struct Top<'a> {
+    header: Header,
+    camera_convention: CameraConvention,
+    stokes_convention: StokesConvention,
+    defaults: IntrinsicDefaults,
+    frames: &'a [Value],
+}
+
+fn parse_top<'a>(document: &'a Value, problems: &mut Vec<Problem>) -> Option<Top<'a>> {
     let Some(top) = document.as_object() else {
         problems.push(Problem::new(
             TOP_LEVEL,
             "(document)",
             "expected a JSON object with `frames`",
         ));
-        return Parsed {
-            header: default_header(),
-            frames: Vec::new(),
-            problems,
-        };
+        return None;
     };
     let top = Fields::new(top, TOP_LEVEL);
-    let camera_convention = match top.string("camera_convention", &mut problems) {
+    let camera_convention = match top.string("camera_convention", problems) {
         None | Some("OpenGL") | Some("opengl") => CameraConvention::OpenGL,
         Some("OpenCV") | Some("opencv") => CameraConvention::OpenCV,
         Some(other) => {
@@ -136,7 +139,7 @@ pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
             CameraConvention::OpenGL
         }
     };
-    let stokes_convention = match top.string("stokes_convention", &mut problems) {
+    let stokes_convention = match top.string("stokes_convention", problems) {
         None | Some("image_y_up") => StokesConvention::ImageYUp,
         Some("image_y_down") => StokesConvention::ImageYDown,
         Some(other) => {
@@ -149,7 +152,7 @@ pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
             StokesConvention::ImageYUp
         }
     };
-    let color_space = match top.string("color_space", &mut problems) {
+    let color_space = match top.string("color_space", problems) {
         None => None,
         Some("linear") => Some(ColorSpace::Linear),
         Some("srgb") | Some("sRGB") => Some(ColorSpace::Srgb),
@@ -161,24 +164,22 @@ pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
             None
         }
     };
-    let world_up = parse_world_up(&top, &mut problems);
+    let world_up = parse_world_up(&top, problems);
     let header = Header {
         stokes_convention,
         color_space,
         world_up,
     };
-
     let defaults = IntrinsicDefaults {
-        w: top.positive_int("w", &mut problems),
-        h: top.positive_int("h", &mut problems),
-        fl_x: top.number("fl_x", &mut problems),
-        fl_y: top.number("fl_y", &mut problems),
-        cx: top.number("cx", &mut problems),
-        cy: top.number("cy", &mut problems),
-        camera_angle_x: top.number("camera_angle_x", &mut problems),
+        w: top.positive_int("w", problems),
+        h: top.positive_int("h", problems),
+        fl_x: top.number("fl_x", problems),
+        fl_y: top.number("fl_y", problems),
+        cx: top.number("cx", problems),
+        cy: top.number("cy", problems),
+        camera_angle_x: top.number("camera_angle_x", problems),
     };
-
-    let frames_json = match top.object.get("frames") {
+    let frames = match top.object.get("frames") {
         None => {
             problems.push(top.problem("frames", "missing required key"));
             &[][..]
@@ -193,8 +194,28 @@ pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
             &[][..]
         }
     };
-    let explicit_split = frames_json.iter().any(|f| f.get("split").is_some());
-    let frames = frames_json
+    Some(Top {
+        header,
+        camera_convention,
+        stokes_convention,
+        defaults,
+        frames,
+    })
+}
+
+/// Parses the whole JSON document of a capture rooted at `root`.
+pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
+    let mut problems = Vec::new();
+    let Some(top) = parse_top(document, &mut problems) else {
+        return Parsed {
+            header: default_header(),
+            frames: Vec::new(),
+            problems,
+        };
+    };
+    let explicit_split = top.frames.iter().any(|f| f.get("split").is_some());
+    let frames = top
+        .frames
         .iter()
         .enumerate()
         .filter_map(|(index, json)| {
@@ -202,19 +223,47 @@ pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
                 root,
                 index,
                 json,
-                &defaults,
-                camera_convention,
-                stokes_convention,
+                &top.defaults,
+                top.camera_convention,
+                top.stokes_convention,
                 explicit_split,
                 &mut problems,
             )
         })
         .collect();
     Parsed {
-        header,
+        header: top.header,
         frames,
         problems,
     }
+}
+
+/// The camera of every frame (name, camera), ignoring image keys: what `phygap render --cameras`
+/// and relighting need from a transforms file.
+pub(crate) fn parse_cameras(document: &Value) -> (Vec<(String, Camera)>, Vec<Problem>) {
+    let mut problems = Vec::new();
+    let Some(top) = parse_top(document, &mut problems) else {
+        return (Vec::new(), problems);
+    };
+    let mut cameras = Vec::new();
+    for (index, json) in top.frames.iter().enumerate() {
+        let Some(object) = json.as_object() else {
+            problems.push(Problem::new(
+                format!("frame {index}"),
+                "(frame)",
+                format!("expected a JSON object, found {json}"),
+            ));
+            continue;
+        };
+        let name = frame_name(index, &Fields::new(object, String::new()));
+        let fields = Fields::new(object, name.clone());
+        if let Some(camera) =
+            parse_camera(&fields, &top.defaults, top.camera_convention, &mut problems)
+        {
+            cameras.push((name, camera));
+        }
+    }
+    (cameras, problems)
 }
 
 fn default_header() -> Header {

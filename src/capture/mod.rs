@@ -117,22 +117,9 @@ pub struct CaptureSummary {
 /// Loads a capture: `path` is a folder holding `transforms.json`, or a JSON file (e.g.
 /// `transforms_partial.json`); image paths are relative to the JSON file's folder.
 pub fn load(path: &Path) -> Result<Capture, CaptureError> {
-    let json_path = if path.is_dir() {
-        path.join("transforms.json")
-    } else {
-        path.to_owned()
-    };
+    let json_path = transforms_path(path);
     let _span = tracing::info_span!("load_capture", path = %json_path.display()).entered();
-    let text = std::fs::read_to_string(&json_path).map_err(|e| CaptureError::Read {
-        path: json_path.clone(),
-        message: e.to_string(),
-    })?;
-    let document = json::parse_lenient(&text).map_err(|e| CaptureError::Json {
-        path: json_path.clone(),
-        line: e.line(),
-        column: e.column(),
-        message: e.to_string(),
-    })?;
+    let document = read_document(&json_path)?;
     let folder = json_path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -219,6 +206,45 @@ pub fn load(path: &Path) -> Result<Capture, CaptureError> {
         world_up: header.world_up,
         warnings,
     })
+}
+
+/// The JSON file of a capture given as a folder (its `transforms.json`) or as the file itself.
+pub fn transforms_path(path: &Path) -> PathBuf {
+    if path.is_dir() {
+        path.join("transforms.json")
+    } else {
+        path.to_owned()
+    }
+}
+
+/// Reads and parses a transforms JSON file (NaN/Infinity tolerated, reported later per key).
+fn read_document(json_path: &Path) -> Result<serde_json::Value, CaptureError> {
+    let text = std::fs::read_to_string(json_path).map_err(|e| CaptureError::Read {
+        path: json_path.to_owned(),
+        message: e.to_string(),
+    })?;
+    json::parse_lenient(&text).map_err(|e| CaptureError::Json {
+        path: json_path.to_owned(),
+        line: e.line(),
+        column: e.column(),
+        message: e.to_string(),
+    })
+}
+
+/// Reads only the cameras of a transforms file (a capture folder or a JSON file): one
+/// `(frame name, camera)` per frame, in order. Image keys are not needed and not checked.
+pub fn load_cameras(path: &Path) -> Result<Vec<(String, Camera)>, CaptureError> {
+    let json_path = transforms_path(path);
+    let document = read_document(&json_path)?;
+    let (cameras, problems) = frame::parse_cameras(&document);
+    if problems.is_empty() {
+        Ok(cameras)
+    } else {
+        Err(CaptureError::Invalid {
+            path: json_path,
+            problems,
+        })
+    }
 }
 
 impl Capture {

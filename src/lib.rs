@@ -6,6 +6,7 @@
 
 pub mod camera;
 pub mod config;
+pub mod envmap;
 pub mod gradcheck;
 pub mod image_io;
 pub mod surfels;

@@ -5,11 +5,13 @@
 //! `shared/docs/METHOD.md`; each module is named after the concept it computes.
 
 pub mod backend;
+pub mod brdf_lut;
 pub mod camera;
 pub mod capture;
 pub mod checkpoint;
 pub mod config;
 pub mod densify;
+pub mod envmap;
 pub mod events;
 pub mod gradcheck;
 pub mod image_io;

@@ -1,0 +1,77 @@
+//! The lighting interface of the deferred shader: diffuse irradiance and prefiltered specular
+//! radiance at a surface point, with backward variants. The global [`PreparedEnv`] ignores the
+//! position; a GridMap of local probes uses it. Implementations are shared read-only across rayon
+//! threads; gradients go into the caller's (per-thread) [`EnvGrad`].
+
+use glam::DVec3;
+
+use super::{EnvGrad, PreparedEnv};
+
+/// Light as seen by the shader.
+pub trait LightProbe: Sync {
+    /// Diffuse irradiance E_d(n) at `position` for a surface of index `ior` (the IoR matters only
+    /// with Fresnel-weighted irradiance).
+    fn irradiance(&self, position: DVec3, normal: DVec3, ior: f64) -> DVec3;
+
+    /// Backward of [`Self::irradiance`]: adds into `grad`, returns (dL/d normal, dL/d ior).
+    fn irradiance_backward(
+        &self,
+        position: DVec3,
+        normal: DVec3,
+        ior: f64,
+        grad_out: DVec3,
+        grad: &mut EnvGrad,
+    ) -> (DVec3, f64);
+
+    /// Prefiltered radiance arriving along `dir` (non-zero, need not be unit) for a Disney roughness.
+    fn specular(&self, position: DVec3, dir: DVec3, roughness: f64) -> DVec3;
+
+    /// Backward of [`Self::specular`]: adds into `grad`, returns (dL/d dir, dL/d roughness).
+    fn specular_backward(
+        &self,
+        position: DVec3,
+        dir: DVec3,
+        roughness: f64,
+        grad_out: DVec3,
+        grad: &mut EnvGrad,
+    ) -> (DVec3, f64);
+
+    /// Zero accumulators for this light's gradient.
+    fn zero_grad(&self) -> EnvGrad;
+}
+
+impl LightProbe for PreparedEnv {
+    fn irradiance(&self, _position: DVec3, normal: DVec3, ior: f64) -> DVec3 {
+        PreparedEnv::irradiance(self, normal, ior)
+    }
+
+    fn irradiance_backward(
+        &self,
+        _position: DVec3,
+        normal: DVec3,
+        ior: f64,
+        grad_out: DVec3,
+        grad: &mut EnvGrad,
+    ) -> (DVec3, f64) {
+        PreparedEnv::irradiance_backward(self, normal, ior, grad_out, grad)
+    }
+
+    fn specular(&self, _position: DVec3, dir: DVec3, roughness: f64) -> DVec3 {
+        PreparedEnv::specular(self, dir, roughness)
+    }
+
+    fn specular_backward(
+        &self,
+        _position: DVec3,
+        dir: DVec3,
+        roughness: f64,
+        grad_out: DVec3,
+        grad: &mut EnvGrad,
+    ) -> (DVec3, f64) {
+        PreparedEnv::specular_backward(self, dir, roughness, grad_out, grad)
+    }
+
+    fn zero_grad(&self) -> EnvGrad {
+        PreparedEnv::zero_grad(self)
+    }
+}

@@ -170,7 +170,10 @@ impl Budget {
             })?;
         let ratio = self.limits.max_ratio;
         let entry_cap = compressed.map(|c| c.saturating_mul(ratio).max(RATIO_GRACE_BYTES));
-        let archive_cap = self.archive_len.saturating_mul(ratio).max(RATIO_GRACE_BYTES);
+        let archive_cap = self
+            .archive_len
+            .saturating_mul(ratio)
+            .max(RATIO_GRACE_BYTES);
         let mut entry_written = 0u64;
         let mut buffer = vec![0u8; 64 * 1024];
         loop {
@@ -353,7 +356,10 @@ mod tests {
         writer.finish().unwrap().into_inner()
     }
 
-    fn extract_bytes(bytes: &[u8], limits: ExtractLimits) -> (tempfile::TempDir, Result<PathBuf, ArchiveError>) {
+    fn extract_bytes(
+        bytes: &[u8],
+        limits: ExtractLimits,
+    ) -> (tempfile::TempDir, Result<PathBuf, ArchiveError>) {
         let dir = tempfile::tempdir().unwrap();
         let archive = dir.path().join("upload");
         std::fs::write(&archive, bytes).unwrap();
@@ -363,11 +369,17 @@ mod tests {
 
     #[test]
     fn entry_paths_are_checked() {
-        assert_eq!(safe_relative_path("a/./b.json").unwrap(), Some(PathBuf::from("a/b.json")));
+        assert_eq!(
+            safe_relative_path("a/./b.json").unwrap(),
+            Some(PathBuf::from("a/b.json"))
+        );
         assert_eq!(safe_relative_path("__MACOSX/._a").unwrap(), None);
         assert_eq!(safe_relative_path("./").unwrap(), None);
         for bad in ["../x", "a/../../x", "/etc/passwd", "C:/x", "a\\..\\x"] {
-            assert!(matches!(safe_relative_path(bad), Err(ArchiveError::Unsafe { .. })), "{bad}");
+            assert!(
+                matches!(safe_relative_path(bad), Err(ArchiveError::Unsafe { .. })),
+                "{bad}"
+            );
         }
     }
 
@@ -384,7 +396,10 @@ mod tests {
     fn zip_traversal_is_refused() {
         let bytes = zip_bytes(&[("ok.txt", b"1"), ("../evil.txt", b"2")]);
         let (dir, result) = extract_bytes(&bytes, ExtractLimits::default());
-        assert!(matches!(result, Err(ArchiveError::Unsafe { ref reason, .. }) if reason.contains("traversal")), "{result:?}");
+        assert!(
+            matches!(result, Err(ArchiveError::Unsafe { ref reason, .. }) if reason.contains("traversal")),
+            "{result:?}"
+        );
         assert!(!dir.path().join("evil.txt").exists());
     }
 
@@ -394,19 +409,35 @@ mod tests {
         let bytes = zip_bytes(&[("zeros.bin", &zeros)]);
         assert!(bytes.len() < 100_000, "deflate packs zeros tightly");
         let (_dir, result) = extract_bytes(&bytes, ExtractLimits::default());
-        assert!(matches!(result, Err(ArchiveError::TooLarge(ref m)) if m.contains("bomb")), "{result:?}");
-        let limits = ExtractLimits { max_ratio: 100_000, max_total_bytes: 4 << 20, ..Default::default() };
+        assert!(
+            matches!(result, Err(ArchiveError::TooLarge(ref m)) if m.contains("bomb")),
+            "{result:?}"
+        );
+        let limits = ExtractLimits {
+            max_ratio: 100_000,
+            max_total_bytes: 4 << 20,
+            ..Default::default()
+        };
         let (_dir, result) = extract_bytes(&bytes, limits);
-        assert!(matches!(result, Err(ArchiveError::TooLarge(ref m)) if m.contains("more than")), "{result:?}");
+        assert!(
+            matches!(result, Err(ArchiveError::TooLarge(ref m)) if m.contains("more than")),
+            "{result:?}"
+        );
     }
 
     #[test]
     fn too_many_entries_are_refused() {
         let names: Vec<String> = (0..30).map(|i| format!("f{i}.txt")).collect();
         let entries: Vec<(&str, &[u8])> = names.iter().map(|n| (n.as_str(), &b"x"[..])).collect();
-        let limits = ExtractLimits { max_entries: 20, ..Default::default() };
+        let limits = ExtractLimits {
+            max_entries: 20,
+            ..Default::default()
+        };
         let (_dir, result) = extract_bytes(&zip_bytes(&entries), limits);
-        assert!(matches!(result, Err(ArchiveError::TooLarge(ref m)) if m.contains("entries")), "{result:?}");
+        assert!(
+            matches!(result, Err(ArchiveError::TooLarge(ref m)) if m.contains("entries")),
+            "{result:?}"
+        );
     }
 
     #[test]
@@ -415,16 +446,27 @@ mod tests {
         let mut header = tar::Header::new_ustar();
         header.set_entry_type(tar::EntryType::Symlink);
         header.set_size(0);
-        builder.append_link(&mut header, "link", "/etc/passwd").unwrap();
+        builder
+            .append_link(&mut header, "link", "/etc/passwd")
+            .unwrap();
         let bytes = builder.into_inner().unwrap();
         let (_dir, result) = extract_bytes(&bytes, ExtractLimits::default());
-        assert!(matches!(result, Err(ArchiveError::Unsafe { ref reason, .. }) if reason.contains("links")), "{result:?}");
+        assert!(
+            matches!(result, Err(ArchiveError::Unsafe { ref reason, .. }) if reason.contains("links")),
+            "{result:?}"
+        );
         let (_dir, result) = extract_bytes(b"definitely not an archive", ExtractLimits::default());
-        assert!(matches!(result, Err(ArchiveError::UnknownFormat(_))), "{result:?}");
+        assert!(
+            matches!(result, Err(ArchiveError::UnknownFormat(_))),
+            "{result:?}"
+        );
         let mut truncated = zip_bytes(&[("a.txt", b"hello hello hello")]);
         truncated.truncate(20);
         let (_dir, result) = extract_bytes(&truncated, ExtractLimits::default());
-        assert!(matches!(result, Err(ArchiveError::Corrupt(_))), "{result:?}");
+        assert!(
+            matches!(result, Err(ArchiveError::Corrupt(_))),
+            "{result:?}"
+        );
     }
 
     #[test]
@@ -434,7 +476,9 @@ mod tests {
         header.set_size(5);
         header.set_mode(0o644);
         header.set_cksum();
-        builder.append_data(&mut header, "transforms.json", &b"{\"a\"}"[..]).unwrap();
+        builder
+            .append_data(&mut header, "transforms.json", &b"{\"a\"}"[..])
+            .unwrap();
         let bytes = builder.into_inner().unwrap();
         let (dir, root) = extract_bytes(&bytes, ExtractLimits::default());
         assert_eq!(root.unwrap(), dir.path().join("out"));

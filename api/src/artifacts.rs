@@ -146,7 +146,11 @@ impl ArtifactStore for FsArtifacts {
         }
         for (name, source) in files {
             if !valid_name(&name) {
-                tracing::warn!(job_id, name, "skipping an exported file with an unsafe name");
+                tracing::warn!(
+                    job_id,
+                    name,
+                    "skipping an exported file with an unsafe name"
+                );
                 continue;
             }
             let target = dir.join(&name);
@@ -227,7 +231,17 @@ mod tests {
         for good in ["mesh.ply", "renders/test_000.png", "a-b_c.d"] {
             assert!(valid_name(good), "{good}");
         }
-        for bad in ["", "../x", "a/../b", "/etc/passwd", ".env", "a//b", "a\\b", "r/.x", "a b"] {
+        for bad in [
+            "",
+            "../x",
+            "a/../b",
+            "/etc/passwd",
+            ".env",
+            "a//b",
+            "a\\b",
+            "r/.x",
+            "a b",
+        ] {
             assert!(!valid_name(bad), "{bad}");
         }
     }
@@ -253,7 +267,10 @@ mod tests {
             .await
             .unwrap();
         assert_eq!(part, b"3456");
-        assert!(store.stat("job_1", "../job_1/metrics.json").unwrap().is_none());
+        assert!(store
+            .stat("job_1", "../job_1/metrics.json")
+            .unwrap()
+            .is_none());
         store.delete("job_1").unwrap();
         assert!(store.list("job_1").unwrap().is_empty());
     }

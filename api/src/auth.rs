@@ -21,7 +21,11 @@ fn same_token(given: &[u8], expected: &[u8]) -> bool {
 
 /// Rejects the request with 401 unless it carries `Authorization: Bearer <token>` (when a token
 /// is configured).
-pub async fn require_token(State(state): State<AppState>, request: Request, next: Next) -> Response {
+pub async fn require_token(
+    State(state): State<AppState>,
+    request: Request,
+    next: Next,
+) -> Response {
     let Some(expected) = state.config.token.as_deref() else {
         return next.run(request).await;
     };
@@ -33,8 +37,12 @@ pub async fn require_token(State(state): State<AppState>, request: Request, next
         .map(str::trim);
     match given {
         Some(token) if same_token(token.as_bytes(), expected.as_bytes()) => next.run(request).await,
-        Some(_) => ApiError::new(StatusCode::UNAUTHORIZED, "unauthorized", "invalid bearer token")
-            .into_response(),
+        Some(_) => ApiError::new(
+            StatusCode::UNAUTHORIZED,
+            "unauthorized",
+            "invalid bearer token",
+        )
+        .into_response(),
         None => ApiError::new(
             StatusCode::UNAUTHORIZED,
             "unauthorized",

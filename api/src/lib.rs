@@ -177,7 +177,10 @@ fn sweep_leftovers(paths: &Paths, store: &dyn Store) -> Result<(), StartError> {
         let entry = entry.map_err(io(&paths.captures))?;
         let name = entry.file_name().to_string_lossy().into_owned();
         if !known.contains(&name) {
-            tracing::warn!(capture_id = name, "removing a capture folder without a record");
+            tracing::warn!(
+                capture_id = name,
+                "removing a capture folder without a record"
+            );
             std::fs::remove_dir_all(entry.path()).map_err(io(&entry.path()))?;
         }
     }
@@ -198,13 +201,12 @@ impl Server {
         sweep_leftovers(&paths, store.as_ref())?;
         let artifacts: Arc<dyn ArtifactStore> =
             Arc::new(FsArtifacts::new(paths.artifacts.clone())?);
-        let listener =
-            tokio::net::TcpListener::bind(config.bind)
-                .await
-                .map_err(|source| StartError::Io {
-                    path: PathBuf::from(config.bind.to_string()),
-                    source,
-                })?;
+        let listener = tokio::net::TcpListener::bind(config.bind)
+            .await
+            .map_err(|source| StartError::Io {
+                path: PathBuf::from(config.bind.to_string()),
+                source,
+            })?;
         let addr = listener.local_addr().map_err(|source| StartError::Io {
             path: PathBuf::from(config.bind.to_string()),
             source,

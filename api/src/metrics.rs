@@ -17,7 +17,16 @@ const HTTP_BUCKETS: &[f64] = &[
     0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0,
 ];
 const JOB_BUCKETS: &[f64] = &[
-    1.0, 5.0, 15.0, 60.0, 300.0, 900.0, 3600.0, 4.0 * 3600.0, 12.0 * 3600.0, 86400.0,
+    1.0,
+    5.0,
+    15.0,
+    60.0,
+    300.0,
+    900.0,
+    3600.0,
+    4.0 * 3600.0,
+    12.0 * 3600.0,
+    86400.0,
 ];
 
 /// A cumulative histogram with fixed upper bounds.
@@ -54,7 +63,11 @@ impl Histogram {
         for (bound, count) in self.bounds.iter().zip(&self.counts) {
             let _ = writeln!(out, "{name}_bucket{{{labels}{sep}le=\"{bound}\"}} {count}");
         }
-        let _ = writeln!(out, "{name}_bucket{{{labels}{sep}le=\"+Inf\"}} {}", self.count);
+        let _ = writeln!(
+            out,
+            "{name}_bucket{{{labels}{sep}le=\"+Inf\"}} {}",
+            self.count
+        );
         let _ = writeln!(out, "{name}_sum{{{labels}}} {}", self.sum);
         let _ = writeln!(out, "{name}_count{{{labels}}} {}", self.count);
     }
@@ -157,11 +170,20 @@ mod tests {
         metrics.observe_http("GET", "/v1/jobs/{id}", 200, Duration::from_millis(3));
         metrics.observe_http("GET", "/v1/jobs/{id}", 200, Duration::from_millis(30));
         metrics.observe_job("train", "succeeded", Duration::from_secs(20));
-        let text = metrics.render(QueueCounts { queued: 4, running: 1 }, 2);
+        let text = metrics.render(
+            QueueCounts {
+                queued: 4,
+                running: 1,
+            },
+            2,
+        );
         assert!(text.contains("phygap_queue_depth 4\n"));
         assert!(text.contains("phygap_jobs_running 1\n"));
         let prefix = "phygap_http_request_duration_seconds_bucket{method=\"GET\",route=\"/v1/jobs/{id}\",status=\"200\",";
-        assert!(text.contains(&format!("{prefix}le=\"0.0025\"}} 0\n")), "{text}");
+        assert!(
+            text.contains(&format!("{prefix}le=\"0.0025\"}} 0\n")),
+            "{text}"
+        );
         assert!(text.contains(&format!("{prefix}le=\"0.005\"}} 1\n")));
         assert!(text.contains(&format!("{prefix}le=\"0.05\"}} 2\n")));
         assert!(text.contains("phygap_job_duration_seconds_bucket{kind=\"train\",outcome=\"succeeded\",le=\"15\"} 0\n"));

@@ -206,8 +206,12 @@ pub trait Store: Send + Sync + 'static {
     /// Newest first.
     fn list_jobs(&self, limit: usize) -> Result<Vec<JobRecord>, StoreError>;
     /// Atomically takes the oldest queued job for `owner` until `lease_until` (unix ms).
-    fn claim(&self, owner: &str, now: i64, lease_until: i64)
-        -> Result<Option<JobRecord>, StoreError>;
+    fn claim(
+        &self,
+        owner: &str,
+        now: i64,
+        lease_until: i64,
+    ) -> Result<Option<JobRecord>, StoreError>;
     /// Writes progress and extends the lease; returns whether a cancel was requested.
     fn heartbeat(
         &self,
@@ -374,7 +378,10 @@ fn capture_row(row: &Row<'_>) -> rusqlite::Result<(String, i64, String, String, 
 
 impl Store for SqliteStore {
     fn ping(&self) -> Result<(), StoreError> {
-        self.with(|c| Ok(c.query_row("SELECT 1", [], |r| r.get::<_, i64>(0)).map(|_| ())?))
+        self.with(|c| {
+            Ok(c.query_row("SELECT 1", [], |r| r.get::<_, i64>(0))
+                .map(|_| ())?)
+        })
     }
 
     fn insert_capture(&self, capture: &CaptureRecord) -> Result<(), StoreError> {
@@ -726,7 +733,13 @@ mod tests {
         let second = s.claim("w2", 10, 1000).unwrap().unwrap();
         assert_eq!(second.id, "job_b");
         assert!(s.claim("w3", 10, 1000).unwrap().is_none());
-        assert_eq!(s.counts().unwrap(), QueueCounts { queued: 0, running: 2 });
+        assert_eq!(
+            s.counts().unwrap(),
+            QueueCounts {
+                queued: 0,
+                running: 2
+            }
+        );
     }
 
     #[test]
@@ -744,7 +757,9 @@ mod tests {
             Err(StoreError::LeaseLost(_))
         ));
         assert!(!s.heartbeat("job_a", "w1", &progress, 2000).unwrap());
-        assert!(s.finish("job_a", "intruder", &Finish::Succeeded, 50).is_err());
+        assert!(s
+            .finish("job_a", "intruder", &Finish::Succeeded, 50)
+            .is_err());
         s.finish("job_a", "w1", &Finish::Succeeded, 50).unwrap();
         let job = s.job("job_a").unwrap().unwrap();
         assert_eq!(job.state, JobState::Succeeded);
@@ -757,8 +772,14 @@ mod tests {
         let (_dir, s) = store();
         s.submit(&new_job("job_a", 1), None).unwrap();
         s.claim("dead", 10, 100).unwrap().unwrap();
-        assert!(s.requeue_expired(99, 3).unwrap().is_empty(), "lease still valid");
-        assert_eq!(s.requeue_expired(101, 3).unwrap(), vec!["job_a".to_string()]);
+        assert!(
+            s.requeue_expired(99, 3).unwrap().is_empty(),
+            "lease still valid"
+        );
+        assert_eq!(
+            s.requeue_expired(101, 3).unwrap(),
+            vec!["job_a".to_string()]
+        );
         assert_eq!(s.job("job_a").unwrap().unwrap().state, JobState::Queued);
         // The dead owner can no longer write.
         assert!(s.finish("job_a", "dead", &Finish::Succeeded, 5).is_err());

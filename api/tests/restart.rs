@@ -35,7 +35,10 @@ async fn queued_job_runs_after_restart() {
     let t = TestServer::start(test_config(dir.path())).await;
     let done = t.wait_state(&id, "succeeded", LONG).await;
     assert_eq!(done["state"], "succeeded", "{done}");
-    assert_eq!((done["attempts"].as_u64(), done["resumed_from"].as_u64()), (Some(1), None));
+    assert_eq!(
+        (done["attempts"].as_u64(), done["resumed_from"].as_u64()),
+        (Some(1), None)
+    );
     t.server.shutdown().await;
 }
 
@@ -46,7 +49,8 @@ async fn graceful_shutdown_requeues_a_running_job_which_then_resumes() {
     let capture_id = t.upload_capture().await;
     let (_, job) = t.submit(&capture_id, train_config(300, 1000)).await;
     let id = job["id"].as_str().unwrap().to_string();
-    t.wait_job(&id, LONG, |j| j["iteration"].as_u64().unwrap_or(0) >= 30).await;
+    t.wait_job(&id, LONG, |j| j["iteration"].as_u64().unwrap_or(0) >= 30)
+        .await;
     t.server.shutdown().await;
     let (state, iteration) = stored_state(dir.path(), &id);
     assert_eq!(state, JobState::Queued, "a shutdown is not a cancel");
@@ -57,7 +61,11 @@ async fn graceful_shutdown_requeues_a_running_job_which_then_resumes() {
     assert_eq!(done["state"], "succeeded", "{done}");
     assert_eq!(done["attempts"], 2);
     // It resumed from the checkpoint written at the shutdown (no periodic one before 1000).
-    assert_eq!(done["resumed_from"].as_u64(), Some(iteration as u64), "{done}");
+    assert_eq!(
+        done["resumed_from"].as_u64(),
+        Some(iteration as u64),
+        "{done}"
+    );
     assert_eq!(done["iteration"], 300);
     t.server.shutdown().await;
 }
@@ -85,7 +93,12 @@ fn child_server_process() {
 async fn killed_server_job_resumes_on_the_next_server() {
     let dir = tempfile::tempdir().unwrap();
     let mut child = std::process::Command::new(std::env::current_exe().unwrap())
-        .args(["child_server_process", "--exact", "--ignored", "--nocapture"])
+        .args([
+            "child_server_process",
+            "--exact",
+            "--ignored",
+            "--nocapture",
+        ])
         .env(CHILD_DIR_VAR, dir.path())
         .stdout(std::process::Stdio::null())
         .spawn()
@@ -98,7 +111,12 @@ async fn killed_server_job_resumes_on_the_next_server() {
     }
     let base = std::fs::read_to_string(&addr_file).unwrap();
     let client = reqwest::Client::new();
-    let capture = client.post(format!("{base}/v1/captures")).body(capture_zip()).send().await.unwrap();
+    let capture = client
+        .post(format!("{base}/v1/captures"))
+        .body(capture_zip())
+        .send()
+        .await
+        .unwrap();
     assert_eq!(capture.status(), 201);
     let capture: serde_json::Value = capture.json().await.unwrap();
     let job: serde_json::Value = client
@@ -112,11 +130,21 @@ async fn killed_server_job_resumes_on_the_next_server() {
         .unwrap();
     let id = job["id"].as_str().unwrap().to_string();
     loop {
-        let job: serde_json::Value = client.get(format!("{base}/v1/jobs/{id}")).send().await.unwrap().json().await.unwrap();
+        let job: serde_json::Value = client
+            .get(format!("{base}/v1/jobs/{id}"))
+            .send()
+            .await
+            .unwrap()
+            .json()
+            .await
+            .unwrap();
         if job["iteration"].as_u64().unwrap_or(0) >= 60 {
             break;
         }
-        assert!(Instant::now() < deadline, "child job made no progress: {job}");
+        assert!(
+            Instant::now() < deadline,
+            "child job made no progress: {job}"
+        );
         tokio::time::sleep(Duration::from_millis(20)).await;
     }
     child.kill().unwrap(); // SIGKILL: no shutdown, no checkpoint at the interruption
@@ -130,8 +158,14 @@ async fn killed_server_job_resumes_on_the_next_server() {
     assert_eq!(done["attempts"], 2, "{done}");
     assert_eq!(done["iteration"], 400);
     let resumed = done["resumed_from"].as_u64().unwrap();
-    assert!(resumed >= 50 && resumed % 25 == 0, "resumed from a periodic checkpoint: {resumed}");
-    assert!(resumed < 400 && killed_at >= 60, "resumed at {resumed}, killed at {killed_at}");
+    assert!(
+        resumed >= 50 && resumed % 25 == 0,
+        "resumed from a periodic checkpoint: {resumed}"
+    );
+    assert!(
+        resumed < 400 && killed_at >= 60,
+        "resumed at {resumed}, killed at {killed_at}"
+    );
     let (_, list) = t.get_json(&format!("/v1/jobs/{id}/artifacts")).await;
     assert_eq!(list["artifacts"].as_array().unwrap().len(), 4);
     t.server.shutdown().await;

@@ -19,7 +19,11 @@ async fn upload_train_and_download_every_artifact() {
     assert_eq!(status, 201, "{capture}");
     assert_eq!(capture["views"], 3);
     assert_eq!(capture["kinds"], json!(["rgb"]));
-    assert_eq!(capture["warnings"].as_array().unwrap().len(), 3, "no masks: one warning per frame");
+    assert_eq!(
+        capture["warnings"].as_array().unwrap().len(),
+        3,
+        "no masks: one warning per frame"
+    );
     let capture_id = capture["id"].as_str().unwrap();
     let (status, shown) = t.get_json(&format!("/v1/captures/{capture_id}")).await;
     assert_eq!((status, &shown["views"]), (200, &json!(3)));
@@ -42,8 +46,19 @@ async fn upload_train_and_download_every_artifact() {
     let (status, list) = t.get_json(&format!("/v1/jobs/{id}/artifacts")).await;
     assert_eq!(status, 200);
     let artifacts = list["artifacts"].as_array().unwrap();
-    let names: Vec<&str> = artifacts.iter().map(|a| a["name"].as_str().unwrap()).collect();
-    assert_eq!(names, ["envmap.exr", "metrics.json", "renders/test_000.png", "surfels.ply"]);
+    let names: Vec<&str> = artifacts
+        .iter()
+        .map(|a| a["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "envmap.exr",
+            "metrics.json",
+            "renders/test_000.png",
+            "surfels.ply"
+        ]
+    );
     for artifact in artifacts {
         let name = artifact["name"].as_str().unwrap();
         let response = t
@@ -53,10 +68,17 @@ async fn upload_train_and_download_every_artifact() {
             .await
             .unwrap();
         assert_eq!(response.status(), 200, "{name}");
-        let content_type = response.headers()["content-type"].to_str().unwrap().to_string();
+        let content_type = response.headers()["content-type"]
+            .to_str()
+            .unwrap()
+            .to_string();
         assert_eq!(content_type, artifact["content_type"].as_str().unwrap());
         let bytes = response.bytes().await.unwrap();
-        assert_eq!(bytes.len() as u64, artifact["size"].as_u64().unwrap(), "{name}");
+        assert_eq!(
+            bytes.len() as u64,
+            artifact["size"].as_u64().unwrap(),
+            "{name}"
+        );
         match name {
             "envmap.exr" => {
                 assert_eq!(content_type, "image/x-exr");
@@ -80,7 +102,10 @@ async fn upload_train_and_download_every_artifact() {
             .await
             .unwrap();
         assert_eq!(part.status(), 206);
-        assert_eq!(part.headers()["content-range"], format!("bytes 2-5/{len}").as_str());
+        assert_eq!(
+            part.headers()["content-range"],
+            format!("bytes 2-5/{len}").as_str()
+        );
         assert_eq!(part.bytes().await.unwrap(), bytes.slice(2..6));
         let suffix = t
             .client
@@ -99,23 +124,46 @@ async fn upload_train_and_download_every_artifact() {
             .unwrap();
         assert_eq!(beyond.status(), 416);
     }
-    let (status, body) = t.get_json(&format!("/v1/jobs/{id}/artifacts/../../phygap.sqlite3")).await;
+    let (status, body) = t
+        .get_json(&format!("/v1/jobs/{id}/artifacts/../../phygap.sqlite3"))
+        .await;
     assert_eq!(status, 404, "{body}");
-    let (status, body) = t.get_json(&format!("/v1/jobs/{id}/artifacts/mesh.ply")).await;
+    let (status, body) = t
+        .get_json(&format!("/v1/jobs/{id}/artifacts/mesh.ply"))
+        .await;
     assert_eq!((status, error_code(&body).0), (404, "not_found"));
 
     // A capture still used by no live job can be deleted; its files go too.
-    let response = t.client.delete(t.url(&format!("/v1/captures/{capture_id}"))).send().await.unwrap();
+    let response = t
+        .client
+        .delete(t.url(&format!("/v1/captures/{capture_id}")))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 204);
     assert!(!dir.path().join("captures").join(capture_id).exists());
     let (status, _) = t.get_json(&format!("/v1/captures/{capture_id}")).await;
     assert_eq!(status, 404);
 
     // Metrics saw the job and the requests.
-    let text = t.client.get(t.url("/metrics")).send().await.unwrap().text().await.unwrap();
+    let text = t
+        .client
+        .get(t.url("/metrics"))
+        .send()
+        .await
+        .unwrap()
+        .text()
+        .await
+        .unwrap();
     assert!(text.contains("phygap_queue_depth 0\n"), "{text}");
-    assert!(text.contains("phygap_job_duration_seconds_count{kind=\"train\",outcome=\"succeeded\"} 1"), "{text}");
-    assert!(text.contains("route=\"/v1/jobs/{id}\",status=\"200\""), "{text}");
+    assert!(
+        text.contains("phygap_job_duration_seconds_count{kind=\"train\",outcome=\"succeeded\"} 1"),
+        "{text}"
+    );
+    assert!(
+        text.contains("route=\"/v1/jobs/{id}\",status=\"200\""),
+        "{text}"
+    );
     t.server.shutdown().await;
 }
 
@@ -125,14 +173,28 @@ async fn tar_uploads_and_event_stream_follow_a_job_to_its_end() {
     let t = TestServer::start(test_config(dir.path())).await;
     let (status, capture) = t.upload(capture_tar()).await;
     assert_eq!(status, 201, "{capture}");
-    let (_, job) = t.submit(capture["id"].as_str().unwrap(), train_config(60, 20)).await;
+    let (_, job) = t
+        .submit(capture["id"].as_str().unwrap(), train_config(60, 20))
+        .await;
     let id = job["id"].as_str().unwrap();
-    let mut response = t.client.get(t.url(&format!("/v1/jobs/{id}/events"))).send().await.unwrap();
+    let mut response = t
+        .client
+        .get(t.url(&format!("/v1/jobs/{id}/events")))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 200);
-    assert!(response.headers()["content-type"].to_str().unwrap().starts_with("text/event-stream"));
+    assert!(response.headers()["content-type"]
+        .to_str()
+        .unwrap()
+        .starts_with("text/event-stream"));
     let deadline = Instant::now() + LONG;
     let mut text = String::new();
-    while let Some(chunk) = tokio::time::timeout_at(deadline.into(), response.chunk()).await.expect("stream ends in time").unwrap() {
+    while let Some(chunk) = tokio::time::timeout_at(deadline.into(), response.chunk())
+        .await
+        .expect("stream ends in time")
+        .unwrap()
+    {
         text.push_str(std::str::from_utf8(&chunk).unwrap());
     }
     let events: Vec<(String, Value)> = text
@@ -145,11 +207,25 @@ async fn tar_uploads_and_event_stream_follow_a_job_to_its_end() {
         .collect();
     assert!(events.len() >= 3, "{text}");
     let (last_name, last) = events.last().unwrap();
-    assert_eq!((last_name.as_str(), last["state"].as_str()), ("end", Some("succeeded")));
-    assert!(events[..events.len() - 1].iter().all(|(n, _)| n == "progress"));
-    let iterations: Vec<u64> = events.iter().map(|(_, j)| j["iteration"].as_u64().unwrap()).collect();
-    assert!(iterations.windows(2).all(|w| w[0] <= w[1]), "{iterations:?}");
-    assert!(iterations.iter().any(|&i| i > 0 && i < 60), "saw intermediate progress: {iterations:?}");
+    assert_eq!(
+        (last_name.as_str(), last["state"].as_str()),
+        ("end", Some("succeeded"))
+    );
+    assert!(events[..events.len() - 1]
+        .iter()
+        .all(|(n, _)| n == "progress"));
+    let iterations: Vec<u64> = events
+        .iter()
+        .map(|(_, j)| j["iteration"].as_u64().unwrap())
+        .collect();
+    assert!(
+        iterations.windows(2).all(|w| w[0] <= w[1]),
+        "{iterations:?}"
+    );
+    assert!(
+        iterations.iter().any(|&i| i > 0 && i < 60),
+        "saw intermediate progress: {iterations:?}"
+    );
     t.server.shutdown().await;
 }
 
@@ -163,15 +239,37 @@ async fn idempotent_submit_returns_the_same_job() {
     let body = json!({ "capture_id": capture_id, "config": train_config(10, 5) });
     let mut ids = Vec::new();
     for expected in [201, 200, 200] {
-        let response = t.client.post(t.url("/v1/jobs")).header("idempotency-key", "retry-1").json(&body).send().await.unwrap();
+        let response = t
+            .client
+            .post(t.url("/v1/jobs"))
+            .header("idempotency-key", "retry-1")
+            .json(&body)
+            .send()
+            .await
+            .unwrap();
         assert_eq!(response.status(), expected);
-        ids.push(response.json::<Value>().await.unwrap()["id"].as_str().unwrap().to_string());
+        ids.push(
+            response.json::<Value>().await.unwrap()["id"]
+                .as_str()
+                .unwrap()
+                .to_string(),
+        );
     }
     assert!(ids.iter().all(|id| id == &ids[0]), "{ids:?}");
     let other = json!({ "capture_id": capture_id, "config": train_config(11, 5) });
-    let response = t.client.post(t.url("/v1/jobs")).header("idempotency-key", "retry-1").json(&other).send().await.unwrap();
+    let response = t
+        .client
+        .post(t.url("/v1/jobs"))
+        .header("idempotency-key", "retry-1")
+        .json(&other)
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 422);
-    assert_eq!(error_code(&response.json().await.unwrap()).0, "idempotency_key_reused");
+    assert_eq!(
+        error_code(&response.json().await.unwrap()).0,
+        "idempotency_key_reused"
+    );
     let (_, list) = t.get_json("/v1/jobs").await;
     assert_eq!(list["jobs"].as_array().unwrap().len(), 1);
     // Without a key, each submit is a new job.
@@ -187,26 +285,76 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
     let t = TestServer::start(test_config(dir.path())).await;
     let capture_id = t.upload_capture().await;
     let cases = [
-        (json!({ "capture_id": capture_id, "config": { "iterations": 0 } }), 422, "invalid_config", "iterations"),
-        (json!({ "capture_id": capture_id, "config": { "iteratons": 5 } }), 422, "invalid_request", "iteratons"),
-        (json!({ "capture_id": "cap_missing" }), 422, "unknown_capture", "cap_missing"),
-        (json!({ "config": {} }), 422, "invalid_request", "capture_id"),
+        (
+            json!({ "capture_id": capture_id, "config": { "iterations": 0 } }),
+            422,
+            "invalid_config",
+            "iterations",
+        ),
+        (
+            json!({ "capture_id": capture_id, "config": { "iteratons": 5 } }),
+            422,
+            "invalid_request",
+            "iteratons",
+        ),
+        (
+            json!({ "capture_id": "cap_missing" }),
+            422,
+            "unknown_capture",
+            "cap_missing",
+        ),
+        (
+            json!({ "config": {} }),
+            422,
+            "invalid_request",
+            "capture_id",
+        ),
     ];
     for (body, status, code, needle) in cases {
-        let response = t.client.post(t.url("/v1/jobs")).json(&body).send().await.unwrap();
+        let response = t
+            .client
+            .post(t.url("/v1/jobs"))
+            .json(&body)
+            .send()
+            .await
+            .unwrap();
         assert_eq!(response.status(), status, "{body}");
         let body: Value = response.json().await.unwrap();
         let (got_code, message) = error_code(&body);
         assert_eq!(got_code, code);
         assert!(message.contains(needle), "{message}");
     }
-    let response = t.client.post(t.url("/v1/jobs")).body("{not json").send().await.unwrap();
+    let response = t
+        .client
+        .post(t.url("/v1/jobs"))
+        .body("{not json")
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 400);
-    assert_eq!(error_code(&response.json().await.unwrap()).0, "invalid_json");
+    assert_eq!(
+        error_code(&response.json().await.unwrap()).0,
+        "invalid_json"
+    );
     // Garbage to every POST route and unknown routes/methods: JSON errors, never a crash.
-    for path in ["/v1/captures", "/v1/jobs", "/v1/jobs/job_x/cancel", "/v1/jobs/job_x/relight"] {
-        let response = t.client.post(t.url(path)).body(vec![0xffu8; 1000]).send().await.unwrap();
-        assert!(response.status().is_client_error(), "{path}: {}", response.status());
+    for path in [
+        "/v1/captures",
+        "/v1/jobs",
+        "/v1/jobs/job_x/cancel",
+        "/v1/jobs/job_x/relight",
+    ] {
+        let response = t
+            .client
+            .post(t.url(path))
+            .body(vec![0xffu8; 1000])
+            .send()
+            .await
+            .unwrap();
+        assert!(
+            response.status().is_client_error(),
+            "{path}: {}",
+            response.status()
+        );
         let body: Value = response.json().await.unwrap();
         assert_ne!(error_code(&body).0, "<no code>", "{path}");
     }
@@ -214,7 +362,10 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
     assert_eq!((status, error_code(&body).0), (404, "not_found"));
     let response = t.client.put(t.url("/v1/jobs")).send().await.unwrap();
     assert_eq!(response.status(), 405);
-    assert_eq!(error_code(&response.json().await.unwrap()).0, "method_not_allowed");
+    assert_eq!(
+        error_code(&response.json().await.unwrap()).0,
+        "method_not_allowed"
+    );
     let (status, _) = t.get_json("/healthz").await;
     assert_eq!(status, 200);
     t.server.shutdown().await;
@@ -229,22 +380,51 @@ async fn cancel_stops_running_and_queued_jobs() {
     let (_, queued) = t.submit(&capture_id, train_config(10, 5)).await;
     let running_id = running["id"].as_str().unwrap();
     let queued_id = queued["id"].as_str().unwrap();
-    t.wait_job(running_id, LONG, |j| j["iteration"].as_u64().unwrap_or(0) >= 5).await;
+    t.wait_job(running_id, LONG, |j| {
+        j["iteration"].as_u64().unwrap_or(0) >= 5
+    })
+    .await;
     // The capture is in use meanwhile.
-    let response = t.client.delete(t.url(&format!("/v1/captures/{capture_id}"))).send().await.unwrap();
+    let response = t
+        .client
+        .delete(t.url(&format!("/v1/captures/{capture_id}")))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 409);
 
-    let response = t.client.post(t.url(&format!("/v1/jobs/{queued_id}/cancel"))).send().await.unwrap();
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{queued_id}/cancel")))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 200);
-    assert_eq!(response.json::<Value>().await.unwrap()["state"], "cancelled");
-    let response = t.client.post(t.url(&format!("/v1/jobs/{running_id}/cancel"))).send().await.unwrap();
+    assert_eq!(
+        response.json::<Value>().await.unwrap()["state"],
+        "cancelled"
+    );
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{running_id}/cancel")))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 200);
-    assert_eq!(response.json::<Value>().await.unwrap()["cancel_requested"], true);
+    assert_eq!(
+        response.json::<Value>().await.unwrap()["cancel_requested"],
+        true
+    );
     let cancelled = t.wait_state(running_id, "cancelled", LONG).await;
     assert_eq!(cancelled["state"], "cancelled", "{cancelled}");
     assert!(cancelled["iteration"].as_u64().unwrap() < 100_000);
     assert!(cancelled["finished_at"].is_string());
-    let response = t.client.post(t.url(&format!("/v1/jobs/{running_id}/cancel"))).send().await.unwrap();
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{running_id}/cancel")))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 409);
     let (status, _) = t.get_json(&format!("/v1/jobs/{queued_id}")).await;
     assert_eq!(status, 200);
@@ -263,13 +443,31 @@ async fn bearer_token_guards_v1_but_not_healthz() {
     assert_eq!(status, 200);
     let (status, body) = t.get_json("/v1/jobs").await;
     assert_eq!((status, error_code(&body).0), (401, "unauthorized"));
-    let wrong = t.client.get(t.url("/v1/jobs")).bearer_auth("s3creT").send().await.unwrap();
+    let wrong = t
+        .client
+        .get(t.url("/v1/jobs"))
+        .bearer_auth("s3creT")
+        .send()
+        .await
+        .unwrap();
     assert_eq!(wrong.status(), 401);
     assert_eq!(wrong.headers()["www-authenticate"], "Bearer");
-    let upload = t.client.post(t.url("/v1/captures")).body(capture_zip()).send().await.unwrap();
+    let upload = t
+        .client
+        .post(t.url("/v1/captures"))
+        .body(capture_zip())
+        .send()
+        .await
+        .unwrap();
     assert_eq!(upload.status(), 401);
     assert_eq!(count_files(&dir.path().join("captures")), 0);
-    let right = t.client.get(t.url("/v1/jobs")).bearer_auth("s3cret").send().await.unwrap();
+    let right = t
+        .client
+        .get(t.url("/v1/jobs"))
+        .bearer_auth("s3cret")
+        .send()
+        .await
+        .unwrap();
     assert_eq!(right.status(), 200);
     t.server.shutdown().await;
 
@@ -293,15 +491,69 @@ async fn bad_uploads_are_rejected_and_leave_no_state() {
     let valid_transforms = capture_transforms();
     let cases: Vec<(&str, Vec<u8>, u16, &str, &str)> = vec![
         ("corrupt zip", corrupt, 400, "invalid_archive", "corrupt"),
-        ("garbage", b"hello, this is not an archive".to_vec(), 415, "unsupported_archive", ".zip"),
+        (
+            "garbage",
+            b"hello, this is not an archive".to_vec(),
+            415,
+            "unsupported_archive",
+            ".zip",
+        ),
         ("empty", Vec::new(), 400, "empty_upload", "empty"),
-        ("traversal zip", zip_of(&[file("transforms.json", b"{}"), file("../../escape.txt", b"x")]), 400, "unsafe_archive", "traversal"),
-        ("absolute tar", tar_with_raw_name("/tmp/phygap-evil.txt"), 400, "unsafe_archive", "absolute"),
-        ("symlink tar", tar_with_symlink(), 400, "unsafe_archive", "links"),
-        ("too large", vec![7u8; 300 << 10], 413, "payload_too_large", "MiB"),
-        ("bomb", zip_of(&[file("transforms.json", &valid_transforms), file("zeros.bin", &vec![0u8; 64 << 20])]), 413, "payload_too_large", "bomb"),
-        ("no transforms.json", zip_of(&[file("images/a.png", b"x")]), 422, "invalid_capture", "transforms.json"),
-        ("missing image", zip_of(&[file("transforms.json", &valid_transforms)]), 422, "invalid_capture", "missing file"),
+        (
+            "traversal zip",
+            zip_of(&[
+                file("transforms.json", b"{}"),
+                file("../../escape.txt", b"x"),
+            ]),
+            400,
+            "unsafe_archive",
+            "traversal",
+        ),
+        (
+            "absolute tar",
+            tar_with_raw_name("/tmp/phygap-evil.txt"),
+            400,
+            "unsafe_archive",
+            "absolute",
+        ),
+        (
+            "symlink tar",
+            tar_with_symlink(),
+            400,
+            "unsafe_archive",
+            "links",
+        ),
+        (
+            "too large",
+            vec![7u8; 300 << 10],
+            413,
+            "payload_too_large",
+            "MiB",
+        ),
+        (
+            "bomb",
+            zip_of(&[
+                file("transforms.json", &valid_transforms),
+                file("zeros.bin", &vec![0u8; 64 << 20]),
+            ]),
+            413,
+            "payload_too_large",
+            "bomb",
+        ),
+        (
+            "no transforms.json",
+            zip_of(&[file("images/a.png", b"x")]),
+            422,
+            "invalid_capture",
+            "transforms.json",
+        ),
+        (
+            "missing image",
+            zip_of(&[file("transforms.json", &valid_transforms)]),
+            422,
+            "invalid_capture",
+            "missing file",
+        ),
     ];
     for (label, body, status, code, needle) in cases {
         let (got, response) = t.upload(body).await;
@@ -309,17 +561,31 @@ async fn bad_uploads_are_rejected_and_leave_no_state() {
         let (got_code, message) = error_code(&response);
         assert_eq!(got_code, code, "{label}: {message}");
         assert!(message.contains(needle), "{label}: {message}");
-        assert_eq!(count_files(&dir.path().join("tmp")), 0, "{label}: temp files left");
-        assert_eq!(count_files(&dir.path().join("captures")), 0, "{label}: capture files left");
-        assert!(t.server.state().store.capture_ids().unwrap().is_empty(), "{label}: record left");
+        assert_eq!(
+            count_files(&dir.path().join("tmp")),
+            0,
+            "{label}: temp files left"
+        );
+        assert_eq!(
+            count_files(&dir.path().join("captures")),
+            0,
+            "{label}: capture files left"
+        );
+        assert!(
+            t.server.state().store.capture_ids().unwrap().is_empty(),
+            "{label}: record left"
+        );
     }
     assert!(!std::path::Path::new("/tmp/phygap-evil.txt").exists());
     // Too large without a Content-Length (chunked): stopped while streaming.
-    let chunks: Vec<Result<Vec<u8>, std::io::Error>> = (0..40).map(|_| Ok(vec![1u8; 16 << 10])).collect();
+    let chunks: Vec<Result<Vec<u8>, std::io::Error>> =
+        (0..40).map(|_| Ok(vec![1u8; 16 << 10])).collect();
     let response = t
         .client
         .post(t.url("/v1/captures"))
-        .body(reqwest::Body::wrap_stream(futures_util::stream::iter(chunks)))
+        .body(reqwest::Body::wrap_stream(futures_util::stream::iter(
+            chunks,
+        )))
         .send()
         .await
         .unwrap();
@@ -346,7 +612,7 @@ fn tar_with_raw_name(name: &str) -> Vec<u8> {
     header.set_mode(0o644);
     header.set_cksum();
     let mut bytes = header.as_bytes().to_vec();
-    bytes.extend_from_slice(&[b'x']);
+    bytes.extend_from_slice(b"x");
     bytes.resize(1024, 0);
     bytes.extend_from_slice(&[0u8; 1024]);
     bytes
@@ -357,7 +623,9 @@ fn tar_with_symlink() -> Vec<u8> {
     let mut header = tar::Header::new_ustar();
     header.set_entry_type(tar::EntryType::Symlink);
     header.set_size(0);
-    builder.append_link(&mut header, "transforms.json", "/etc/passwd").unwrap();
+    builder
+        .append_link(&mut header, "transforms.json", "/etc/passwd")
+        .unwrap();
     builder.into_inner().unwrap()
 }
 
@@ -370,31 +638,68 @@ async fn relight_runs_as_its_own_job() {
     let train_id = job["id"].as_str().unwrap().to_string();
     // Not trained yet (or still running): refused.
     let envmap_path = dir.path().join("sky.exr");
-    phygap::image_io::write_exr(&envmap_path, &phygap::image_io::Image::filled(8, 4, 3, 2.0)).unwrap();
+    phygap::image_io::write_exr(&envmap_path, &phygap::image_io::Image::filled(8, 4, 3, 2.0))
+        .unwrap();
     let envmap = std::fs::read(&envmap_path).unwrap();
     let form = |bytes: Vec<u8>| {
         reqwest::multipart::Form::new()
-            .part("envmap", reqwest::multipart::Part::bytes(bytes).file_name("sky.exr"))
+            .part(
+                "envmap",
+                reqwest::multipart::Part::bytes(bytes).file_name("sky.exr"),
+            )
             .text("rotate_deg", "90")
     };
     t.wait_state(&train_id, "succeeded", LONG).await;
-    let response = t.client.post(t.url(&format!("/v1/jobs/{train_id}/relight"))).multipart(form(b"not an image".to_vec())).send().await.unwrap();
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{train_id}/relight")))
+        .multipart(form(b"not an image".to_vec()))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 415);
-    let response = t.client.post(t.url(&format!("/v1/jobs/{train_id}/relight"))).multipart(form(envmap.clone())).send().await.unwrap();
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{train_id}/relight")))
+        .multipart(form(envmap.clone()))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 201);
     let relight: Value = response.json().await.unwrap();
-    assert_eq!((relight["kind"].as_str(), relight["parent_job_id"].as_str()), (Some("relight"), Some(train_id.as_str())));
+    assert_eq!(
+        (relight["kind"].as_str(), relight["parent_job_id"].as_str()),
+        (Some("relight"), Some(train_id.as_str()))
+    );
     let relight_id = relight["id"].as_str().unwrap();
     let done = t.wait_state(relight_id, "succeeded", LONG).await;
     assert_eq!(done["state"], "succeeded", "{done}");
-    let (_, list) = t.get_json(&format!("/v1/jobs/{relight_id}/artifacts")).await;
-    let names: Vec<&str> = list["artifacts"].as_array().unwrap().iter().map(|a| a["name"].as_str().unwrap()).collect();
+    let (_, list) = t
+        .get_json(&format!("/v1/jobs/{relight_id}/artifacts"))
+        .await;
+    let names: Vec<&str> = list["artifacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["name"].as_str().unwrap())
+        .collect();
     assert_eq!(names, ["relight.json", "relit_000.png"]);
-    let (_, result) = t.get_json(&format!("/v1/jobs/{relight_id}/artifacts/relight.json")).await;
+    let (_, result) = t
+        .get_json(&format!("/v1/jobs/{relight_id}/artifacts/relight.json"))
+        .await;
     assert_eq!(result["rotate_deg"], 90.0);
-    assert!((result["mean_radiance"].as_f64().unwrap() - 2.0).abs() < 1e-6, "{result}");
+    assert!(
+        (result["mean_radiance"].as_f64().unwrap() - 2.0).abs() < 1e-6,
+        "{result}"
+    );
     // Relighting a relight job is refused.
-    let response = t.client.post(t.url(&format!("/v1/jobs/{relight_id}/relight"))).multipart(form(envmap)).send().await.unwrap();
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{relight_id}/relight")))
+        .multipart(form(envmap))
+        .send()
+        .await
+        .unwrap();
     assert_eq!(response.status(), 409);
     t.server.shutdown().await;
 }
@@ -463,7 +768,12 @@ async fn openapi_document_and_router_list_the_same_routes() {
     assert_eq!(spec["openapi"], "3.1.0");
     let mut routes: Vec<(String, String)> = phygap_api::routes::route_table(1)
         .iter()
-        .map(|r| (r.method.to_string(), phygap_api::openapi::openapi_path(r.path)))
+        .map(|r| {
+            (
+                r.method.to_string(),
+                phygap_api::openapi::openapi_path(r.path),
+            )
+        })
         .collect();
     routes.sort();
     assert_eq!(routes, phygap_api::openapi::spec_operations(&spec));
@@ -478,7 +788,10 @@ async fn openapi_document_and_router_list_the_same_routes() {
             .unwrap();
         let status = response.status().as_u16();
         let body: Value = response.json().await.unwrap_or(Value::Null);
-        assert!(!(status == 404 && error_code(&body).1.starts_with("no route")), "{method} {path}");
+        assert!(
+            !(status == 404 && error_code(&body).1.starts_with("no route")),
+            "{method} {path}"
+        );
         assert_ne!(status, 405, "{method} {path}");
     }
     t.server.shutdown().await;

@@ -103,10 +103,7 @@ impl Live {
     }
 
     fn snapshot(&self) -> Progress {
-        self.progress
-            .lock()
-            .map(|p| p.clone())
-            .unwrap_or_default()
+        self.progress.lock().map(|p| p.clone()).unwrap_or_default()
     }
 }
 
@@ -184,7 +181,8 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
         .instrument(span.clone()),
     );
     let result = {
-        let (state, job, control, live) = (state.clone(), job.clone(), control.clone(), live.clone());
+        let (state, job, control, live) =
+            (state.clone(), job.clone(), control.clone(), live.clone());
         tokio::task::spawn_blocking(move || {
             let _entered = span.enter();
             execute(&state, &job, &control, &live)
@@ -230,7 +228,11 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
     if let Some(Finish::Failed(message)) = &finish {
         tracing::warn!(error = %message, "job failed");
     }
-    tracing::info!(outcome, seconds = started.elapsed().as_secs_f64(), "job run ended");
+    tracing::info!(
+        outcome,
+        seconds = started.elapsed().as_secs_f64(),
+        "job run ended"
+    );
     state
         .metrics
         .observe_job(job.spec.kind(), outcome, started.elapsed());
@@ -383,7 +385,10 @@ mod tests {
                 resumed_from: Some(100),
             },
         );
-        assert_eq!((p.iteration, p.iterations, p.resumed_from), (100, 300, Some(100)));
+        assert_eq!(
+            (p.iteration, p.iterations, p.resumed_from),
+            (100, 300, Some(100))
+        );
         apply_event(
             &mut p,
             &TrainEvent::Step {
@@ -400,10 +405,25 @@ mod tests {
         assert_eq!(p.stage.as_deref(), Some("material"));
         assert_eq!(p.losses.get("total"), Some(&0.5));
         assert_eq!(p.losses.get("l1"), Some(&0.25));
-        apply_event(&mut p, &TrainEvent::Evaluated { iteration: 150, test_psnr: 27.5 });
+        apply_event(
+            &mut p,
+            &TrainEvent::Evaluated {
+                iteration: 150,
+                test_psnr: 27.5,
+            },
+        );
         apply_event(&mut p, &TrainEvent::Checkpoint { iteration: 150 });
-        assert_eq!((p.test_psnr, p.checkpoint_iteration), (Some(27.5), Some(150)));
-        apply_event(&mut p, &TrainEvent::Finished { iteration: 300, seconds: 3.0 });
+        assert_eq!(
+            (p.test_psnr, p.checkpoint_iteration),
+            (Some(27.5), Some(150))
+        );
+        apply_event(
+            &mut p,
+            &TrainEvent::Finished {
+                iteration: 300,
+                seconds: 3.0,
+            },
+        );
         assert_eq!((p.iteration, p.eta_seconds), (300, Some(0.0)));
     }
 }

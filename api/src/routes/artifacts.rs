@@ -44,7 +44,10 @@ pub enum ByteRange {
     /// No (usable) range: the whole body.
     Full,
     /// Inclusive byte positions.
-    Partial { start: u64, end: u64 },
+    Partial {
+        start: u64,
+        end: u64,
+    },
     Unsatisfiable,
 }
 
@@ -121,7 +124,10 @@ pub async fn download(
     let mut response = Response::new(Body::from_stream(ReaderStream::new(reader)));
     *response.status_mut() = status;
     let h = response.headers_mut();
-    h.insert(header::CONTENT_TYPE, HeaderValue::from_static(info.content_type));
+    h.insert(
+        header::CONTENT_TYPE,
+        HeaderValue::from_static(info.content_type),
+    );
     h.insert(header::CONTENT_LENGTH, HeaderValue::from(len));
     h.insert(header::ACCEPT_RANGES, HeaderValue::from_static("bytes"));
     let file_name = name.rsplit('/').next().unwrap_or(&name);
@@ -132,16 +138,11 @@ pub async fn download(
     if status == StatusCode::PARTIAL_CONTENT {
         h.insert(
             header::CONTENT_RANGE,
-            header_value(&format!(
-                "bytes {start}-{}/{}",
-                start + len - 1,
-                info.size
-            ))?,
+            header_value(&format!("bytes {start}-{}/{}", start + len - 1, info.size))?,
         );
     }
     Ok(response)
 }
-
 
 #[cfg(test)]
 mod tests {
@@ -151,11 +152,26 @@ mod tests {
     fn ranges() {
         use ByteRange::*;
         assert_eq!(parse_range(None, 10), Full);
-        assert_eq!(parse_range(Some("bytes=0-3"), 10), Partial { start: 0, end: 3 });
-        assert_eq!(parse_range(Some("bytes=4-"), 10), Partial { start: 4, end: 9 });
-        assert_eq!(parse_range(Some("bytes=-3"), 10), Partial { start: 7, end: 9 });
-        assert_eq!(parse_range(Some("bytes=-30"), 10), Partial { start: 0, end: 9 });
-        assert_eq!(parse_range(Some("bytes=5-100"), 10), Partial { start: 5, end: 9 });
+        assert_eq!(
+            parse_range(Some("bytes=0-3"), 10),
+            Partial { start: 0, end: 3 }
+        );
+        assert_eq!(
+            parse_range(Some("bytes=4-"), 10),
+            Partial { start: 4, end: 9 }
+        );
+        assert_eq!(
+            parse_range(Some("bytes=-3"), 10),
+            Partial { start: 7, end: 9 }
+        );
+        assert_eq!(
+            parse_range(Some("bytes=-30"), 10),
+            Partial { start: 0, end: 9 }
+        );
+        assert_eq!(
+            parse_range(Some("bytes=5-100"), 10),
+            Partial { start: 5, end: 9 }
+        );
         assert_eq!(parse_range(Some("bytes=10-"), 10), Unsatisfiable);
         assert_eq!(parse_range(Some("bytes=-0"), 10), Unsatisfiable);
         assert_eq!(parse_range(Some("bytes=3-1"), 10), Full);

@@ -86,7 +86,10 @@ pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u
     let mut total = 0u64;
     while let Some(chunk) = stream.next().await {
         let chunk = chunk.map_err(|e| {
-            ApiError::bad_request("upload_interrupted", format!("reading the upload failed: {e}"))
+            ApiError::bad_request(
+                "upload_interrupted",
+                format!("reading the upload failed: {e}"),
+            )
         })?;
         total += chunk.len() as u64;
         if total > limit {

@@ -26,7 +26,10 @@ pub async fn metrics(State(state): State<AppState>) -> Result<Response, ApiError
     let counts = state.store.counts()?;
     let body = state.metrics.render(counts, state.config.workers);
     Ok((
-        [(header::CONTENT_TYPE, "text/plain; version=0.0.4; charset=utf-8")],
+        [(
+            header::CONTENT_TYPE,
+            "text/plain; version=0.0.4; charset=utf-8",
+        )],
         body,
     )
         .into_response())

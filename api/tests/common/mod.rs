@@ -94,10 +94,14 @@ impl Pipeline for DevPipeline {
             for key in IMAGE_KEYS {
                 if let Some(path) = frame[key].as_str() {
                     if path.split('/').any(|s| s == "..") || path.starts_with('/') {
-                        return Err(invalid(format!("frame {i}: `{key}` escapes the capture folder")));
+                        return Err(invalid(format!(
+                            "frame {i}: `{key}` escapes the capture folder"
+                        )));
                     }
                     if !capture_dir.join(path).is_file() {
-                        return Err(invalid(format!("frame {i}: `{key}` names a missing file `{path}`")));
+                        return Err(invalid(format!(
+                            "frame {i}: `{key}` names a missing file `{path}`"
+                        )));
                     }
                 }
             }
@@ -112,7 +116,9 @@ impl Pipeline for DevPipeline {
                 kinds.push(kind.to_string());
             }
             if !frame["mask_path"].is_string() {
-                warnings.push(format!("frame {i}: no mask_path; the whole image is object"));
+                warnings.push(format!(
+                    "frame {i}: no mask_path; the whole image is object"
+                ));
             }
         }
         Ok(CaptureInfo {
@@ -132,7 +138,11 @@ impl Pipeline for DevPipeline {
         on_event: &mut dyn FnMut(&TrainEvent),
     ) -> Result<RunOutcome, PipelineError> {
         let info = self.inspect(capture_dir)?;
-        let start = if resume { read_checkpoint(model_dir) } else { None };
+        let start = if resume {
+            read_checkpoint(model_dir)
+        } else {
+            None
+        };
         let mut log = std::fs::OpenOptions::new()
             .create(true)
             .append(true)
@@ -156,7 +166,8 @@ impl Pipeline for DevPipeline {
                 on_event(&TrainEvent::Checkpoint {
                     iteration: iteration - 1,
                 });
-                writeln!(log, "interrupted at {}", iteration - 1).map_err(|e| failed("training", e))?;
+                writeln!(log, "interrupted at {}", iteration - 1)
+                    .map_err(|e| failed("training", e))?;
                 return Ok(RunOutcome::Interrupted {
                     iteration: iteration - 1,
                 });
@@ -178,7 +189,11 @@ impl Pipeline for DevPipeline {
                 iterations,
                 stage,
                 loss,
-                losses: [("l1".to_string(), 0.8 * loss), ("mask".to_string(), 0.2 * loss)].into(),
+                losses: [
+                    ("l1".to_string(), 0.8 * loss),
+                    ("mask".to_string(), 0.2 * loss),
+                ]
+                .into(),
                 num_surfels: 1000 + iteration as usize,
                 elapsed_seconds: elapsed,
                 eta_seconds: elapsed / done * (iterations - iteration) as f64,
@@ -195,8 +210,11 @@ impl Pipeline for DevPipeline {
             }
         }
         write_checkpoint(model_dir, iterations)?;
-        std::fs::write(model_dir.join("model.json"), json!({ "iterations": iterations }).to_string())
-            .map_err(|e| failed("training", e))?;
+        std::fs::write(
+            model_dir.join("model.json"),
+            json!({ "iterations": iterations }).to_string(),
+        )
+        .map_err(|e| failed("training", e))?;
         writeln!(log, "finished").map_err(|e| failed("training", e))?;
         on_event(&TrainEvent::Finished {
             iteration: iterations,
@@ -206,7 +224,8 @@ impl Pipeline for DevPipeline {
     }
 
     fn export(&self, model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
-        let iterations = read_checkpoint(model_dir).ok_or_else(|| failed("export", "no checkpoint"))?;
+        let iterations =
+            read_checkpoint(model_dir).ok_or_else(|| failed("export", "no checkpoint"))?;
         let mut files = Vec::new();
         let surfels = out_dir.join("surfels.ply");
         let mut ply = String::from("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n");
@@ -222,8 +241,11 @@ impl Pipeline for DevPipeline {
         write_exr(&envmap, &image).map_err(|e| failed("export", e))?;
         files.push(envmap);
         let metrics = out_dir.join("metrics.json");
-        std::fs::write(&metrics, json!({ "iterations": iterations, "test_psnr": 30.0 }).to_string())
-            .map_err(|e| failed("export", e))?;
+        std::fs::write(
+            &metrics,
+            json!({ "iterations": iterations, "test_psnr": 30.0 }).to_string(),
+        )
+        .map_err(|e| failed("export", e))?;
         files.push(metrics);
         std::fs::create_dir_all(out_dir.join("renders")).map_err(|e| failed("export", e))?;
         let render = out_dir.join("renders/test_000.png");
@@ -241,14 +263,18 @@ impl Pipeline for DevPipeline {
         rotate_deg: f64,
     ) -> Result<Vec<PathBuf>, PipelineError> {
         read_checkpoint(model_dir).ok_or_else(|| failed("relighting", "no trained model"))?;
-        let (map, _) = read_image(envmap).map_err(|e| PipelineError::InvalidInput(e.to_string()))?;
+        let (map, _) =
+            read_image(envmap).map_err(|e| PipelineError::InvalidInput(e.to_string()))?;
         let mean = map.data.iter().map(|&v| v as f64).sum::<f64>() / map.data.len().max(1) as f64;
         let render = out_dir.join("relit_000.png");
         write_png(&render, &Image::filled(8, 8, 3, mean as f32), true)
             .map_err(|e| failed("relighting", e))?;
         let metrics = out_dir.join("relight.json");
-        std::fs::write(&metrics, json!({ "mean_radiance": mean, "rotate_deg": rotate_deg }).to_string())
-            .map_err(|e| failed("relighting", e))?;
+        std::fs::write(
+            &metrics,
+            json!({ "mean_radiance": mean, "rotate_deg": rotate_deg }).to_string(),
+        )
+        .map_err(|e| failed("relighting", e))?;
         Ok(vec![render, metrics])
     }
 }
@@ -259,7 +285,12 @@ pub fn write_capture(dir: &Path) {
     let mut frames = Vec::new();
     for i in 0..3 {
         let name = format!("images/r_{i}.png");
-        write_png(&dir.join(&name), &Image::filled(4, 4, 3, 0.1 * i as f32), true).unwrap();
+        write_png(
+            &dir.join(&name),
+            &Image::filled(4, 4, 3, 0.1 * i as f32),
+            true,
+        )
+        .unwrap();
         frames.push(json!({
             "file_path": name,
             "transform_matrix": [[1.0, 0.0, 0.0, i as f64], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 4.0], [0.0, 0.0, 0.0, 1.0]],
@@ -307,7 +338,9 @@ pub fn tar_of(entries: &[(String, Vec<u8>)]) -> Vec<u8> {
         let mut header = tar::Header::new_ustar();
         header.set_size(data.len() as u64);
         header.set_mode(0o644);
-        builder.append_data(&mut header, name, data.as_slice()).unwrap();
+        builder
+            .append_data(&mut header, name, data.as_slice())
+            .unwrap();
     }
     builder.into_inner().unwrap()
 }
@@ -363,7 +396,9 @@ impl TestServer {
     }
 
     pub async fn start_with(config: ServiceConfig, pipeline: Arc<dyn Pipeline>) -> TestServer {
-        let server = Server::start(config, pipeline).await.expect("server starts");
+        let server = Server::start(config, pipeline)
+            .await
+            .expect("server starts");
         let base = format!("http://{}", server.local_addr());
         TestServer {
             server,
@@ -419,7 +454,12 @@ impl TestServer {
     }
 
     /// Polls the job until `done(job)` or `timeout` (panics then).
-    pub async fn wait_job(&self, id: &str, timeout: Duration, done: impl Fn(&Value) -> bool) -> Value {
+    pub async fn wait_job(
+        &self,
+        id: &str,
+        timeout: Duration,
+        done: impl Fn(&Value) -> bool,
+    ) -> Value {
         let deadline = Instant::now() + timeout;
         loop {
             let (status, job) = self.get_json(&format!("/v1/jobs/{id}")).await;
@@ -427,7 +467,10 @@ impl TestServer {
             if done(&job) {
                 return job;
             }
-            assert!(Instant::now() < deadline, "timed out waiting for job {id}: {job}");
+            assert!(
+                Instant::now() < deadline,
+                "timed out waiting for job {id}: {job}"
+            );
             tokio::time::sleep(Duration::from_millis(50)).await;
         }
     }

@@ -1,0 +1,277 @@
+//! Storage of the files a job produces. [`ArtifactStore`] is the seam (an object store can implement
+//! it later); [`FsArtifacts`] keeps them on the local filesystem under `DATA_DIR/artifacts/JOB_ID/`.
+//! Artifact names are relative paths of `/`-separated segments made of `[A-Za-z0-9._-]` that do not
+//! start with a dot, so a name can never leave its job's folder.
+
+use std::io::{Seek, SeekFrom};
+use std::path::{Path, PathBuf};
+use std::pin::Pin;
+
+use serde::Serialize;
+use thiserror::Error;
+use tokio::io::{AsyncRead, AsyncReadExt};
+
+/// Failures of artifact storage.
+#[derive(Debug, Error)]
+pub enum ArtifactError {
+    #[error("artifact I/O on `{path}`: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("`{0}` is not a valid artifact name")]
+    BadName(String),
+}
+
+fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> ArtifactError + '_ {
+    move |source| ArtifactError::Io {
+        path: path.to_owned(),
+        source,
+    }
+}
+
+/// One stored file of a job.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct ArtifactInfo {
+    pub name: String,
+    pub size: u64,
+    pub content_type: &'static str,
+}
+
+/// A byte stream of (part of) an artifact.
+pub type ArtifactReader = Pin<Box<dyn AsyncRead + Send>>;
+
+/// Where job products live.
+pub trait ArtifactStore: Send + Sync + 'static {
+    /// Moves every file under `staging` (recursively) into the job's artifacts, replacing any
+    /// earlier ones; returns what is stored now.
+    fn publish(&self, job_id: &str, staging: &Path) -> Result<Vec<ArtifactInfo>, ArtifactError>;
+    /// The job's artifacts, sorted by name (empty if it has none).
+    fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError>;
+    /// One artifact's description, `None` if absent.
+    fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError>;
+    /// `len` bytes of the artifact from byte `start` (the caller checked the range against `stat`).
+    fn open_range(
+        &self,
+        job_id: &str,
+        name: &str,
+        start: u64,
+        len: u64,
+    ) -> Result<ArtifactReader, ArtifactError>;
+    /// Removes the job's artifacts.
+    fn delete(&self, job_id: &str) -> Result<(), ArtifactError>;
+}
+
+/// Content type of an artifact by extension.
+pub fn content_type(name: &str) -> &'static str {
+    let ext = name.rsplit_once('.').map(|(_, e)| e.to_ascii_lowercase());
+    match ext.as_deref() {
+        Some("json") => "application/json",
+        Some("png") => "image/png",
+        Some("jpg" | "jpeg") => "image/jpeg",
+        Some("exr") => "image/x-exr",
+        Some("hdr") => "image/vnd.radiance",
+        Some("ply") => "application/x-ply",
+        Some("txt" | "log") => "text/plain; charset=utf-8",
+        Some("csv") => "text/csv",
+        _ => "application/octet-stream",
+    }
+}
+
+/// True when `name` is a safe relative artifact path.
+pub fn valid_name(name: &str) -> bool {
+    !name.is_empty()
+        && name.len() <= 255
+        && name.split('/').all(|segment| {
+            !segment.is_empty()
+                && !segment.starts_with('.')
+                && segment
+                    .bytes()
+                    .all(|b| b.is_ascii_alphanumeric() || matches!(b, b'.' | b'_' | b'-'))
+        })
+}
+
+/// Artifacts as files under one root folder.
+pub struct FsArtifacts {
+    root: PathBuf,
+}
+
+impl FsArtifacts {
+    pub fn new(root: PathBuf) -> Result<Self, ArtifactError> {
+        std::fs::create_dir_all(&root).map_err(io_err(&root))?;
+        Ok(FsArtifacts { root })
+    }
+
+    fn job_dir(&self, job_id: &str) -> Result<PathBuf, ArtifactError> {
+        if !valid_name(job_id) || job_id.contains('/') {
+            return Err(ArtifactError::BadName(job_id.to_owned()));
+        }
+        Ok(self.root.join(job_id))
+    }
+
+    fn path(&self, job_id: &str, name: &str) -> Result<PathBuf, ArtifactError> {
+        if !valid_name(name) {
+            return Err(ArtifactError::BadName(name.to_owned()));
+        }
+        Ok(self.job_dir(job_id)?.join(name))
+    }
+}
+
+fn walk_files(dir: &Path, prefix: &str, out: &mut Vec<(String, PathBuf)>) -> std::io::Result<()> {
+    for entry in std::fs::read_dir(dir)? {
+        let entry = entry?;
+        let file_name = entry.file_name().to_string_lossy().into_owned();
+        let name = if prefix.is_empty() {
+            file_name
+        } else {
+            format!("{prefix}/{file_name}")
+        };
+        let kind = entry.file_type()?;
+        if kind.is_dir() {
+            walk_files(&entry.path(), &name, out)?;
+        } else if kind.is_file() {
+            out.push((name, entry.path()));
+        }
+    }
+    Ok(())
+}
+
+impl ArtifactStore for FsArtifacts {
+    fn publish(&self, job_id: &str, staging: &Path) -> Result<Vec<ArtifactInfo>, ArtifactError> {
+        let dir = self.job_dir(job_id)?;
+        let mut files = Vec::new();
+        walk_files(staging, "", &mut files).map_err(io_err(staging))?;
+        if dir.exists() {
+            std::fs::remove_dir_all(&dir).map_err(io_err(&dir))?;
+        }
+        for (name, source) in files {
+            if !valid_name(&name) {
+                tracing::warn!(
+                    job_id,
+                    name,
+                    "skipping an exported file with an unsafe name"
+                );
+                continue;
+            }
+            let target = dir.join(&name);
+            if let Some(parent) = target.parent() {
+                std::fs::create_dir_all(parent).map_err(io_err(parent))?;
+            }
+            std::fs::rename(&source, &target).map_err(io_err(&target))?;
+        }
+        self.list(job_id)
+    }
+
+    fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError> {
+        let dir = self.job_dir(job_id)?;
+        if !dir.is_dir() {
+            return Ok(Vec::new());
+        }
+        let mut files = Vec::new();
+        walk_files(&dir, "", &mut files).map_err(io_err(&dir))?;
+        let mut infos = Vec::with_capacity(files.len());
+        for (name, path) in files {
+            let size = std::fs::metadata(&path).map_err(io_err(&path))?.len();
+            infos.push(ArtifactInfo {
+                content_type: content_type(&name),
+                name,
+                size,
+            });
+        }
+        infos.sort_by(|a, b| a.name.cmp(&b.name));
+        Ok(infos)
+    }
+
+    fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError> {
+        let path = match self.path(job_id, name) {
+            Ok(path) => path,
+            Err(ArtifactError::BadName(_)) => return Ok(None),
+            Err(e) => return Err(e),
+        };
+        match std::fs::metadata(&path) {
+            Ok(meta) if meta.is_file() => Ok(Some(ArtifactInfo {
+                name: name.to_owned(),
+                size: meta.len(),
+                content_type: content_type(name),
+            })),
+            Ok(_) => Ok(None),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
+            Err(e) => Err(io_err(&path)(e)),
+        }
+    }
+
+    fn open_range(
+        &self,
+        job_id: &str,
+        name: &str,
+        start: u64,
+        len: u64,
+    ) -> Result<ArtifactReader, ArtifactError> {
+        let path = self.path(job_id, name)?;
+        let mut file = std::fs::File::open(&path).map_err(io_err(&path))?;
+        file.seek(SeekFrom::Start(start)).map_err(io_err(&path))?;
+        Ok(Box::pin(tokio::fs::File::from_std(file).take(len)))
+    }
+
+    fn delete(&self, job_id: &str) -> Result<(), ArtifactError> {
+        let dir = self.job_dir(job_id)?;
+        match std::fs::remove_dir_all(&dir) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(io_err(&dir)(e)),
+            _ => Ok(()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_cannot_escape_or_hide() {
+        for good in ["mesh.ply", "renders/test_000.png", "a-b_c.d"] {
+            assert!(valid_name(good), "{good}");
+        }
+        for bad in [
+            "",
+            "../x",
+            "a/../b",
+            "/etc/passwd",
+            ".env",
+            "a//b",
+            "a\\b",
+            "r/.x",
+            "a b",
+        ] {
+            assert!(!valid_name(bad), "{bad}");
+        }
+    }
+
+    #[tokio::test]
+    async fn publish_moves_nested_files_and_ranges_read_the_right_bytes() {
+        let dir = tempfile::tempdir().unwrap();
+        let store = FsArtifacts::new(dir.path().join("artifacts")).unwrap();
+        let staging = dir.path().join("staging");
+        std::fs::create_dir_all(staging.join("renders")).unwrap();
+        std::fs::write(staging.join("metrics.json"), b"{\"psnr\": 30}").unwrap();
+        std::fs::write(staging.join("renders/test_000.png"), b"0123456789").unwrap();
+        let listed = store.publish("job_1", &staging).unwrap();
+        let names: Vec<_> = listed.iter().map(|a| (a.name.as_str(), a.size)).collect();
+        assert_eq!(names, [("metrics.json", 12), ("renders/test_000.png", 10)]);
+        assert_eq!(listed[1].content_type, "image/png");
+        assert!(!staging.join("metrics.json").exists(), "moved, not copied");
+        let mut part = Vec::new();
+        store
+            .open_range("job_1", "renders/test_000.png", 3, 4)
+            .unwrap()
+            .read_to_end(&mut part)
+            .await
+            .unwrap();
+        assert_eq!(part, b"3456");
+        assert!(store
+            .stat("job_1", "../job_1/metrics.json")
+            .unwrap()
+            .is_none());
+        store.delete("job_1").unwrap();
+        assert!(store.list("job_1").unwrap().is_empty());
+    }
+}

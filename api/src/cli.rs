@@ -1,0 +1,57 @@
+//! The `phygap-api` command line (also read by the deploy test to check the flags the Dockerfile
+//! and the systemd unit use).
+
+use std::net::SocketAddr;
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+
+use crate::ServiceConfig;
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "phygap-api",
+    version,
+    about = "The phygap reconstruction service (HTTP API, job queue, workers)"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Serve the HTTP API and run queued jobs until SIGTERM or Ctrl-C.
+    Serve(ServeArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct ServeArgs {
+    /// Address to listen on.
+    #[arg(long, default_value = "127.0.0.1:8080", env = "PHYGAP_BIND")]
+    pub bind: SocketAddr,
+    /// Folder of the database, captures, checkpoints and artifacts.
+    #[arg(long, default_value = "phygap-data", env = "PHYGAP_DATA_DIR")]
+    pub data_dir: PathBuf,
+    /// Jobs run at once (0: queue jobs without running any).
+    #[arg(long, default_value_t = 1, env = "PHYGAP_WORKERS")]
+    pub workers: usize,
+    /// Require `Authorization: Bearer TOKEN` on every /v1 route.
+    #[arg(long, env = "PHYGAP_TOKEN", hide_env_values = true)]
+    pub token: Option<String>,
+    /// Largest upload (capture archive, environment map) in MiB; larger ones get 413.
+    #[arg(long, default_value_t = 1024, env = "PHYGAP_MAX_UPLOAD_MB",
+          value_parser = clap::value_parser!(u64).range(1..=1_048_576))]
+    pub max_upload_mb: u64,
+}
+
+impl ServeArgs {
+    pub fn to_config(&self) -> ServiceConfig {
+        let mut config = ServiceConfig::new(self.data_dir.clone());
+        config.bind = self.bind;
+        config.workers = self.workers;
+        config.token = self.token.clone().filter(|t| !t.is_empty());
+        config.max_upload_bytes = self.max_upload_mb << 20;
+        config
+    }
+}

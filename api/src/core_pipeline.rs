@@ -1,0 +1,75 @@
+//! The production [`Pipeline`]: the phygap core's capture loader, trainer, exporter and relighter.
+//! Each call is blocking; the capture is loaded from disk per call (the service keeps no capture in
+//! memory between jobs).
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+
+use phygap::config::TrainConfig;
+use phygap::events::TrainEvent;
+
+use crate::pipeline::{CaptureInfo, Pipeline, PipelineError, RunOutcome};
+
+/// Calls `phygap::capture::load`, `phygap::train::train`, `phygap::export::export` and
+/// `phygap::relight::relight`.
+pub struct CorePipeline;
+
+fn load(capture_dir: &Path) -> Result<phygap::capture::Capture, PipelineError> {
+    phygap::capture::load(capture_dir).map_err(|e| PipelineError::InvalidCapture(e.to_string()))
+}
+
+impl Pipeline for CorePipeline {
+    fn inspect(&self, capture_dir: &Path) -> Result<CaptureInfo, PipelineError> {
+        let summary = load(capture_dir)?.summary();
+        Ok(CaptureInfo {
+            views: summary.views,
+            kinds: summary.kinds,
+            warnings: summary.warnings,
+        })
+    }
+
+    fn train(
+        &self,
+        capture_dir: &Path,
+        model_dir: &Path,
+        config: &TrainConfig,
+        resume: bool,
+        cancel: &AtomicBool,
+        on_event: &mut dyn FnMut(&TrainEvent),
+    ) -> Result<RunOutcome, PipelineError> {
+        let capture = load(capture_dir)?;
+        match phygap::train::train(&capture, model_dir, config, resume, cancel, on_event) {
+            Ok(phygap::train::TrainOutcome::Finished) => Ok(RunOutcome::Finished),
+            Ok(phygap::train::TrainOutcome::Interrupted { iteration }) => {
+                Ok(RunOutcome::Interrupted { iteration })
+            }
+            Err(e) => Err(PipelineError::Failed {
+                stage: "training",
+                message: e.to_string(),
+            }),
+        }
+    }
+
+    fn export(&self, model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
+        phygap::export::export(model_dir, out_dir).map_err(|e| PipelineError::Failed {
+            stage: "export",
+            message: e.to_string(),
+        })
+    }
+
+    fn relight(
+        &self,
+        model_dir: &Path,
+        envmap: &Path,
+        cameras: Option<&Path>,
+        out_dir: &Path,
+        rotate_deg: f64,
+    ) -> Result<Vec<PathBuf>, PipelineError> {
+        phygap::relight::relight(model_dir, envmap, cameras, out_dir, rotate_deg).map_err(|e| {
+            PipelineError::Failed {
+                stage: "relighting",
+                message: e.to_string(),
+            }
+        })
+    }
+}

@@ -1,0 +1,37 @@
+//! `phygap-api serve`: runs the reconstruction service until SIGTERM or Ctrl-C, then checkpoints
+//! and requeues running jobs before exiting.
+
+use anyhow::Context;
+use clap::Parser;
+use phygap_api::cli::{Cli, Command};
+
+#[tokio::main]
+async fn main() -> anyhow::Result<()> {
+    tracing_subscriber::fmt()
+        .with_env_filter(
+            tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "info".into()),
+        )
+        .with_writer(std::io::stderr)
+        .init();
+    match Cli::parse().command {
+        Command::Serve(args) => {
+            let pipeline = phygap_api::pipeline::production_pipeline()?;
+            let server = phygap_api::Server::start(args.to_config(), pipeline)
+                .await
+                .context("starting the service")?;
+            wait_for_signal().await?;
+            server.shutdown().await;
+        }
+    }
+    Ok(())
+}
+
+async fn wait_for_signal() -> anyhow::Result<()> {
+    let mut terminate = tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate())
+        .context("installing the SIGTERM handler")?;
+    tokio::select! {
+        result = tokio::signal::ctrl_c() => result.context("waiting for Ctrl-C")?,
+        _ = terminate.recv() => {}
+    }
+    Ok(())
+}

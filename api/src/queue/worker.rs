@@ -1,0 +1,429 @@
+//! Workers: each is a tokio task that claims a job from the store, runs it on the blocking pool
+//! (one thread per job) and records how it ended. Beside each running job a heartbeat task writes
+//! its progress and extends its lease (at most every 100 ms while events arrive, at least every
+//! third of the lease), and turns a cancel requested in the store into the job's cancel flag. One
+//! reaper task requeues jobs whose lease expired (their process died).
+
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use phygap::events::{Stage, TrainEvent};
+use tokio::sync::Notify;
+use tokio::task::JoinHandle;
+use tokio_util::sync::CancellationToken;
+use tracing::Instrument;
+
+use crate::queue::{CancelReason, JobControl};
+use crate::store::{now_ms, Finish, JobRecord, JobSpec, Progress, StoreError};
+use crate::AppState;
+
+/// Starts the configured workers and the lease reaper.
+pub fn spawn(state: &AppState) -> Vec<JoinHandle<()>> {
+    let mut tasks: Vec<JoinHandle<()>> = (0..state.config.workers)
+        .map(|index| tokio::spawn(worker_loop(state.clone(), index)))
+        .collect();
+    tasks.push(tokio::spawn(reaper_loop(state.clone())));
+    tasks
+}
+
+fn lease_deadline(state: &AppState) -> i64 {
+    now_ms() + state.config.lease.as_millis() as i64
+}
+
+async fn worker_loop(state: AppState, index: usize) {
+    loop {
+        if state.shutdown.is_cancelled() {
+            break;
+        }
+        let wake = state.runtime.wake().notified();
+        tokio::pin!(wake);
+        wake.as_mut().enable();
+        match state
+            .store
+            .claim(state.runtime.owner(), now_ms(), lease_deadline(&state))
+        {
+            Ok(Some(job)) => {
+                let span = tracing::info_span!("job", job_id = %job.id, kind = job.spec.kind(), worker = index);
+                run_job(&state, job, span.clone()).instrument(span).await;
+                continue;
+            }
+            Ok(None) => {}
+            Err(e) => tracing::error!(error = %e, "claiming a job failed"),
+        }
+        tokio::select! {
+            _ = state.shutdown.cancelled() => break,
+            _ = &mut wake => {}
+            _ = tokio::time::sleep(state.config.poll_interval) => {}
+        }
+    }
+}
+
+async fn reaper_loop(state: AppState) {
+    let period = (state.config.lease / 4).max(Duration::from_millis(100));
+    loop {
+        match state
+            .store
+            .requeue_expired(now_ms(), state.config.max_attempts)
+        {
+            Ok(ids) if !ids.is_empty() => {
+                for id in &ids {
+                    tracing::warn!(job_id = %id, "lease expired (worker died): job requeued");
+                    state.runtime.changed(id);
+                }
+                state.runtime.wake_workers();
+            }
+            Ok(_) => {}
+            Err(e) => tracing::error!(error = %e, "requeueing expired jobs failed"),
+        }
+        tokio::select! {
+            _ = state.shutdown.cancelled() => break,
+            _ = tokio::time::sleep(period) => {}
+        }
+    }
+}
+
+/// How the blocking part of a job ended.
+enum Executed {
+    Completed,
+    Interrupted,
+}
+
+/// Shared between the blocking job thread and its heartbeat task.
+struct Live {
+    progress: Mutex<Progress>,
+    dirty: Notify,
+}
+
+impl Live {
+    fn update(&self, f: impl FnOnce(&mut Progress)) {
+        if let Ok(mut progress) = self.progress.lock() {
+            f(&mut progress);
+        }
+        self.dirty.notify_one();
+    }
+
+    fn snapshot(&self) -> Progress {
+        self.progress.lock().map(|p| p.clone()).unwrap_or_default()
+    }
+}
+
+fn stage_name(stage: Stage) -> &'static str {
+    match stage {
+        Stage::Geometry => "geometry",
+        Stage::Material => "material",
+        Stage::Polar => "polar",
+    }
+}
+
+/// Folds a training event into the job's progress.
+pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
+    match event {
+        TrainEvent::Started {
+            iterations,
+            resumed_from,
+            ..
+        } => {
+            progress.iterations = *iterations;
+            progress.iteration = resumed_from.unwrap_or(0);
+            progress.resumed_from = *resumed_from;
+        }
+        TrainEvent::Step {
+            iteration,
+            iterations,
+            stage,
+            loss,
+            losses,
+            eta_seconds,
+            ..
+        } => {
+            progress.iteration = *iteration;
+            progress.iterations = *iterations;
+            progress.stage = Some(stage_name(*stage).to_owned());
+            progress.losses = losses.clone();
+            progress.losses.insert("total".into(), *loss);
+            progress.eta_seconds = Some(*eta_seconds);
+        }
+        TrainEvent::Evaluated { test_psnr, .. } => progress.test_psnr = Some(*test_psnr),
+        TrainEvent::Checkpoint { iteration } => progress.checkpoint_iteration = Some(*iteration),
+        TrainEvent::Finished { iteration, .. } => {
+            progress.iteration = *iteration;
+            progress.eta_seconds = Some(0.0);
+        }
+    }
+}
+
+async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
+    let started = Instant::now();
+    let control = state.runtime.register(&job.id);
+    if state.shutdown.is_cancelled() {
+        control.cancel(CancelReason::Shutdown);
+    }
+    if job.cancel_requested {
+        control.cancel(CancelReason::User);
+    }
+    tracing::info!(attempt = job.attempts, "job started");
+    let live = Arc::new(Live {
+        progress: Mutex::new(Progress {
+            stage: Some("starting".into()),
+            ..job.progress.clone()
+        }),
+        dirty: Notify::new(),
+    });
+    let done = CancellationToken::new();
+    let heartbeat = tokio::spawn(
+        heartbeat_loop(
+            state.clone(),
+            job.id.clone(),
+            live.clone(),
+            control.clone(),
+            done.clone(),
+        )
+        .instrument(span.clone()),
+    );
+    let result = {
+        let (state, job, control, live) =
+            (state.clone(), job.clone(), control.clone(), live.clone());
+        tokio::task::spawn_blocking(move || {
+            let _entered = span.enter();
+            execute(&state, &job, &control, &live)
+        })
+        .await
+    };
+    let finish = match result {
+        Ok(Ok(Executed::Completed)) => {
+            live.update(|p| p.stage = Some("done".into()));
+            Some(Finish::Succeeded)
+        }
+        Ok(Ok(Executed::Interrupted)) => match control.reason() {
+            Some(CancelReason::User) => Some(Finish::Cancelled),
+            Some(CancelReason::LeaseLost) => None,
+            Some(CancelReason::Shutdown) | None => Some(Finish::Requeue),
+        },
+        Ok(Err(message)) => Some(Finish::Failed(message)),
+        Err(join_error) => Some(Finish::Failed(format!("the job panicked: {join_error}"))),
+    };
+    done.cancel();
+    if let Err(e) = heartbeat.await {
+        tracing::error!(error = %e, "heartbeat task ended abnormally");
+    }
+    let outcome = match &finish {
+        Some(Finish::Succeeded) => "succeeded",
+        Some(Finish::Failed(_)) => "failed",
+        Some(Finish::Cancelled) => "cancelled",
+        Some(Finish::Requeue) => "requeued",
+        None => "lease_lost",
+    };
+    if let Some(finish) = &finish {
+        match state
+            .store
+            .finish(&job.id, state.runtime.owner(), finish, now_ms())
+        {
+            Ok(()) => {}
+            Err(StoreError::LeaseLost(_)) => {
+                tracing::warn!("lease lost before the job could be recorded as {outcome}")
+            }
+            Err(e) => tracing::error!(error = %e, "recording the job's end failed"),
+        }
+    }
+    if let Some(Finish::Failed(message)) = &finish {
+        tracing::warn!(error = %message, "job failed");
+    }
+    tracing::info!(
+        outcome,
+        seconds = started.elapsed().as_secs_f64(),
+        "job run ended"
+    );
+    state
+        .metrics
+        .observe_job(job.spec.kind(), outcome, started.elapsed());
+    state.runtime.unregister(&job.id);
+    state.runtime.changed(&job.id);
+}
+
+async fn heartbeat_loop(
+    state: AppState,
+    job_id: String,
+    live: Arc<Live>,
+    control: Arc<JobControl>,
+    done: CancellationToken,
+) {
+    let beat = (state.config.lease / 3).max(Duration::from_millis(50));
+    loop {
+        let last = tokio::select! {
+            biased;
+            _ = done.cancelled() => true,
+            _ = live.dirty.notified() => false,
+            _ = tokio::time::sleep(beat) => false,
+        };
+        let progress = live.snapshot();
+        match state.store.heartbeat(
+            &job_id,
+            state.runtime.owner(),
+            &progress,
+            lease_deadline(&state),
+        ) {
+            Ok(true) => control.cancel(CancelReason::User),
+            Ok(false) => {}
+            Err(StoreError::LeaseLost(_)) => {
+                if !last {
+                    tracing::error!("lease lost: another worker owns this job now; stopping");
+                }
+                control.cancel(CancelReason::LeaseLost);
+            }
+            Err(e) => tracing::error!(error = %e, "heartbeat failed"),
+        }
+        state.runtime.changed(&job_id);
+        if last {
+            break;
+        }
+        tokio::select! {
+            _ = done.cancelled() => {}
+            _ = tokio::time::sleep(Duration::from_millis(100)) => {}
+        }
+    }
+}
+
+fn replace_dir(dir: &std::path::Path) -> Result<(), String> {
+    if dir.exists() {
+        std::fs::remove_dir_all(dir).map_err(|e| format!("clearing `{}`: {e}", dir.display()))?;
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("creating `{}`: {e}", dir.display()))
+}
+
+/// The blocking body of a job. Errors are messages for the job's `error` field.
+fn execute(
+    state: &AppState,
+    job: &JobRecord,
+    control: &JobControl,
+    live: &Live,
+) -> Result<Executed, String> {
+    let paths = &state.paths;
+    let staging = paths.staging_dir(&job.id);
+    match &job.spec {
+        JobSpec::Train { config } => {
+            let capture_dir = paths.capture_dir(&job.capture_id);
+            if !capture_dir.is_dir() {
+                return Err(format!("capture `{}` no longer exists", job.capture_id));
+            }
+            let model_dir = paths.model_dir(&job.id);
+            std::fs::create_dir_all(&model_dir)
+                .map_err(|e| format!("creating `{}`: {e}", model_dir.display()))?;
+            let resume = job.attempts > 1;
+            let mut on_event = |event: &TrainEvent| live.update(|p| apply_event(p, event));
+            let outcome = state
+                .pipeline
+                .train(
+                    &capture_dir,
+                    &model_dir,
+                    config,
+                    resume,
+                    &control.cancel,
+                    &mut on_event,
+                )
+                .map_err(|e| e.to_string())?;
+            if let crate::pipeline::RunOutcome::Interrupted { iteration } = outcome {
+                tracing::info!(iteration, reason = ?control.reason(), "training interrupted at a checkpoint");
+                return Ok(Executed::Interrupted);
+            }
+            live.update(|p| p.stage = Some("exporting".into()));
+            replace_dir(&staging)?;
+            state
+                .pipeline
+                .export(&model_dir, &staging)
+                .map_err(|e| e.to_string())?;
+        }
+        JobSpec::Relight {
+            parent_job_id,
+            envmap_file,
+            cameras_file,
+            rotate_deg,
+        } => {
+            if control.cancel.load(std::sync::atomic::Ordering::SeqCst) {
+                return Ok(Executed::Interrupted);
+            }
+            live.update(|p| p.stage = Some("relighting".into()));
+            let input = paths.input_dir(&job.id);
+            let cameras = cameras_file.as_ref().map(|name| input.join(name));
+            replace_dir(&staging)?;
+            state
+                .pipeline
+                .relight(
+                    &paths.model_dir(parent_job_id),
+                    &input.join(envmap_file),
+                    cameras.as_deref(),
+                    &staging,
+                    *rotate_deg,
+                )
+                .map_err(|e| e.to_string())?;
+        }
+    }
+    let published = state
+        .artifacts
+        .publish(&job.id, &staging)
+        .map_err(|e| e.to_string())?;
+    let _ = std::fs::remove_dir_all(&staging);
+    tracing::info!(artifacts = published.len(), "artifacts published");
+    Ok(Executed::Completed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::BTreeMap;
+
+    #[test]
+    fn events_fold_into_progress() {
+        let mut p = Progress::default();
+        apply_event(
+            &mut p,
+            &TrainEvent::Started {
+                iterations: 300,
+                mode: "full".into(),
+                backend: "cpu".into(),
+                train_views: 7,
+                test_views: 1,
+                resumed_from: Some(100),
+            },
+        );
+        assert_eq!(
+            (p.iteration, p.iterations, p.resumed_from),
+            (100, 300, Some(100))
+        );
+        apply_event(
+            &mut p,
+            &TrainEvent::Step {
+                iteration: 150,
+                iterations: 300,
+                stage: Stage::Material,
+                loss: 0.5,
+                losses: BTreeMap::from([("l1".to_string(), 0.25)]),
+                num_surfels: 10,
+                elapsed_seconds: 1.0,
+                eta_seconds: 2.0,
+            },
+        );
+        assert_eq!(p.stage.as_deref(), Some("material"));
+        assert_eq!(p.losses.get("total"), Some(&0.5));
+        assert_eq!(p.losses.get("l1"), Some(&0.25));
+        apply_event(
+            &mut p,
+            &TrainEvent::Evaluated {
+                iteration: 150,
+                test_psnr: 27.5,
+            },
+        );
+        apply_event(&mut p, &TrainEvent::Checkpoint { iteration: 150 });
+        assert_eq!(
+            (p.test_psnr, p.checkpoint_iteration),
+            (Some(27.5), Some(150))
+        );
+        apply_event(
+            &mut p,
+            &TrainEvent::Finished {
+                iteration: 300,
+                seconds: 3.0,
+            },
+        );
+        assert_eq!((p.iteration, p.eta_seconds), (300, Some(0.0)));
+    }
+}

@@ -1,0 +1,239 @@
+//! Capture upload (streamed to disk, extracted safely, validated by the pipeline), lookup and
+//! deletion. A rejected upload leaves nothing behind: its temporary folder is removed and no
+//! record is written.
+
+use std::path::{Path as FsPath, PathBuf};
+
+use axum::body::Body;
+use axum::extract::{Path, State};
+use axum::http::{header, HeaderMap, StatusCode};
+use axum::Json;
+use futures_util::StreamExt;
+use serde::Serialize;
+use tokio::io::AsyncWriteExt;
+
+use crate::archive::ArchiveError;
+use crate::error::ApiError;
+use crate::pipeline::PipelineError;
+use crate::queue::new_id;
+use crate::store::{now_ms, rfc3339, CaptureRecord, DeleteOutcome};
+use crate::AppState;
+
+/// A capture as answered.
+#[derive(Serialize)]
+pub struct CaptureView {
+    id: String,
+    views: usize,
+    kinds: Vec<String>,
+    warnings: Vec<String>,
+    size_bytes: u64,
+    created_at: String,
+}
+
+impl From<CaptureRecord> for CaptureView {
+    fn from(c: CaptureRecord) -> Self {
+        CaptureView {
+            id: c.id,
+            views: c.views,
+            kinds: c.kinds,
+            warnings: c.warnings,
+            size_bytes: c.size_bytes,
+            created_at: rfc3339(c.created_at),
+        }
+    }
+}
+
+/// A folder removed when dropped unless [`TempDir::keep`] was called.
+pub struct TempDir {
+    path: PathBuf,
+    armed: bool,
+}
+
+impl TempDir {
+    pub fn create(path: PathBuf) -> Result<Self, ApiError> {
+        std::fs::create_dir_all(&path)
+            .map_err(|e| ApiError::internal("creating an upload folder", e))?;
+        Ok(TempDir { path, armed: true })
+    }
+
+    pub fn path(&self) -> &FsPath {
+        &self.path
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        if self.armed {
+            if let Err(e) = std::fs::remove_dir_all(&self.path) {
+                if e.kind() != std::io::ErrorKind::NotFound {
+                    tracing::error!(path = %self.path.display(), error = %e, "removing a temporary folder failed");
+                }
+            }
+        }
+    }
+}
+
+fn too_large(limit: u64) -> ApiError {
+    ApiError::too_large(format!("upload exceeds the limit of {} MiB", limit >> 20))
+}
+
+/// Streams a request body into `target`, refusing more than `limit` bytes; returns the size.
+pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u64, ApiError> {
+    let mut file = tokio::fs::File::create(target)
+        .await
+        .map_err(|e| ApiError::internal("creating the upload file", e))?;
+    let mut stream = body.into_data_stream();
+    let mut total = 0u64;
+    while let Some(chunk) = stream.next().await {
+        let chunk = chunk.map_err(|e| {
+            ApiError::bad_request(
+                "upload_interrupted",
+                format!("reading the upload failed: {e}"),
+            )
+        })?;
+        total += chunk.len() as u64;
+        if total > limit {
+            return Err(too_large(limit));
+        }
+        file.write_all(&chunk)
+            .await
+            .map_err(|e| ApiError::internal("writing the upload", e))?;
+    }
+    file.flush()
+        .await
+        .map_err(|e| ApiError::internal("writing the upload", e))?;
+    Ok(total)
+}
+
+/// Rejects early when the declared length is already over the limit.
+pub fn check_content_length(headers: &HeaderMap, limit: u64) -> Result<(), ApiError> {
+    let declared = headers
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.parse::<u64>().ok());
+    match declared {
+        Some(len) if len > limit => Err(too_large(limit)),
+        _ => Ok(()),
+    }
+}
+
+fn archive_error(e: ArchiveError) -> ApiError {
+    match e {
+        ArchiveError::UnknownFormat(m) => ApiError::new(
+            StatusCode::UNSUPPORTED_MEDIA_TYPE,
+            "unsupported_archive",
+            format!("unsupported archive format: {m}"),
+        ),
+        ArchiveError::Corrupt(m) => {
+            ApiError::bad_request("invalid_archive", format!("corrupt archive: {m}"))
+        }
+        e @ ArchiveError::Unsafe { .. } => ApiError::bad_request("unsafe_archive", e.to_string()),
+        e @ ArchiveError::TooLarge(_) => ApiError::too_large(e.to_string()),
+        e @ ArchiveError::Io { .. } => ApiError::internal("extracting the archive", e),
+    }
+}
+
+/// Extracts, validates and files an uploaded archive (blocking).
+fn ingest(
+    state: &AppState,
+    staging: TempDir,
+    id: &str,
+    archive: &FsPath,
+    size_bytes: u64,
+) -> Result<CaptureRecord, ApiError> {
+    let root = crate::archive::extract(
+        archive,
+        &staging.path().join("capture"),
+        &state.config.extract_limits,
+    )
+    .map_err(archive_error)?;
+    let info = state.pipeline.inspect(&root).map_err(|e| match e {
+        PipelineError::InvalidCapture(m) => ApiError::unprocessable("invalid_capture", m),
+        other => ApiError::unprocessable("invalid_capture", other.to_string()),
+    })?;
+    let final_dir = state.paths.capture_dir(id);
+    std::fs::rename(&root, &final_dir).map_err(|e| ApiError::internal("filing the capture", e))?;
+    let record = CaptureRecord {
+        id: id.to_owned(),
+        views: info.views,
+        kinds: info.kinds,
+        warnings: info.warnings,
+        size_bytes,
+        created_at: now_ms(),
+    };
+    if let Err(e) = state.store.insert_capture(&record) {
+        let _ = std::fs::remove_dir_all(&final_dir);
+        return Err(e.into());
+    }
+    drop(staging);
+    Ok(record)
+}
+
+/// `POST /v1/captures`: body is a `.zip` or `.tar` archive.
+pub async fn upload(
+    State(state): State<AppState>,
+    headers: HeaderMap,
+    body: Body,
+) -> Result<(StatusCode, Json<CaptureView>), ApiError> {
+    let limit = state.config.max_upload_bytes;
+    check_content_length(&headers, limit)?;
+    let id = new_id("cap");
+    let staging = TempDir::create(state.paths.tmp.join(&id))?;
+    let archive = staging.path().join("upload");
+    let size = stream_to_file(body, &archive, limit).await?;
+    if size == 0 {
+        return Err(ApiError::bad_request(
+            "empty_upload",
+            "the request body is empty; send a .zip or .tar archive",
+        ));
+    }
+    // The rest runs to completion even if the client disconnects, so the temporary folder is
+    // always cleaned up by the blocking task that owns it.
+    let task_state = state.clone();
+    let record = tokio::task::spawn_blocking(move || {
+        let span = tracing::info_span!("capture_upload", capture_id = %id);
+        let _entered = span.enter();
+        ingest(&task_state, staging, &id, &archive, size)
+    })
+    .await
+    .map_err(|e| ApiError::internal("processing the upload", e))??;
+    tracing::info!(capture_id = %record.id, views = record.views, "capture accepted");
+    Ok((StatusCode::CREATED, Json(record.into())))
+}
+
+/// `GET /v1/captures/{id}`.
+pub async fn show(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<Json<CaptureView>, ApiError> {
+    let record = state
+        .store
+        .capture(&id)?
+        .ok_or_else(|| ApiError::not_found("capture", &id))?;
+    Ok(Json(record.into()))
+}
+
+/// `DELETE /v1/captures/{id}`: 204; 409 while a queued or running job uses it.
+pub async fn remove(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<StatusCode, ApiError> {
+    match state.store.delete_capture(&id)? {
+        DeleteOutcome::NotFound => Err(ApiError::not_found("capture", &id)),
+        DeleteOutcome::InUse => Err(ApiError::conflict(
+            "capture_in_use",
+            format!("capture `{id}` is used by a queued or running job; cancel it first"),
+        )),
+        DeleteOutcome::Deleted => {
+            let dir = state.paths.capture_dir(&id);
+            tokio::task::spawn_blocking(move || std::fs::remove_dir_all(dir))
+                .await
+                .map_err(|e| ApiError::internal("deleting the capture", e))?
+                .or_else(|e| match e.kind() {
+                    std::io::ErrorKind::NotFound => Ok(()),
+                    _ => Err(ApiError::internal("deleting the capture", e)),
+                })?;
+            Ok(StatusCode::NO_CONTENT)
+        }
+    }
+}

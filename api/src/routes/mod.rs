@@ -1,0 +1,115 @@
+//! The HTTP surface. [`route_table`] is the single list of routes: the router is built from it and
+//! the OpenAPI test compares it with `api/openapi.yaml`, so the two cannot drift apart.
+
+mod artifacts;
+mod captures;
+mod health;
+mod jobs;
+
+use axum::extract::DefaultBodyLimit;
+use axum::http::Method;
+use axum::routing::{delete, get, post, MethodRouter};
+use axum::Router;
+use tower_http::catch_panic::CatchPanicLayer;
+
+use crate::error::{method_not_allowed_fallback, not_found_fallback, panic_response};
+use crate::AppState;
+
+/// One route: method, path template (axum syntax), and whether the bearer token guards it.
+pub struct RouteEntry {
+    pub method: Method,
+    pub path: &'static str,
+    pub protected: bool,
+    handler: MethodRouter<AppState>,
+}
+
+fn entry(
+    method: Method,
+    path: &'static str,
+    protected: bool,
+    handler: MethodRouter<AppState>,
+) -> RouteEntry {
+    RouteEntry {
+        method,
+        path,
+        protected,
+        handler,
+    }
+}
+
+/// Every route of the service.
+pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
+    let upload_limit = usize::try_from(max_upload_bytes).unwrap_or(usize::MAX);
+    vec![
+        entry(Method::GET, "/healthz", false, get(health::healthz)),
+        entry(Method::GET, "/metrics", false, get(health::metrics)),
+        entry(Method::GET, "/v1/openapi.json", true, get(health::openapi)),
+        entry(
+            Method::POST,
+            "/v1/captures",
+            true,
+            post(captures::upload).layer(DefaultBodyLimit::disable()),
+        ),
+        entry(Method::GET, "/v1/captures/{id}", true, get(captures::show)),
+        entry(
+            Method::DELETE,
+            "/v1/captures/{id}",
+            true,
+            delete(captures::remove),
+        ),
+        entry(Method::POST, "/v1/jobs", true, post(jobs::submit)),
+        entry(Method::GET, "/v1/jobs", true, get(jobs::list)),
+        entry(Method::GET, "/v1/jobs/{id}", true, get(jobs::show)),
+        entry(Method::GET, "/v1/jobs/{id}/events", true, get(jobs::events)),
+        entry(
+            Method::POST,
+            "/v1/jobs/{id}/cancel",
+            true,
+            post(jobs::cancel),
+        ),
+        entry(
+            Method::POST,
+            "/v1/jobs/{id}/relight",
+            true,
+            post(jobs::relight).layer(DefaultBodyLimit::max(upload_limit)),
+        ),
+        entry(
+            Method::GET,
+            "/v1/jobs/{id}/artifacts",
+            true,
+            get(artifacts::list),
+        ),
+        entry(
+            Method::GET,
+            "/v1/jobs/{id}/artifacts/{*name}",
+            true,
+            get(artifacts::download),
+        ),
+    ]
+}
+
+/// The complete application: routes, auth on `/v1`, JSON fallbacks, HTTP metrics, panic guard.
+pub fn router(state: AppState) -> Router {
+    let mut open = Router::new();
+    let mut protected = Router::new();
+    for route in route_table(state.config.max_upload_bytes) {
+        if route.protected {
+            protected = protected.route(route.path, route.handler);
+        } else {
+            open = open.route(route.path, route.handler);
+        }
+    }
+    let protected = protected.route_layer(axum::middleware::from_fn_with_state(
+        state.clone(),
+        crate::auth::require_token,
+    ));
+    open.merge(protected)
+        .fallback(not_found_fallback)
+        .method_not_allowed_fallback(method_not_allowed_fallback)
+        .layer(axum::middleware::from_fn_with_state(
+            state.clone(),
+            crate::metrics::track_http,
+        ))
+        .layer(CatchPanicLayer::custom(panic_response))
+        .with_state(state)
+}

@@ -1,0 +1,798 @@
+//! End-to-end tests of the service over loopback HTTP: upload → job → progress → artifacts,
+//! idempotent submits, cancel, auth, bad uploads, event streams, relighting, concurrent pollers,
+//! and the OpenAPI document against the router.
+
+mod common;
+
+use std::time::{Duration, Instant};
+
+use common::*;
+use serde_json::{json, Value};
+
+const LONG: Duration = Duration::from_secs(60);
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn upload_train_and_download_every_artifact() {
+    let dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(dir.path())).await;
+    let (status, capture) = t.upload(capture_zip()).await;
+    assert_eq!(status, 201, "{capture}");
+    assert_eq!(capture["views"], 3);
+    assert_eq!(capture["kinds"], json!(["rgb"]));
+    assert_eq!(
+        capture["warnings"].as_array().unwrap().len(),
+        3,
+        "no masks: one warning per frame"
+    );
+    let capture_id = capture["id"].as_str().unwrap();
+    let (status, shown) = t.get_json(&format!("/v1/captures/{capture_id}")).await;
+    assert_eq!((status, &shown["views"]), (200, &json!(3)));
+
+    let (status, job) = t.submit(capture_id, train_config(40, 10)).await;
+    assert_eq!(status, 201, "{job}");
+    assert_eq!(job["state"], "queued");
+    assert_eq!(job["iterations"], 40);
+    let id = job["id"].as_str().unwrap().to_string();
+    let done = t.wait_state(&id, "succeeded", LONG).await;
+    assert_eq!(done["state"], "succeeded", "{done}");
+    assert_eq!(done["iteration"], 40);
+    assert_eq!(done["stage"], "done");
+    assert_eq!(done["test_psnr"], 30.0);
+    assert!((done["losses"]["total"].as_f64().unwrap() - 1.0 / 41.0).abs() < 1e-12);
+    for key in ["created_at", "started_at", "finished_at"] {
+        assert!(done[key].as_str().unwrap().ends_with('Z'), "{key}: {done}");
+    }
+
+    let (status, list) = t.get_json(&format!("/v1/jobs/{id}/artifacts")).await;
+    assert_eq!(status, 200);
+    let artifacts = list["artifacts"].as_array().unwrap();
+    let names: Vec<&str> = artifacts
+        .iter()
+        .map(|a| a["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "envmap.exr",
+            "metrics.json",
+            "renders/test_000.png",
+            "surfels.ply"
+        ]
+    );
+    for artifact in artifacts {
+        let name = artifact["name"].as_str().unwrap();
+        let response = t
+            .client
+            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(response.status(), 200, "{name}");
+        let content_type = response.headers()["content-type"]
+            .to_str()
+            .unwrap()
+            .to_string();
+        assert_eq!(content_type, artifact["content_type"].as_str().unwrap());
+        let bytes = response.bytes().await.unwrap();
+        assert_eq!(
+            bytes.len() as u64,
+            artifact["size"].as_u64().unwrap(),
+            "{name}"
+        );
+        match name {
+            "envmap.exr" => {
+                assert_eq!(content_type, "image/x-exr");
+                assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01]);
+            }
+            "metrics.json" => {
+                let metrics: Value = serde_json::from_slice(&bytes).unwrap();
+                assert_eq!(metrics["iterations"], 40);
+            }
+            "renders/test_000.png" => assert_eq!(&bytes[1..4], b"PNG"),
+            "surfels.ply" => assert!(bytes.starts_with(b"ply\n")),
+            other => panic!("unexpected artifact {other}"),
+        }
+        // The same file by ranges: a middle slice, a suffix and an unsatisfiable one.
+        let len = bytes.len();
+        let part = t
+            .client
+            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
+            .header("range", "bytes=2-5")
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(part.status(), 206);
+        assert_eq!(
+            part.headers()["content-range"],
+            format!("bytes 2-5/{len}").as_str()
+        );
+        assert_eq!(part.bytes().await.unwrap(), bytes.slice(2..6));
+        let suffix = t
+            .client
+            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
+            .header("range", "bytes=-3")
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(suffix.bytes().await.unwrap(), bytes.slice(len - 3..));
+        let beyond = t
+            .client
+            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
+            .header("range", format!("bytes={len}-"))
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(beyond.status(), 416);
+    }
+    let (status, body) = t
+        .get_json(&format!("/v1/jobs/{id}/artifacts/../../phygap.sqlite3"))
+        .await;
+    assert_eq!(status, 404, "{body}");
+    let (status, body) = t
+        .get_json(&format!("/v1/jobs/{id}/artifacts/mesh.ply"))
+        .await;
+    assert_eq!((status, error_code(&body).0), (404, "not_found"));
+
+    // A capture still used by no live job can be deleted; its files go too.
+    let response = t
+        .client
+        .delete(t.url(&format!("/v1/captures/{capture_id}")))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 204);
+    assert!(!dir.path().join("captures").join(capture_id).exists());
+    let (status, _) = t.get_json(&format!("/v1/captures/{capture_id}")).await;
+    assert_eq!(status, 404);
+
+    // Metrics saw the job and the requests.
+    let text = t
+        .client
+        .get(t.url("/metrics"))
+        .send()
+        .await
+        .unwrap()
+        .text()
+        .await
+        .unwrap();
+    assert!(text.contains("phygap_queue_depth 0\n"), "{text}");
+    assert!(
+        text.contains("phygap_job_duration_seconds_count{kind=\"train\",outcome=\"succeeded\"} 1"),
+        "{text}"
+    );
+    assert!(
+        text.contains("route=\"/v1/jobs/{id}\",status=\"200\""),
+        "{text}"
+    );
+    t.server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn tar_uploads_and_event_stream_follow_a_job_to_its_end() {
+    let dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(dir.path())).await;
+    let (status, capture) = t.upload(capture_tar()).await;
+    assert_eq!(status, 201, "{capture}");
+    let (_, job) = t
+        .submit(capture["id"].as_str().unwrap(), train_config(60, 20))
+        .await;
+    let id = job["id"].as_str().unwrap();
+    let mut response = t
+        .client
+        .get(t.url(&format!("/v1/jobs/{id}/events")))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 200);
+    assert!(response.headers()["content-type"]
+        .to_str()
+        .unwrap()
+        .starts_with("text/event-stream"));
+    let deadline = Instant::now() + LONG;
+    let mut text = String::new();
+    while let Some(chunk) = tokio::time::timeout_at(deadline.into(), response.chunk())
+        .await
+        .expect("stream ends in time")
+        .unwrap()
+    {
+        text.push_str(std::str::from_utf8(&chunk).unwrap());
+    }
+    let events: Vec<(String, Value)> = text
+        .split("\n\n")
+        .filter_map(|block| {
+            let name = block.lines().find_map(|l| l.strip_prefix("event: "))?;
+            let data = block.lines().find_map(|l| l.strip_prefix("data: "))?;
+            Some((name.to_string(), serde_json::from_str(data).unwrap()))
+        })
+        .collect();
+    assert!(events.len() >= 3, "{text}");
+    let (last_name, last) = events.last().unwrap();
+    assert_eq!(
+        (last_name.as_str(), last["state"].as_str()),
+        ("end", Some("succeeded"))
+    );
+    assert!(events[..events.len() - 1]
+        .iter()
+        .all(|(n, _)| n == "progress"));
+    let iterations: Vec<u64> = events
+        .iter()
+        .map(|(_, j)| j["iteration"].as_u64().unwrap())
+        .collect();
+    assert!(
+        iterations.windows(2).all(|w| w[0] <= w[1]),
+        "{iterations:?}"
+    );
+    assert!(
+        iterations.iter().any(|&i| i > 0 && i < 60),
+        "saw intermediate progress: {iterations:?}"
+    );
+    t.server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn idempotent_submit_returns_the_same_job() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut config = test_config(dir.path());
+    config.workers = 0;
+    let t = TestServer::start(config).await;
+    let capture_id = t.upload_capture().await;
+    let body = json!({ "capture_id": capture_id, "config": train_config(10, 5) });
+    let mut ids = Vec::new();
+    for expected in [201, 200, 200] {
+        let response = t
+            .client
+            .post(t.url("/v1/jobs"))
+            .header("idempotency-key", "retry-1")
+            .json(&body)
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(response.status(), expected);
+        ids.push(
+            response.json::<Value>().await.unwrap()["id"]
+                .as_str()
+                .unwrap()
+                .to_string(),
+        );
+    }
+    assert!(ids.iter().all(|id| id == &ids[0]), "{ids:?}");
+    let other = json!({ "capture_id": capture_id, "config": train_config(11, 5) });
+    let response = t
+        .client
+        .post(t.url("/v1/jobs"))
+        .header("idempotency-key", "retry-1")
+        .json(&other)
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 422);
+    assert_eq!(
+        error_code(&response.json().await.unwrap()).0,
+        "idempotency_key_reused"
+    );
+    let (_, list) = t.get_json("/v1/jobs").await;
+    assert_eq!(list["jobs"].as_array().unwrap().len(), 1);
+    // Without a key, each submit is a new job.
+    t.submit(&capture_id, train_config(10, 5)).await;
+    let (_, list) = t.get_json("/v1/jobs").await;
+    assert_eq!(list["jobs"].as_array().unwrap().len(), 2);
+    t.server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn invalid_job_requests_are_rejected_with_reasons() {
+    let dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(dir.path())).await;
+    let capture_id = t.upload_capture().await;
+    let cases = [
+        (
+            json!({ "capture_id": capture_id, "config": { "iterations": 0 } }),
+            422,
+            "invalid_config",
+            "iterations",
+        ),
+        (
+            json!({ "capture_id": capture_id, "config": { "iteratons": 5 } }),
+            422,
+            "invalid_request",
+            "iteratons",
+        ),
+        (
+            json!({ "capture_id": "cap_missing" }),
+            422,
+            "unknown_capture",
+            "cap_missing",
+        ),
+        (
+            json!({ "config": {} }),
+            422,
+            "invalid_request",
+            "capture_id",
+        ),
+    ];
+    for (body, status, code, needle) in cases {
+        let response = t
+            .client
+            .post(t.url("/v1/jobs"))
+            .json(&body)
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(response.status(), status, "{body}");
+        let body: Value = response.json().await.unwrap();
+        let (got_code, message) = error_code(&body);
+        assert_eq!(got_code, code);
+        assert!(message.contains(needle), "{message}");
+    }
+    let response = t
+        .client
+        .post(t.url("/v1/jobs"))
+        .body("{not json")
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 400);
+    assert_eq!(
+        error_code(&response.json().await.unwrap()).0,
+        "invalid_json"
+    );
+    // Garbage to every POST route and unknown routes/methods: JSON errors, never a crash.
+    for path in [
+        "/v1/captures",
+        "/v1/jobs",
+        "/v1/jobs/job_x/cancel",
+        "/v1/jobs/job_x/relight",
+    ] {
+        let response = t
+            .client
+            .post(t.url(path))
+            .body(vec![0xffu8; 1000])
+            .send()
+            .await
+            .unwrap();
+        assert!(
+            response.status().is_client_error(),
+            "{path}: {}",
+            response.status()
+        );
+        let body: Value = response.json().await.unwrap();
+        assert_ne!(error_code(&body).0, "<no code>", "{path}");
+    }
+    let (status, body) = t.get_json("/v1/nope").await;
+    assert_eq!((status, error_code(&body).0), (404, "not_found"));
+    let response = t.client.put(t.url("/v1/jobs")).send().await.unwrap();
+    assert_eq!(response.status(), 405);
+    assert_eq!(
+        error_code(&response.json().await.unwrap()).0,
+        "method_not_allowed"
+    );
+    let (status, _) = t.get_json("/healthz").await;
+    assert_eq!(status, 200);
+    t.server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn cancel_stops_running_and_queued_jobs() {
+    let dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(dir.path())).await;
+    let capture_id = t.upload_capture().await;
+    let (_, running) = t.submit(&capture_id, train_config(100_000, 1000)).await;
+    let (_, queued) = t.submit(&capture_id, train_config(10, 5)).await;
+    let running_id = running["id"].as_str().unwrap();
+    let queued_id = queued["id"].as_str().unwrap();
+    t.wait_job(running_id, LONG, |j| {
+        j["iteration"].as_u64().unwrap_or(0) >= 5
+    })
+    .await;
+    // The capture is in use meanwhile.
+    let response = t
+        .client
+        .delete(t.url(&format!("/v1/captures/{capture_id}")))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 409);
+
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{queued_id}/cancel")))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 200);
+    assert_eq!(
+        response.json::<Value>().await.unwrap()["state"],
+        "cancelled"
+    );
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{running_id}/cancel")))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 200);
+    assert_eq!(
+        response.json::<Value>().await.unwrap()["cancel_requested"],
+        true
+    );
+    let cancelled = t.wait_state(running_id, "cancelled", LONG).await;
+    assert_eq!(cancelled["state"], "cancelled", "{cancelled}");
+    assert!(cancelled["iteration"].as_u64().unwrap() < 100_000);
+    assert!(cancelled["finished_at"].is_string());
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{running_id}/cancel")))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 409);
+    let (status, _) = t.get_json(&format!("/v1/jobs/{queued_id}")).await;
+    assert_eq!(status, 200);
+    let (_, list) = t.get_json(&format!("/v1/jobs/{queued_id}/artifacts")).await;
+    assert_eq!(list["artifacts"], json!([]));
+    t.server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn bearer_token_guards_v1_but_not_healthz() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut config = test_config(dir.path());
+    config.token = Some("s3cret".into());
+    let t = TestServer::start(config).await;
+    let (status, _) = t.get_json("/healthz").await;
+    assert_eq!(status, 200);
+    let (status, body) = t.get_json("/v1/jobs").await;
+    assert_eq!((status, error_code(&body).0), (401, "unauthorized"));
+    let wrong = t
+        .client
+        .get(t.url("/v1/jobs"))
+        .bearer_auth("s3creT")
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(wrong.status(), 401);
+    assert_eq!(wrong.headers()["www-authenticate"], "Bearer");
+    let upload = t
+        .client
+        .post(t.url("/v1/captures"))
+        .body(capture_zip())
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(upload.status(), 401);
+    assert_eq!(count_files(&dir.path().join("captures")), 0);
+    let right = t
+        .client
+        .get(t.url("/v1/jobs"))
+        .bearer_auth("s3cret")
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(right.status(), 200);
+    t.server.shutdown().await;
+
+    let open_dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(open_dir.path())).await;
+    let (status, _) = t.get_json("/v1/jobs").await;
+    assert_eq!(status, 200);
+    t.server.shutdown().await;
+}
+
+/// Each bad upload: its status, its error code, a word of its message; and nothing left behind.
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn bad_uploads_are_rejected_and_leave_no_state() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut config = test_config(dir.path());
+    config.max_upload_bytes = 256 << 10;
+    let t = TestServer::start(config).await;
+    let file = |name: &str, data: &[u8]| (name.to_string(), data.to_vec());
+    let mut corrupt = capture_zip();
+    corrupt.truncate(corrupt.len() / 2);
+    let valid_transforms = capture_transforms();
+    let cases: Vec<(&str, Vec<u8>, u16, &str, &str)> = vec![
+        ("corrupt zip", corrupt, 400, "invalid_archive", "corrupt"),
+        (
+            "garbage",
+            b"hello, this is not an archive".to_vec(),
+            415,
+            "unsupported_archive",
+            ".zip",
+        ),
+        ("empty", Vec::new(), 400, "empty_upload", "empty"),
+        (
+            "traversal zip",
+            zip_of(&[
+                file("transforms.json", b"{}"),
+                file("../../escape.txt", b"x"),
+            ]),
+            400,
+            "unsafe_archive",
+            "traversal",
+        ),
+        (
+            "absolute tar",
+            tar_with_raw_name("/tmp/phygap-evil.txt"),
+            400,
+            "unsafe_archive",
+            "absolute",
+        ),
+        (
+            "symlink tar",
+            tar_with_symlink(),
+            400,
+            "unsafe_archive",
+            "links",
+        ),
+        (
+            "too large",
+            vec![7u8; 300 << 10],
+            413,
+            "payload_too_large",
+            "MiB",
+        ),
+        (
+            "bomb",
+            zip_of(&[
+                file("transforms.json", &valid_transforms),
+                file("zeros.bin", &vec![0u8; 64 << 20]),
+            ]),
+            413,
+            "payload_too_large",
+            "bomb",
+        ),
+        (
+            "no transforms.json",
+            zip_of(&[file("images/a.png", b"x")]),
+            422,
+            "invalid_capture",
+            "transforms.json",
+        ),
+        (
+            "missing image",
+            zip_of(&[file("transforms.json", &valid_transforms)]),
+            422,
+            "invalid_capture",
+            "missing file",
+        ),
+    ];
+    for (label, body, status, code, needle) in cases {
+        let (got, response) = t.upload(body).await;
+        assert_eq!(got, status, "{label}: {response}");
+        let (got_code, message) = error_code(&response);
+        assert_eq!(got_code, code, "{label}: {message}");
+        assert!(message.contains(needle), "{label}: {message}");
+        assert_eq!(
+            count_files(&dir.path().join("tmp")),
+            0,
+            "{label}: temp files left"
+        );
+        assert_eq!(
+            count_files(&dir.path().join("captures")),
+            0,
+            "{label}: capture files left"
+        );
+        assert!(
+            t.server.state().store.capture_ids().unwrap().is_empty(),
+            "{label}: record left"
+        );
+    }
+    assert!(!std::path::Path::new("/tmp/phygap-evil.txt").exists());
+    // Too large without a Content-Length (chunked): stopped while streaming.
+    let chunks: Vec<Result<Vec<u8>, std::io::Error>> =
+        (0..40).map(|_| Ok(vec![1u8; 16 << 10])).collect();
+    let response = t
+        .client
+        .post(t.url("/v1/captures"))
+        .body(reqwest::Body::wrap_stream(futures_util::stream::iter(
+            chunks,
+        )))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 413);
+    assert_eq!(count_files(&dir.path().join("tmp")), 0);
+    // And a good upload still works afterwards.
+    t.upload_capture().await;
+    assert_eq!(t.server.state().store.capture_ids().unwrap().len(), 1);
+    t.server.shutdown().await;
+}
+
+/// The bytes of the test capture's transforms.json (which names images).
+fn capture_transforms() -> Vec<u8> {
+    let dir = tempfile::tempdir().unwrap();
+    write_capture(dir.path());
+    std::fs::read(dir.path().join("transforms.json")).unwrap()
+}
+
+/// A tar whose one entry has `name` written raw into the header (builders refuse such names).
+fn tar_with_raw_name(name: &str) -> Vec<u8> {
+    let mut header = tar::Header::new_ustar();
+    header.as_old_mut().name[..name.len()].copy_from_slice(name.as_bytes());
+    header.set_size(1);
+    header.set_mode(0o644);
+    header.set_cksum();
+    let mut bytes = header.as_bytes().to_vec();
+    bytes.extend_from_slice(b"x");
+    bytes.resize(1024, 0);
+    bytes.extend_from_slice(&[0u8; 1024]);
+    bytes
+}
+
+fn tar_with_symlink() -> Vec<u8> {
+    let mut builder = tar::Builder::new(Vec::new());
+    let mut header = tar::Header::new_ustar();
+    header.set_entry_type(tar::EntryType::Symlink);
+    header.set_size(0);
+    builder
+        .append_link(&mut header, "transforms.json", "/etc/passwd")
+        .unwrap();
+    builder.into_inner().unwrap()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn relight_runs_as_its_own_job() {
+    let dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(dir.path())).await;
+    let capture_id = t.upload_capture().await;
+    let (_, job) = t.submit(&capture_id, train_config(10, 5)).await;
+    let train_id = job["id"].as_str().unwrap().to_string();
+    // Not trained yet (or still running): refused.
+    let envmap_path = dir.path().join("sky.exr");
+    phygap::image_io::write_exr(&envmap_path, &phygap::image_io::Image::filled(8, 4, 3, 2.0))
+        .unwrap();
+    let envmap = std::fs::read(&envmap_path).unwrap();
+    let form = |bytes: Vec<u8>| {
+        reqwest::multipart::Form::new()
+            .part(
+                "envmap",
+                reqwest::multipart::Part::bytes(bytes).file_name("sky.exr"),
+            )
+            .text("rotate_deg", "90")
+    };
+    t.wait_state(&train_id, "succeeded", LONG).await;
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{train_id}/relight")))
+        .multipart(form(b"not an image".to_vec()))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 415);
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{train_id}/relight")))
+        .multipart(form(envmap.clone()))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 201);
+    let relight: Value = response.json().await.unwrap();
+    assert_eq!(
+        (relight["kind"].as_str(), relight["parent_job_id"].as_str()),
+        (Some("relight"), Some(train_id.as_str()))
+    );
+    let relight_id = relight["id"].as_str().unwrap();
+    let done = t.wait_state(relight_id, "succeeded", LONG).await;
+    assert_eq!(done["state"], "succeeded", "{done}");
+    let (_, list) = t
+        .get_json(&format!("/v1/jobs/{relight_id}/artifacts"))
+        .await;
+    let names: Vec<&str> = list["artifacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["relight.json", "relit_000.png"]);
+    let (_, result) = t
+        .get_json(&format!("/v1/jobs/{relight_id}/artifacts/relight.json"))
+        .await;
+    assert_eq!(result["rotate_deg"], 90.0);
+    assert!(
+        (result["mean_radiance"].as_f64().unwrap() - 2.0).abs() < 1e-6,
+        "{result}"
+    );
+    // Relighting a relight job is refused.
+    let response = t
+        .client
+        .post(t.url(&format!("/v1/jobs/{relight_id}/relight")))
+        .multipart(form(envmap))
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 409);
+    t.server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn fifty_concurrent_pollers_are_all_answered() {
+    let dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(dir.path())).await;
+    let capture_id = t.upload_capture().await;
+    let (_, job) = t.submit(&capture_id, train_config(200, 50)).await;
+    let id = job["id"].as_str().unwrap().to_string();
+    let url = t.url(&format!("/v1/jobs/{id}"));
+    let mut tasks = Vec::new();
+    for _ in 0..50 {
+        let client = t.client.clone();
+        let url = url.clone();
+        tasks.push(tokio::spawn(async move {
+            let mut latencies = Vec::new();
+            let mut saw_running = false;
+            let deadline = Instant::now() + LONG;
+            for _ in 0..400 {
+                let start = Instant::now();
+                let response = client.get(&url).send().await.expect("answered");
+                assert_eq!(response.status(), 200);
+                let job: Value = response.json().await.unwrap();
+                latencies.push(start.elapsed());
+                saw_running |= job["state"] == "running";
+                if job["state"] == "succeeded" || Instant::now() > deadline {
+                    break;
+                }
+                tokio::time::sleep(Duration::from_millis(20)).await;
+            }
+            (latencies, saw_running)
+        }));
+    }
+    let mut all = Vec::new();
+    let mut running_seen = 0;
+    for task in tasks {
+        let (latencies, saw_running) = task.await.unwrap();
+        all.extend(latencies);
+        running_seen += saw_running as usize;
+    }
+    let done = t.wait_state(&id, "succeeded", LONG).await;
+    assert_eq!(done["state"], "succeeded");
+    assert!(running_seen > 0, "pollers overlapped the running job");
+    all.sort();
+    let pct = |p: f64| all[((all.len() - 1) as f64 * p).round() as usize];
+    println!(
+        "GET /v1/jobs/{{id}} under 50 concurrent pollers while a job runs: {} requests, p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms",
+        all.len(),
+        pct(0.5).as_secs_f64() * 1e3,
+        pct(0.99).as_secs_f64() * 1e3,
+        all.last().unwrap().as_secs_f64() * 1e3
+    );
+    t.server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn openapi_document_and_router_list_the_same_routes() {
+    let dir = tempfile::tempdir().unwrap();
+    let t = TestServer::start(test_config(dir.path())).await;
+    let (status, served) = t.get_json("/v1/openapi.json").await;
+    assert_eq!(status, 200);
+    let spec = phygap_api::openapi::spec_json().unwrap();
+    assert_eq!(served, spec);
+    assert_eq!(spec["openapi"], "3.1.0");
+    let mut routes: Vec<(String, String)> = phygap_api::routes::route_table(1)
+        .iter()
+        .map(|r| {
+            (
+                r.method.to_string(),
+                phygap_api::openapi::openapi_path(r.path),
+            )
+        })
+        .collect();
+    routes.sort();
+    assert_eq!(routes, phygap_api::openapi::spec_operations(&spec));
+    // Every route answers (no 404 from the router for any documented path).
+    for (method, path) in &routes {
+        let concrete = path.replace("{id}", "job_none").replace("{name}", "x.json");
+        let response = t
+            .client
+            .request(method.parse().unwrap(), t.url(&concrete))
+            .send()
+            .await
+            .unwrap();
+        let status = response.status().as_u16();
+        let body: Value = response.json().await.unwrap_or(Value::Null);
+        assert!(
+            !(status == 404 && error_code(&body).1.starts_with("no route")),
+            "{method} {path}"
+        );
+        assert_ne!(status, 405, "{method} {path}");
+    }
+    t.server.shutdown().await;
+}

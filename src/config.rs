@@ -96,6 +96,9 @@ pub struct TrainConfig {
 
     /// Cube-map face size of the learned environment.
     pub envmap_resolution: u32,
+    /// Steps between rebuilds of the environment's prefiltered mip chain and irradiance map while
+    /// the map is being learned (the map moves little per step; a rebuild costs ~0.1 s at D = 64).
+    pub envmap_prefilter_interval: u32,
     /// Steps between checkpoints (0: only at the end).
     pub checkpoint_interval: u32,
     /// Steps between test-view evaluations (0: only at the end).
@@ -142,6 +145,7 @@ impl Default for TrainConfig {
             lambda_normal_smooth: 0.2,
             lambda_depth_normal: 0.1,
             envmap_resolution: 64,
+            envmap_prefilter_interval: 10,
             checkpoint_interval: 1_000,
             eval_interval: 1_000,
             mesh_interval: 1_000,
@@ -196,6 +200,9 @@ impl TrainConfig {
         }
         if self.initial_surfels == 0 || self.initial_surfels > self.max_surfels {
             return bad("initial_surfels", "must be in 1..=max_surfels");
+        }
+        if self.envmap_prefilter_interval == 0 {
+            return bad("envmap_prefilter_interval", "must be at least 1");
         }
         if !(4..=1024).contains(&self.envmap_resolution) {
             return bad("envmap_resolution", "must be in 4..=1024");

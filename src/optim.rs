@@ -145,6 +145,19 @@ impl Adam {
         Ok(())
     }
 
+    /// Installs a group's state as saved by a checkpoint.
+    pub fn insert_group(&mut self, name: &str, state: GroupState) -> Result<(), OptimError> {
+        let len = state.exp_avg.len();
+        if state.width == 0 || !len.is_multiple_of(state.width) || state.exp_avg_sq.len() != len {
+            return Err(OptimError::BadWidth {
+                group: name.to_owned(),
+                len,
+            });
+        }
+        self.groups.insert(name.to_owned(), state);
+        Ok(())
+    }
+
     /// Removes a group's state (e.g. when the environment map is replaced).
     pub fn remove_group(&mut self, name: &str) -> Option<GroupState> {
         self.groups.remove(name)

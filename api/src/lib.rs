@@ -12,10 +12,7 @@ pub mod archive;
 pub mod artifacts;
 pub mod auth;
 pub mod cli;
-// The production pipeline over phygap::{capture, train, export, relight}. Kept out of the module
-// tree until those core modules land; then enable it and return it from
-// `pipeline::production_pipeline`.
-// mod core_pipeline;
+pub mod core_pipeline;
 pub mod error;
 pub mod metrics;
 pub mod openapi;

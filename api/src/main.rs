@@ -15,7 +15,7 @@ async fn main() -> anyhow::Result<()> {
         .init();
     match Cli::parse().command {
         Command::Serve(args) => {
-            let pipeline = phygap_api::pipeline::production_pipeline()?;
+            let pipeline = phygap_api::pipeline::production_pipeline();
             let server = phygap_api::Server::start(args.to_config(), pipeline)
                 .await
                 .context("starting the service")?;

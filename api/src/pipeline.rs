@@ -1,6 +1,6 @@
 //! The seam between the service and the reconstruction core. Everything in this crate (HTTP, queue,
 //! workers, storage) is written against [`Pipeline`]; the production implementation calls
-//! `phygap::{capture, train, export, relight}` (see `core_pipeline.rs`). Every method is blocking and
+//! `phygap::{capture, train, export, relight}` ([`crate::core_pipeline::CorePipeline`]). Every method is blocking and
 //! may run for hours: the service calls them on tokio's blocking pool, never on an async thread.
 
 use std::path::{Path, PathBuf};
@@ -81,14 +81,7 @@ pub trait Pipeline: Send + Sync + 'static {
     ) -> Result<Vec<PathBuf>, PipelineError>;
 }
 
-/// No production pipeline is compiled in yet (the core's capture/train/export/relight modules have
-/// not landed; `core_pipeline.rs` is written and waits for them).
-#[derive(Debug, Error)]
-#[error("the reconstruction core is not built into this binary yet (enable `mod core_pipeline` in api/src/lib.rs)")]
-pub struct PipelineUnavailable;
-
-/// The pipeline the `phygap-api` binary serves with.
-pub fn production_pipeline() -> Result<std::sync::Arc<dyn Pipeline>, PipelineUnavailable> {
-    // When the core lands: `Ok(std::sync::Arc::new(crate::core_pipeline::CorePipeline))`.
-    Err(PipelineUnavailable)
+/// The pipeline the `phygap-api` binary serves with: the phygap core.
+pub fn production_pipeline() -> std::sync::Arc<dyn Pipeline> {
+    std::sync::Arc::new(crate::core_pipeline::CorePipeline)
 }

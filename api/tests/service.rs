@@ -17,16 +17,16 @@ async fn upload_train_and_download_every_artifact() {
     let t = TestServer::start(test_config(dir.path())).await;
     let (status, capture) = t.upload(capture_zip()).await;
     assert_eq!(status, 201, "{capture}");
-    assert_eq!(capture["views"], 3);
-    assert_eq!(capture["kinds"], json!(["rgb"]));
+    assert_eq!(capture["views"], 10);
+    assert_eq!(capture["kinds"], json!(["stokes"]));
     assert_eq!(
-        capture["warnings"].as_array().unwrap().len(),
-        3,
-        "no masks: one warning per frame"
+        capture["warnings"],
+        json!([]),
+        "synthetic captures have masks"
     );
     let capture_id = capture["id"].as_str().unwrap();
     let (status, shown) = t.get_json(&format!("/v1/captures/{capture_id}")).await;
-    assert_eq!((status, &shown["views"]), (200, &json!(3)));
+    assert_eq!((status, &shown["views"]), (200, &json!(10)));
 
     let (status, job) = t.submit(capture_id, train_config(40, 10)).await;
     assert_eq!(status, 201, "{job}");
@@ -37,8 +37,10 @@ async fn upload_train_and_download_every_artifact() {
     assert_eq!(done["state"], "succeeded", "{done}");
     assert_eq!(done["iteration"], 40);
     assert_eq!(done["stage"], "done");
-    assert_eq!(done["test_psnr"], 30.0);
-    assert!((done["losses"]["total"].as_f64().unwrap() - 1.0 / 41.0).abs() < 1e-12);
+    let psnr = done["test_psnr"].as_f64().unwrap();
+    assert!(psnr > 10.0 && psnr < 100.0, "a real test PSNR: {done}");
+    let loss = done["losses"]["total"].as_f64().unwrap();
+    assert!(loss.is_finite() && loss > 0.0, "{done}");
     for key in ["created_at", "started_at", "finished_at"] {
         assert!(done[key].as_str().unwrap().ends_with('Z'), "{key}: {done}");
     }
@@ -50,15 +52,18 @@ async fn upload_train_and_download_every_artifact() {
         .iter()
         .map(|a| a["name"].as_str().unwrap())
         .collect();
-    assert_eq!(
-        names,
-        [
-            "envmap.exr",
-            "metrics.json",
-            "renders/test_000.png",
-            "surfels.ply"
-        ]
-    );
+    for expected in [
+        "config.json",
+        "envmap.exr",
+        "metrics.json",
+        "model.json",
+        "renders/s0/000.exr",
+        "renders/s0/000.png",
+        "renders/normal/001.png",
+        "surfels.ply",
+    ] {
+        assert!(names.contains(&expected), "{expected} in {names:?}");
+    }
     for artifact in artifacts {
         let name = artifact["name"].as_str().unwrap();
         let response = t
@@ -86,10 +91,15 @@ async fn upload_train_and_download_every_artifact() {
             }
             "metrics.json" => {
                 let metrics: Value = serde_json::from_slice(&bytes).unwrap();
-                assert_eq!(metrics["iterations"], 40);
+                assert_eq!(metrics["test_views"], 2);
+                assert!(metrics["psnr"].as_f64().unwrap() > 10.0, "{metrics}");
             }
-            "renders/test_000.png" => assert_eq!(&bytes[1..4], b"PNG"),
+            "model.json" | "config.json" => {
+                assert_eq!(content_type, "application/json");
+            }
             "surfels.ply" => assert!(bytes.starts_with(b"ply\n")),
+            other if other.ends_with(".png") => assert_eq!(&bytes[1..4], b"PNG"),
+            other if other.ends_with(".exr") => assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01]),
             other => panic!("unexpected artifact {other}"),
         }
         // The same file by ranges: a middle slice, a suffix and an unsatisfiable one.
@@ -455,7 +465,7 @@ async fn bearer_token_guards_v1_but_not_healthz() {
     let upload = t
         .client
         .post(t.url("/v1/captures"))
-        .body(capture_zip())
+        .body(b"an archive is never read before the token is checked".to_vec())
         .send()
         .await
         .unwrap();
@@ -683,14 +693,27 @@ async fn relight_runs_as_its_own_job() {
         .iter()
         .map(|a| a["name"].as_str().unwrap())
         .collect();
-    assert_eq!(names, ["relight.json", "relit_000.png"]);
-    let (_, result) = t
-        .get_json(&format!("/v1/jobs/{relight_id}/artifacts/relight.json"))
-        .await;
-    assert_eq!(result["rotate_deg"], 90.0);
+    let expected: Vec<String> = ["s0", "s1", "s2"]
+        .iter()
+        .flat_map(|k| ["000.exr", "000.png", "001.exr", "001.png"].map(|f| format!("{k}/{f}")))
+        .collect();
+    assert_eq!(names, expected, "the model's two test cameras, relit");
+    let relit = t
+        .client
+        .get(t.url(&format!("/v1/jobs/{relight_id}/artifacts/s0/000.exr")))
+        .send()
+        .await
+        .unwrap()
+        .bytes()
+        .await
+        .unwrap();
+    let relit_path = dir.path().join("relit.exr");
+    std::fs::write(&relit_path, &relit).unwrap();
+    let (image, _) = phygap::image_io::read_image(&relit_path).unwrap();
+    let mean = image.data.iter().map(|&v| f64::from(v)).sum::<f64>() / image.data.len() as f64;
     assert!(
-        (result["mean_radiance"].as_f64().unwrap() - 2.0).abs() < 1e-6,
-        "{result}"
+        mean > 0.0 && image.first_non_finite().is_none(),
+        "the object is lit by the uniform map: mean {mean}"
     );
     // Relighting a relight job is refused.
     let response = t

@@ -247,6 +247,23 @@ pub fn load_cameras(path: &Path) -> Result<Vec<(String, Camera)>, CaptureError> 
     }
 }
 
+/// A transforms document holding only cameras (OpenGL convention), readable by
+/// [`load_cameras`]: what a model folder keeps of its capture's test views.
+pub fn cameras_to_json(cameras: &[(String, Camera)]) -> serde_json::Value {
+    let frames: Vec<serde_json::Value> = cameras
+        .iter()
+        .map(|(name, c)| {
+            serde_json::json!({
+                "name": name,
+                "w": c.width, "h": c.height,
+                "fl_x": c.fx, "fl_y": c.fy, "cx": c.cx, "cy": c.cy,
+                "transform_matrix": c.c2w.transpose().to_cols_array_2d(),
+            })
+        })
+        .collect();
+    serde_json::json!({ "camera_convention": "OpenGL", "frames": frames })
+}
+
 impl Capture {
     pub fn train_views(&self) -> impl Iterator<Item = &View> {
         self.views.iter().filter(|v| v.split == Split::Train)

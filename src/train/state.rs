@@ -98,7 +98,9 @@ impl TrainState {
         for (name, values) in surfels.groups_mut() {
             let stored = archive.require(path, &format!("surfels.{name}"))?;
             if stored.len() != values.len() {
-                return Err(corrupt(format!("surfel group `{name}` has the wrong length")));
+                return Err(corrupt(format!(
+                    "surfel group `{name}` has the wrong length"
+                )));
             }
             values.copy_from_slice(stored);
         }

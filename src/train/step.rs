@@ -138,8 +138,7 @@ pub fn run(
     losses.insert("mask".to_owned(), weights.lambda_mask * mask.value);
     add_into(&mut up.alpha, &mask.grad, weights.lambda_mask);
     if stage != Stage::Geometry && weights.lambda_normal_smooth > 0.0 {
-        let smooth =
-            loss::normal_smoothness(g.normal.as_flattened(), &target.photometric, w, h);
+        let smooth = loss::normal_smoothness(g.normal.as_flattened(), &target.photometric, w, h);
         losses.insert(
             "normal_smooth".to_owned(),
             weights.lambda_normal_smooth * smooth.value,
@@ -228,7 +227,8 @@ pub fn run(
                 },
             )?;
             for p in 0..pixels {
-                let add3 = |dst: &mut [f64; 3], v: DVec3| *dst = (DVec3::from_array(*dst) + v).to_array();
+                let add3 =
+                    |dst: &mut [f64; 3], v: DVec3| *dst = (DVec3::from_array(*dst) + v).to_array();
                 add3(&mut up.normal[p], gb.normal[p]);
                 add3(&mut up.albedo[p], gb.albedo[p]);
                 up.roughness[p] += gb.roughness[p];

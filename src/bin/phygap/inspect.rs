@@ -20,13 +20,7 @@ pub struct InspectArgs {
 /// Loads the capture and prints its summary. A broken capture prints one error line (every problem
 /// found, separated by `;`) on stderr and exits with status 1.
 pub fn run(args: &InspectArgs) -> Result<()> {
-    let capture = match capture::load(&args.capture) {
-        Ok(capture) => capture,
-        Err(e) => {
-            eprintln!("error: {e}");
-            std::process::exit(1);
-        }
-    };
+    let capture = capture::load(&args.capture)?;
     let summary = capture.summary();
     if args.json {
         println!("{}", serde_json::to_string_pretty(&summary)?);

@@ -1,8 +1,12 @@
 //! The `phygap` command line: a thin shell over the library; each subcommand lives in its own module.
 
+mod eval;
+mod export;
 mod inspect;
+mod render;
+mod synth;
+mod train;
 
-use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]
@@ -18,27 +22,50 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Print the default training configuration as JSON (a template for --config).
-    Config,
     /// Load and validate a capture; print its views, kinds, resolution, split, bounds and warnings.
     Inspect(inspect::InspectArgs),
+    /// Train a reconstruction of a capture into a model folder.
+    Train(train::TrainArgs),
+    /// Render novel views of a model (Stokes, DoLP, AoLP, G-buffers, diffuse/specular).
+    Render(render::RenderArgs),
+    /// Evaluate a model on a capture's test views (JSON metrics).
+    Eval(eval::EvalArgs),
+    /// Write a model's deliverables (surfels, environment map, config, metrics, renders).
+    Export(export::ExportArgs),
+    /// Render a small synthetic full-Stokes capture (sample data for a fresh machine).
+    Synth(synth::SynthArgs),
+    /// Print the default training configuration as JSON (a template for --config).
+    Config,
 }
 
-fn main() -> Result<()> {
+fn run(command: Command) -> anyhow::Result<()> {
+    match command {
+        Command::Inspect(args) => inspect::run(&args),
+        Command::Train(args) => train::run(&args),
+        Command::Render(args) => render::run(&args),
+        Command::Eval(args) => eval::run(&args),
+        Command::Export(args) => export::run(&args),
+        Command::Synth(args) => synth::run(&args),
+        Command::Config => {
+            let config = phygap::config::TrainConfig::default();
+            println!("{}", serde_json::to_string_pretty(&config)?);
+            Ok(())
+        }
+    }
+}
+
+fn main() {
     tracing_subscriber::fmt()
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "warn".into()),
         )
         .with_writer(std::io::stderr)
+        // With RUST_LOG=phygap=debug every pipeline span reports its busy time when it closes.
+        .with_span_events(tracing_subscriber::fmt::format::FmtSpan::CLOSE)
         .init();
-    match Cli::parse().command {
-        Command::Config => {
-            println!(
-                "{}",
-                serde_json::to_string_pretty(&phygap::config::TrainConfig::default())?
-            );
-        }
-        Command::Inspect(args) => inspect::run(&args)?,
+    // Errors are printed as one line (with their causes), never as a debug dump or backtrace.
+    if let Err(e) = run(Cli::parse().command) {
+        eprintln!("error: {e:#}");
+        std::process::exit(1);
     }
-    Ok(())
 }

@@ -1,0 +1,24 @@
+//! `phygap export MODEL --out DIR`: the model's deliverables (surfels.ply, envmap.exr, config,
+//! metrics, test-view renders) in one folder.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use clap::Args;
+
+#[derive(Args, Debug)]
+pub struct ExportArgs {
+    /// Model folder written by `phygap train`.
+    pub model: PathBuf,
+    /// Folder to write.
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+pub fn run(args: &ExportArgs) -> Result<()> {
+    let files = phygap::export::export(&args.model, &args.out)?;
+    for f in &files {
+        println!("{}", f.display());
+    }
+    Ok(())
+}

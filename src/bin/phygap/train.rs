@@ -1,0 +1,151 @@
+//! `phygap train CAPTURE --out MODEL [...]`: train a reconstruction with a progress bar; Ctrl-C
+//! writes a checkpoint and stops (continue with `--resume`).
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+use anyhow::{Context, Result};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+
+use phygap::capture;
+use phygap::config::{BackendChoice, Mode, TrainConfig};
+use phygap::events::TrainEvent;
+use phygap::train::{self, TrainOutcome};
+
+#[derive(Args, Debug)]
+pub struct TrainArgs {
+    /// Capture folder (with transforms.json) or a transforms JSON file.
+    pub capture: PathBuf,
+    /// Model folder to write.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Optimization steps (default 15000).
+    #[arg(long)]
+    pub iterations: Option<u32>,
+    /// Measurement used for the loss (default: chosen from the capture).
+    #[arg(long, value_enum)]
+    pub mode: Option<Mode>,
+    /// Compute backend.
+    #[arg(long, value_enum)]
+    pub backend: Option<BackendChoice>,
+    /// Seed of every random choice.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// JSON file with any training settings (keys: the long flag names in snake_case; see
+    /// `phygap config`). Flags given on the command line override it.
+    #[arg(long)]
+    pub config: Option<PathBuf>,
+    /// Continue from the model folder's last checkpoint.
+    #[arg(long)]
+    pub resume: bool,
+}
+
+impl TrainArgs {
+    /// Defaults, then the config file, then the flags.
+    pub fn config(&self) -> Result<TrainConfig> {
+        let mut config = match &self.config {
+            Some(path) => {
+                let text = std::fs::read_to_string(path)
+                    .with_context(|| format!("cannot read config {}", path.display()))?;
+                TrainConfig::from_json(&text).with_context(|| format!("{}", path.display()))?
+            }
+            None => TrainConfig::default(),
+        };
+        if let Some(v) = self.iterations {
+            config.iterations = v;
+        }
+        if let Some(v) = self.mode {
+            config.mode = v;
+        }
+        if let Some(v) = self.backend {
+            config.backend = v;
+        }
+        if let Some(v) = self.seed {
+            config.seed = v;
+        }
+        config.validate()?;
+        Ok(config)
+    }
+}
+
+pub fn run(args: &TrainArgs) -> Result<()> {
+    let config = args.config()?;
+    let capture = capture::load(&args.capture)?;
+    for warning in &capture.warnings {
+        eprintln!("warning: {warning}");
+    }
+    let cancel = Arc::new(AtomicBool::new(false));
+    {
+        let cancel = cancel.clone();
+        ctrlc::set_handler(move || cancel.store(true, Ordering::Relaxed))
+            .context("cannot install the Ctrl-C handler")?;
+    }
+    let bar = ProgressBar::new(u64::from(config.iterations));
+    bar.set_style(
+        ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {bar:30} {pos}/{len} {msg} (eta {eta})",
+        )
+        .expect("valid template"),
+    );
+    let mut test_psnr: Option<f64> = None;
+    let mut on_event = |event: &TrainEvent| match event {
+        TrainEvent::Started {
+            mode,
+            backend,
+            train_views,
+            resumed_from,
+            ..
+        } => {
+            bar.println(format!(
+                "training: mode {mode}, backend {backend}, {train_views} training views{}",
+                resumed_from.map_or(String::new(), |it| format!(", resumed at {it}"))
+            ));
+            bar.set_position(u64::from(resumed_from.unwrap_or(0)));
+        }
+        TrainEvent::Step {
+            iteration,
+            stage,
+            loss,
+            num_surfels,
+            ..
+        } => {
+            bar.set_position(u64::from(*iteration));
+            bar.set_message(format!(
+                "{stage:?} loss {loss:.4} surfels {num_surfels}{}",
+                test_psnr.map_or(String::new(), |p| format!(" test PSNR {p:.2} dB"))
+            ));
+        }
+        TrainEvent::Evaluated { test_psnr: p, .. } => test_psnr = Some(*p),
+        TrainEvent::Checkpoint { .. } => {}
+        TrainEvent::Finished { seconds, .. } => {
+            bar.finish_with_message(format!("done in {seconds:.1} s"));
+        }
+    };
+    let outcome = train::train(
+        &capture,
+        &args.out,
+        &config,
+        args.resume,
+        &cancel,
+        &mut on_event,
+    )?;
+    match outcome {
+        TrainOutcome::Finished => {
+            println!("model written to {}", args.out.display());
+            if let Ok(metrics) = std::fs::read_to_string(args.out.join("metrics.json")) {
+                println!("test metrics: {metrics}");
+            }
+        }
+        TrainOutcome::Interrupted { iteration } => {
+            bar.abandon();
+            println!(
+                "interrupted at iteration {iteration}; continue with: phygap train {} --out {} --resume",
+                args.capture.display(),
+                args.out.display()
+            );
+        }
+    }
+    Ok(())
+}

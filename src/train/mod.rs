@@ -1,0 +1,562 @@
+//! The training run (METHOD.md §6–§7): one random training view per iteration through the three
+//! stages (plain 2DGS, material warm-up, PolarDR with the Stokes loss), Adam on every parameter
+//! group, densification and opacity resets, periodic evaluation and checkpoints, and the model
+//! folder at the end. Progress is reported as [`TrainEvent`]s to the caller and appended to
+//! `MODEL/progress.jsonl`.
+//!
+//! Determinism: every random choice of iteration `i` comes from a generator seeded by
+//! `(seed, i)`, and the state is checkpointed completely, so `--resume` continues bit for bit.
+
+mod angles;
+pub mod state;
+pub mod step;
+pub mod targets;
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Instant;
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use thiserror::Error;
+
+use crate::backend::{self, BackendError};
+use crate::brdf_lut::BrdfLut;
+use crate::capture::Capture;
+use crate::checkpoint::CheckpointError;
+use crate::config::{ConfigError, Mode, TrainConfig};
+use crate::densify::{self, DensifyRules, DensifyStats};
+use crate::envmap::{EnvMapError, PrefilterPlan, PreparedEnv, WorldUp};
+use crate::evaluate::{self, EvalError};
+use crate::events::{Stage, TrainEvent};
+use crate::loss::LossWeights;
+use crate::model::{self, Model, ModelError, ModelInfo};
+use crate::optim::{Adam, AdamConfig, LearningRates, OptimError, ENVMAP_GROUP, POLARIZER_GROUP};
+use crate::raster::{Backend, RasterError, RasterSettings};
+use crate::reconstruction::prefilter_plan;
+use crate::render::{RenderError, Scene};
+use crate::shading::ShadingError;
+use crate::surfels::init::init_from_visual_hull;
+
+use state::{TrainState, CHECKPOINT_FILE};
+use targets::{learned_groups, resolve_mode, ViewTarget};
+
+/// How a run ended.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TrainOutcome {
+    /// All iterations done; the model folder is complete.
+    Finished,
+    /// Stopped by the cancel flag after writing a checkpoint at `iteration`.
+    Interrupted { iteration: u32 },
+}
+
+#[derive(Debug, Error)]
+pub enum TrainError {
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    #[error("mode `{mode:?}` does not fit this capture: {reason}")]
+    Mode { mode: Mode, reason: String },
+    #[error(transparent)]
+    Backend(#[from] BackendError),
+    #[error(transparent)]
+    Raster(#[from] RasterError),
+    #[error(transparent)]
+    Shading(#[from] ShadingError),
+    #[error(transparent)]
+    Render(#[from] RenderError),
+    #[error(transparent)]
+    EnvMap(#[from] EnvMapError),
+    #[error(transparent)]
+    Optimizer(#[from] OptimError),
+    #[error(transparent)]
+    Checkpoint(#[from] CheckpointError),
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Eval(#[from] EvalError),
+    #[error("cannot resume: the checkpoint in {0} was written with a different configuration")]
+    ConfigChanged(PathBuf),
+    #[error(
+        "training diverged at iteration {0} (non-finite parameters); try a lower learning rate"
+    )]
+    Diverged(u32),
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+/// Stage of iteration `it` (0-based).
+pub fn stage_of(it: u32, config: &TrainConfig) -> Stage {
+    if it < config.material_stage_start() {
+        Stage::Geometry
+    } else if it < config.polar_stage_start() {
+        Stage::Material
+    } else {
+        Stage::Polar
+    }
+}
+
+/// The generator of iteration `it`: a pure function of the seed and the iteration.
+fn iteration_rng(seed: u64, it: u32) -> ChaCha8Rng {
+    ChaCha8Rng::seed_from_u64(seed ^ (u64::from(it) + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15))
+}
+
+/// Emits events to the caller and to `progress.jsonl`.
+struct Reporter<'a> {
+    on_event: &'a mut dyn FnMut(&TrainEvent),
+    log: Option<std::fs::File>,
+}
+
+impl Reporter<'_> {
+    fn emit(&mut self, event: TrainEvent) {
+        if let Some(file) = &mut self.log {
+            let line = serde_json::to_string(&event).expect("events serialize");
+            // The log is a convenience copy of the event stream; a full disk must not stop training.
+            if writeln!(file, "{line}").is_err() {
+                self.log = None;
+            }
+        }
+        (self.on_event)(&event);
+    }
+}
+
+/// A stable fingerprint of the settings that shape a run (a resume must use the same ones).
+fn fingerprint(config: &TrainConfig) -> String {
+    serde_json::to_string(config).expect("config serializes")
+}
+
+/// Gradients waiting to be applied.
+#[derive(Default)]
+struct Pending {
+    /// Summed environment gradient and the number of steps it covers.
+    env: Option<(crate::envmap::EnvGrad, u32)>,
+}
+
+/// Everything fixed during a run.
+struct Run<'a> {
+    capture: &'a Capture,
+    config: &'a TrainConfig,
+    mode: Mode,
+    backend: Box<dyn Backend>,
+    settings: RasterSettings,
+    lut: &'static BrdfLut,
+    plan: Arc<PrefilterPlan>,
+    targets: Vec<ViewTarget>,
+    learning_rates: LearningRates,
+    densify_rules: DensifyRules,
+    model_dir: &'a Path,
+}
+
+/// Trains a reconstruction of `capture` into `model_dir`.
+///
+/// With `resume`, continues from `model_dir/checkpoint.bin` when it exists (a checkpoint written
+/// with another configuration is refused). When `cancel` becomes true the run writes a checkpoint
+/// and returns [`TrainOutcome::Interrupted`].
+pub fn train(
+    capture: &Capture,
+    model_dir: &Path,
+    config: &TrainConfig,
+    resume: bool,
+    cancel: &AtomicBool,
+    on_event: &mut dyn FnMut(&TrainEvent),
+) -> Result<TrainOutcome, TrainError> {
+    config.validate()?;
+    let _span = tracing::info_span!("train", iterations = config.iterations).entered();
+    std::fs::create_dir_all(model_dir).map_err(|source| TrainError::Io {
+        path: model_dir.to_owned(),
+        source,
+    })?;
+    let mode = resolve_mode(capture, config.mode);
+    let targets: Vec<ViewTarget> = capture
+        .views
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| v.split == crate::capture::Split::Train)
+        .map(|(i, v)| ViewTarget::new(i, v, mode))
+        .collect();
+    if mode == Mode::Full && targets.iter().all(|t| t.stokes.is_none()) {
+        return Err(TrainError::Mode {
+            mode,
+            reason: "no training view has full Stokes measurements".into(),
+        });
+    }
+    let backend = backend::select(config.backend)?;
+    let bounds = capture.object_bounds();
+    let run = Run {
+        capture,
+        config,
+        mode,
+        settings: RasterSettings::default(),
+        lut: BrdfLut::shared(),
+        plan: prefilter_plan(config.envmap_resolution as usize, config.fresnel_irradiance)?,
+        targets,
+        learning_rates: LearningRates::from_config(config, bounds.radius),
+        densify_rules: DensifyRules::for_extent(
+            bounds.radius,
+            config.densify_grad_threshold,
+            config.prune_opacity,
+            config.max_surfels as usize,
+        ),
+        backend,
+        model_dir,
+    };
+    let log = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(model_dir.join("progress.jsonl"))
+        .ok();
+    let mut reporter = Reporter { on_event, log };
+    run.train(resume, cancel, &mut reporter)
+}
+
+impl Run<'_> {
+    fn fresh_state(&self) -> Result<TrainState, TrainError> {
+        let surfels = init_from_visual_hull(
+            self.capture,
+            self.config.initial_surfels as usize,
+            self.config.seed,
+        );
+        let n = surfels.len();
+        Ok(TrainState {
+            iteration: 0,
+            surfels,
+            envmap: model::initial_envmap(self.config.envmap_resolution as usize)?,
+            polarizer_angles: learned_groups(&self.targets)
+                .into_iter()
+                .map(|g| (g, 0.0))
+                .collect(),
+            angles_initialized: false,
+            adam: Adam::new(AdamConfig::default()),
+            densify: DensifyStats::new(n),
+            elapsed_seconds: 0.0,
+        })
+    }
+
+    fn train(
+        &self,
+        resume: bool,
+        cancel: &AtomicBool,
+        reporter: &mut Reporter,
+    ) -> Result<TrainOutcome, TrainError> {
+        let checkpoint = self.model_dir.join(CHECKPOINT_FILE);
+        let fp = fingerprint(self.config);
+        let (mut state, resumed_from) = if resume && checkpoint.exists() {
+            let (state, saved_fp) = TrainState::load(&checkpoint)?;
+            if saved_fp != fp {
+                return Err(TrainError::ConfigChanged(checkpoint));
+            }
+            let it = state.iteration;
+            (state, Some(it))
+        } else {
+            (self.fresh_state()?, None)
+        };
+        reporter.emit(TrainEvent::Started {
+            iterations: self.config.iterations,
+            mode: format!("{:?}", self.mode).to_lowercase(),
+            backend: self.backend.name().to_owned(),
+            train_views: self.targets.len(),
+            test_views: self.capture.test_views().count(),
+            resumed_from,
+        });
+        let session_start = Instant::now();
+        let earlier_sessions = state.elapsed_seconds;
+        let elapsed = || earlier_sessions + session_start.elapsed().as_secs_f64();
+        let step_inputs = step::StepInputs {
+            backend: self.backend.as_ref(),
+            settings: self.settings,
+            lut: self.lut,
+            weights: LossWeights::from(self.config),
+        };
+        let mut env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        let mut pending = Pending::default();
+        let report_every = (self.config.iterations / 300).clamp(1, 25);
+        let iterations = self.config.iterations;
+        while state.iteration < iterations {
+            if cancel.load(Ordering::Relaxed) {
+                self.flush_env(&mut state, &mut env, &mut pending)?;
+                let iteration = state.iteration;
+                state.elapsed_seconds = elapsed();
+                state.save(&checkpoint, &fp)?;
+                reporter.emit(TrainEvent::Checkpoint { iteration });
+                return Ok(TrainOutcome::Interrupted { iteration });
+            }
+            let it = state.iteration;
+            let stage = stage_of(it, self.config);
+            if stage == Stage::Polar && !state.angles_initialized {
+                state.polarizer_angles = angles::initialize(self, &state, &env)?;
+                state.angles_initialized = true;
+            }
+            let mut rng = iteration_rng(self.config.seed, it);
+            let target = &self.targets[rng.random_range(0..self.targets.len())];
+            let camera = &self.capture.views[target.view].camera;
+            let result = step::run(
+                &step_inputs,
+                &state.surfels,
+                &env,
+                &state.polarizer_angles,
+                camera,
+                target,
+                stage,
+            )?;
+            self.apply_gradients(&mut state, &mut env, &mut pending, &result, stage, it)?;
+            state
+                .densify
+                .add_view(&result.mean2d_grad_norm, result.width, result.height);
+            state.iteration += 1;
+            self.refine(&mut state, stage, &mut rng)?;
+            if !state.surfels.is_finite() {
+                return Err(TrainError::Diverged(state.iteration));
+            }
+
+            let done = state.iteration;
+            if done % report_every == 0 || done == iterations {
+                let seconds = elapsed();
+                let done_this_session = f64::from(done - resumed_from.unwrap_or(0)).max(1.0);
+                let rate = session_start.elapsed().as_secs_f64() / done_this_session;
+                reporter.emit(TrainEvent::Step {
+                    iteration: done,
+                    iterations,
+                    stage,
+                    loss: result.total,
+                    losses: result.losses.clone(),
+                    num_surfels: state.surfels.len(),
+                    elapsed_seconds: seconds,
+                    eta_seconds: rate * f64::from(iterations - done),
+                });
+            }
+            if self.config.eval_interval > 0
+                && done % self.config.eval_interval == 0
+                && done < iterations
+            {
+                if let Some(psnr) = self.test_psnr(&state, &env)? {
+                    reporter.emit(TrainEvent::Evaluated {
+                        iteration: done,
+                        test_psnr: psnr,
+                    });
+                }
+            }
+            if self.config.checkpoint_interval > 0
+                && done % self.config.checkpoint_interval == 0
+                && done < iterations
+            {
+                // A resumed run starts with no pending gradient and a freshly prefiltered map: do
+                // the same here, so the uninterrupted run and a resumed one stay bit-identical.
+                self.flush_env(&mut state, &mut env, &mut pending)?;
+                env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+                state.elapsed_seconds = elapsed();
+                state.save(&checkpoint, &fp)?;
+                reporter.emit(TrainEvent::Checkpoint { iteration: done });
+            }
+        }
+        self.flush_env(&mut state, &mut env, &mut pending)?;
+        let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        state.elapsed_seconds = elapsed();
+        state.save(&checkpoint, &fp)?;
+        self.finish(&state, &env, reporter)?;
+        Ok(TrainOutcome::Finished)
+    }
+
+    /// One Adam step on every group the stage trains; the environment's gradient is accumulated
+    /// and applied every `envmap_prefilter_interval` steps (see [`Run::flush_env`]).
+    fn apply_gradients(
+        &self,
+        state: &mut TrainState,
+        env: &mut PreparedEnv,
+        pending: &mut Pending,
+        result: &step::StepResult,
+        stage: Stage,
+        it: u32,
+    ) -> Result<(), TrainError> {
+        let grads = result.surfels.groups();
+        for ((name, params), (_, grad)) in state.surfels.groups_mut().into_iter().zip(grads) {
+            let frozen = stage == Stage::Geometry && matches!(name, "roughness" | "ior");
+            if frozen {
+                continue;
+            }
+            let lr = self
+                .learning_rates
+                .for_group(name, it)
+                .expect("surfel groups have rates");
+            state.adam.step(name, params, grad, lr)?;
+        }
+        if let Some(env_grad) = &result.env {
+            match &mut pending.env {
+                Some((sum, count)) => {
+                    sum.add(env_grad);
+                    *count += 1;
+                }
+                None => pending.env = Some((env_grad.clone(), 1)),
+            }
+            if (it + 1) % self.config.envmap_prefilter_interval == 0 {
+                self.flush_env(state, env, pending)?;
+            }
+        }
+        if stage == Stage::Polar && !state.polarizer_angles.is_empty() {
+            let names: Vec<String> = state.polarizer_angles.keys().cloned().collect();
+            let mut values: Vec<f64> = state.polarizer_angles.values().copied().collect();
+            let grad: Vec<f64> = names
+                .iter()
+                .map(|n| result.angles.get(n).copied().unwrap_or(0.0))
+                .collect();
+            state.adam.step(
+                POLARIZER_GROUP,
+                &mut values,
+                &grad,
+                self.learning_rates.polarizer,
+            )?;
+            for (name, v) in names.into_iter().zip(values) {
+                state
+                    .polarizer_angles
+                    .insert(name, v.rem_euclid(std::f64::consts::PI));
+            }
+        }
+        Ok(())
+    }
+
+    /// Applies the accumulated environment gradient: one Adam step with the mean gradient and the
+    /// learning rate scaled by the number of steps it covers (the displacement K single steps
+    /// would make), then rebuilds the prefiltered map. Both the transpose of the prefilter and
+    /// the rebuild cost about as much as a whole step without them, hence the batching.
+    fn flush_env(
+        &self,
+        state: &mut TrainState,
+        env: &mut PreparedEnv,
+        pending: &mut Pending,
+    ) -> Result<(), TrainError> {
+        let Some((sum, count)) = pending.env.take() else {
+            return Ok(());
+        };
+        let scale = 1.0 / f64::from(count);
+        let raw_grad: Vec<f64> = env.backward(&sum).iter().map(|g| g * scale).collect();
+        state.adam.step(
+            ENVMAP_GROUP,
+            &mut state.envmap.raw,
+            &raw_grad,
+            self.learning_rates.envmap * f64::from(count),
+        )?;
+        *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        Ok(())
+    }
+
+    /// Densify/prune and opacity reset on their schedules (METHOD.md §7).
+    fn refine(
+        &self,
+        state: &mut TrainState,
+        stage: Stage,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<(), TrainError> {
+        let it = state.iteration;
+        let iterations = self.config.iterations;
+        let from = (self.config.densify_from * f64::from(iterations)).round() as u32;
+        let until = (self.config.densify_until * f64::from(iterations)).round() as u32;
+        let interval = match stage {
+            Stage::Geometry => self.config.densify_interval,
+            _ => self.config.densify_interval_polar,
+        }
+        .max(1);
+        if it > from && it <= until && it % interval == 0 {
+            let _span = tracing::debug_span!("densify", iteration = it).entered();
+            let plan = densify::plan(&state.surfels, &state.densify, &self.densify_rules);
+            let final_keep = densify::apply(&mut state.surfels, &plan, rng);
+            state.adam.retain_surfels(&plan.keep)?;
+            state.adam.extend_surfels_from_indices(&plan.append_from)?;
+            state.adam.retain_surfels(&final_keep)?;
+            state.densify = DensifyStats::new(state.surfels.len());
+        }
+        let reset = self.config.opacity_reset_interval;
+        if reset > 0 && it % reset == 0 && it <= until {
+            densify::reset_opacity(&mut state.surfels, 0.01);
+            state.adam.reset_group("opacity");
+        }
+        Ok(())
+    }
+
+    fn scene<'s>(&'s self, state: &'s TrainState, env: &'s PreparedEnv) -> Scene<'s> {
+        Scene {
+            surfels: &state.surfels,
+            light: env,
+            lut: self.lut,
+            backend: self.backend.as_ref(),
+            settings: self.settings,
+        }
+    }
+
+    /// Mean test-view S0 PSNR (sRGB 8-bit inside the mask), if the capture has test views.
+    fn test_psnr(&self, state: &TrainState, env: &PreparedEnv) -> Result<Option<f64>, TrainError> {
+        if self.capture.test_views().next().is_none() {
+            return Ok(None);
+        }
+        let report = evaluate::evaluate(
+            &self.scene(state, env),
+            self.capture,
+            &state.polarizer_angles,
+        )?;
+        Ok(report.psnr)
+    }
+
+    /// Writes the model folder and `metrics.json`.
+    fn finish(
+        &self,
+        state: &TrainState,
+        env: &PreparedEnv,
+        reporter: &mut Reporter,
+    ) -> Result<(), TrainError> {
+        let up = self.capture.world_up;
+        let model = Model {
+            info: ModelInfo {
+                mode: self.mode,
+                world_up: up.to_array(),
+                polarizer_angles_deg: state
+                    .polarizer_angles
+                    .iter()
+                    .map(|(k, v)| (k.clone(), v.to_degrees()))
+                    .collect(),
+                iterations: state.iteration,
+                train_seconds: state.elapsed_seconds,
+                num_surfels: state.surfels.len(),
+                backend: self.backend.name().to_owned(),
+            },
+            config: TrainConfig {
+                mode: self.mode,
+                ..self.config.clone()
+            },
+            surfels: state.surfels.clone(),
+            envmap: state.envmap.clone(),
+        };
+        WorldUp::from_vector(up.to_array())?;
+        model.save(self.model_dir)?;
+        let test_cameras: Vec<(String, crate::camera::Camera)> = self
+            .capture
+            .test_views()
+            .map(|v| (v.name.clone(), v.camera))
+            .collect();
+        model::write_json(
+            &self.model_dir.join(model::TEST_CAMERAS_FILE),
+            &crate::capture::cameras_to_json(&test_cameras),
+        )?;
+        if self.capture.test_views().next().is_some() {
+            let mut report = evaluate::evaluate(
+                &self.scene(state, env),
+                self.capture,
+                &state.polarizer_angles,
+            )?;
+            report.train_seconds = Some(state.elapsed_seconds);
+            model::write_json(&self.model_dir.join("metrics.json"), &report)?;
+            if let Some(psnr) = report.psnr {
+                reporter.emit(TrainEvent::Evaluated {
+                    iteration: state.iteration,
+                    test_psnr: psnr,
+                });
+            }
+        }
+        reporter.emit(TrainEvent::Finished {
+            iteration: state.iteration,
+            seconds: state.elapsed_seconds,
+        });
+        Ok(())
+    }
+}

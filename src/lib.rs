@@ -10,4 +10,5 @@ pub mod config;
 pub mod envmap;
 pub mod gradcheck;
 pub mod image_io;
+pub mod shading;
 pub mod surfels;

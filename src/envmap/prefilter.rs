@@ -35,6 +35,10 @@ pub struct MipChainSpec {
     /// Weight the irradiance integral by the Fresnel transmission 1 − F(n·ω; η) of the incoming
     /// light (METHOD.md §4, known gap (2)); irradiance then depends on the IoR.
     pub fresnel_irradiance: bool,
+    /// Roughness levels per resolution (all but the coarsest, which holds the r = 1 level only).
+    /// 1 is METHOD.md's chain; more levels sample the roughness axis more finely (the linear blend
+    /// between a sharp and a blurry level over-brightens highlights of intermediate roughness).
+    pub levels_per_size: usize,
 }
 
 impl Default for MipChainSpec {
@@ -46,6 +50,7 @@ impl Default for MipChainSpec {
             max_roughness: 0.5,
             cutoff: 0.99,
             fresnel_irradiance: false,
+            levels_per_size: 1,
         }
     }
 }
@@ -64,7 +69,7 @@ impl MipChainSpec {
             ));
         }
         let mut s = self.base_size;
-        while s > self.min_size && s % 2 == 0 {
+        while s > self.min_size && (s / 2) * 2 == s {
             s /= 2;
         }
         if s != self.min_size {
@@ -82,6 +87,12 @@ impl MipChainSpec {
                 self.min_roughness, self.max_roughness
             ));
         }
+        if self.levels_per_size == 0 || self.levels_per_size > 8 {
+            return bad(format!(
+                "levels_per_size {} outside 1..=8",
+                self.levels_per_size
+            ));
+        }
         if !(0.5..1.0).contains(&self.cutoff) {
             return bad(format!("cutoff {} outside [0.5, 1)", self.cutoff));
         }
@@ -90,10 +101,13 @@ impl MipChainSpec {
 
     /// Face size of every level, finest first.
     pub fn level_sizes(&self) -> Vec<usize> {
-        let mut sizes = vec![self.base_size];
-        while *sizes.last().unwrap_or(&0) > self.min_size {
-            sizes.push(sizes[sizes.len() - 1] / 2);
+        let mut sizes = Vec::new();
+        let mut size = self.base_size;
+        while size > self.min_size && size >= 2 {
+            sizes.extend(std::iter::repeat_n(size, self.levels_per_size.max(1)));
+            size /= 2;
         }
+        sizes.push(size);
         sizes
     }
 
@@ -471,8 +485,13 @@ impl PreparedEnv {
             .par_iter()
             .map(|&x| activate(x))
             .collect::<Vec<_>>()];
-        for grid in &plan.grids[..plan.grids.len() - 1] {
-            let next = downsample(&pyramid[pyramid.len() - 1], grid.size);
+        for pair in plan.grids.windows(2) {
+            let previous = &pyramid[pyramid.len() - 1];
+            let next = if pair[1].size == pair[0].size {
+                previous.clone()
+            } else {
+                downsample(previous, pair[0].size)
+            };
             pyramid.push(next);
         }
         let levels = plan
@@ -615,7 +634,14 @@ impl PreparedEnv {
         }
         for l in (1..n).rev() {
             let (finer, coarser) = pyramid_grad.split_at_mut(l);
-            downsample_transpose(&coarser[0], plan.grids[l - 1].size, &mut finer[l - 1]);
+            if plan.grids[l].size == plan.grids[l - 1].size {
+                finer[l - 1]
+                    .iter_mut()
+                    .zip(&coarser[0])
+                    .for_each(|(a, b)| *a += b);
+            } else {
+                downsample_transpose(&coarser[0], plan.grids[l - 1].size, &mut finer[l - 1]);
+            }
         }
         pyramid_grad[0]
             .iter()
@@ -640,6 +666,7 @@ mod tests {
             max_roughness: 0.5,
             cutoff: 0.99,
             fresnel_irradiance: fresnel,
+            levels_per_size: if fresnel { 2 } else { 1 },
         }
     }
 
@@ -660,6 +687,37 @@ mod tests {
     }
 
     #[test]
+    fn default_chain_rebuilds_quickly() {
+        let start = std::time::Instant::now();
+        let plan = PrefilterPlan::new(MipChainSpec::default()).unwrap();
+        let plan_time = start.elapsed().as_secs_f64();
+        let mut rng = ChaCha8Rng::seed_from_u64(2);
+        let cube = random_cube(&mut rng, 64);
+        let start = std::time::Instant::now();
+        let env = PreparedEnv::new(&cube, plan).unwrap();
+        let build = start.elapsed().as_secs_f64();
+        let mut grad = env.zero_grad();
+        grad.levels
+            .iter_mut()
+            .chain(grad.irradiance.iter_mut())
+            .flatten()
+            .for_each(|g| *g = 1.0);
+        let start = std::time::Instant::now();
+        let back = env.backward(&grad);
+        let backward = start.elapsed().as_secs_f64();
+        println!(
+            "D = 64 chain on {} threads: plan {:.1} ms, rebuild {:.1} ms, backward {:.1} ms",
+            rayon::current_num_threads(),
+            plan_time * 1e3,
+            build * 1e3,
+            backward * 1e3
+        );
+        assert_eq!(back.len(), CubeMap::num_values(64));
+        // Generous bound (debug-free release build, 2 cores): catches accidental O(N²) blow-ups.
+        assert!(build < 2.0 && backward < 2.0);
+    }
+
+    #[test]
     fn schedule_matches_the_method() {
         let spec = MipChainSpec::default();
         assert_eq!(spec.level_sizes(), vec![64, 32, 16]);
@@ -675,6 +733,12 @@ mod tests {
             assert!((spec.level_of(rough, 4).0 - l as f64).abs() < 1e-12);
         }
         assert_eq!(spec.level_of(0.01, 4).0, 0.0);
+        let two = MipChainSpec {
+            levels_per_size: 2,
+            ..MipChainSpec::default()
+        };
+        assert_eq!(two.level_sizes(), vec![64, 64, 32, 32, 16]);
+        assert!((two.level_roughness()[1] - 0.22).abs() < 1e-12);
         assert!(MipChainSpec {
             base_size: 48,
             ..MipChainSpec::default()

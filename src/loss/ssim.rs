@@ -7,9 +7,9 @@
 //! (μx, μy, E[x²], E[y²], E[xy]) and those adjoints are blurred back (the zero-padded "same"
 //! convolution with a symmetric kernel is its own adjoint).
 //!
-//! Threading: channels run in parallel (rayon), and inside each blur the rows of a pass run in
-//! parallel; results do not depend on the thread count (each output sample is summed in a fixed
-//! order).
+//! All five moments of all channels are blurred in one pass (three adjoints per channel on the way
+//! back). Threading: image rows run in parallel (rayon) in every pass; results do not depend on the
+//! thread count (each output sample is summed in a fixed order, row sums are added in row order).
 
 use rayon::prelude::*;
 

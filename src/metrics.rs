@@ -282,7 +282,7 @@ pub fn aolp_mae_degrees(
         target_aolp,
         channels,
         mask,
-        |a, b| aolp_difference_degrees(a, b),
+        aolp_difference_degrees,
     )
 }
 

@@ -7,9 +7,9 @@
 //! (μx, μy, E[x²], E[y²], E[xy]) and those adjoints are blurred back (the zero-padded "same"
 //! convolution with a symmetric kernel is its own adjoint).
 //!
-//! Threading: channels run in parallel (rayon), and inside each blur the rows of a pass run in
-//! parallel; results do not depend on the thread count (each output sample is summed in a fixed
-//! order).
+//! All five moments of all channels are blurred in one pass (three adjoints per channel on the way
+//! back). Threading: image rows run in parallel (rayon) in every pass; results do not depend on the
+//! thread count (each output sample is summed in a fixed order, row sums are added in row order).
 
 use rayon::prelude::*;
 
@@ -38,37 +38,48 @@ pub fn gaussian_kernel() -> [f64; SSIM_WINDOW] {
     k
 }
 
-/// Zero-padded "same" 2D Gaussian blur of one row-major `width × height` plane.
-pub fn blur_plane(src: &[f64], width: usize, height: usize) -> Vec<f64> {
-    assert_eq!(src.len(), width * height, "plane size");
+/// Zero-padded "same" 2D Gaussian blur of `planes` row-major `width × height` planes at once.
+///
+/// `fill_row(y, k, row)` writes row `y` of input plane `k` into `row` (`width` values), so inputs
+/// can be read straight from interleaved images or formed on the fly (products). The result is laid
+/// out row-interleaved: value (plane k, x, y) at `(y · planes + k) · width + x`. Rows run in
+/// parallel; every output is a fixed-order sum, so results do not depend on the thread count.
+fn separable_blur(
+    planes: usize,
+    width: usize,
+    height: usize,
+    fill_row: impl Fn(usize, usize, &mut [f64]) + Sync,
+) -> Vec<f64> {
     let kernel = gaussian_kernel();
-    let mut rows = vec![0.0; src.len()];
-    rows.par_chunks_mut(width.max(1))
-        .zip(src.par_chunks(width.max(1)))
-        .for_each_init(
-            || vec![0.0; width + 2 * RADIUS],
-            |padded, (out, row)| {
-                // Zero padding made explicit, so every output is the same fixed 11-tap sum
-                // (accumulated tap by tap, which vectorizes across the row).
-                padded[RADIUS..RADIUS + width].copy_from_slice(row);
+    let stride = planes * width;
+    let mut rows = vec![0.0; stride * height];
+    rows.par_chunks_mut(stride).enumerate().for_each_init(
+        || vec![0.0; width + 2 * RADIUS],
+        |padded, (y, out)| {
+            for (k, out) in out.chunks_exact_mut(width).enumerate() {
+                // Zero padding made explicit; accumulated tap by tap, which vectorizes.
+                fill_row(y, k, &mut padded[RADIUS..RADIUS + width]);
                 out.fill(0.0);
-                for (k, &weight) in kernel.iter().enumerate() {
-                    for (o, &v) in out.iter_mut().zip(&padded[k..k + width]) {
+                for (tap, &weight) in kernel.iter().enumerate() {
+                    for (o, &v) in out.iter_mut().zip(&padded[tap..tap + width]) {
                         *o += weight * v;
                     }
                 }
-            },
-        );
-    let mut out = vec![0.0; src.len()];
-    out.par_chunks_mut(width.max(1))
+            }
+        },
+    );
+    let mut out = vec![0.0; stride * height];
+    out.par_chunks_mut(stride)
         .enumerate()
         .for_each(|(y, out_row)| {
             let lo = y.saturating_sub(RADIUS);
             let hi = (y + RADIUS).min(height - 1);
             for yi in lo..=hi {
                 let k = kernel[yi + RADIUS - y];
-                let in_row = &rows[yi * width..(yi + 1) * width];
-                for (o, &v) in out_row.iter_mut().zip(in_row) {
+                for (o, &v) in out_row
+                    .iter_mut()
+                    .zip(&rows[yi * stride..(yi + 1) * stride])
+                {
                     *o += k * v;
                 }
             }
@@ -76,14 +87,34 @@ pub fn blur_plane(src: &[f64], width: usize, height: usize) -> Vec<f64> {
     out
 }
 
-/// Local statistics of one channel.
-struct Moments {
-    mu_x: Vec<f64>,
-    mu_y: Vec<f64>,
-    /// Blurred x², y², xy.
-    e_xx: Vec<f64>,
-    e_yy: Vec<f64>,
-    e_xy: Vec<f64>,
+/// Zero-padded "same" 2D Gaussian blur of one row-major `width × height` plane.
+pub fn blur_plane(src: &[f64], width: usize, height: usize) -> Vec<f64> {
+    assert_eq!(src.len(), width * height, "blur_plane: plane size");
+    separable_blur(1, width, height, |y, _, row| {
+        row.copy_from_slice(&src[y * width..(y + 1) * width])
+    })
+}
+
+/// Number of local moments per channel: μx, μy, E[x²], E[y²], E[xy].
+const MOMENTS: usize = 5;
+
+/// Local moments of every channel, row-interleaved as [`separable_blur`] returns them (plane
+/// `MOMENTS · c + q` holds moment q of channel c).
+fn moments(pred: &[f64], target: &[f64], width: usize, height: usize, channels: usize) -> Vec<f64> {
+    separable_blur(MOMENTS * channels, width, height, |y, k, row| {
+        let (c, q) = (k / MOMENTS, k % MOMENTS);
+        for (x, r) in row.iter_mut().enumerate() {
+            let i = (y * width + x) * channels + c;
+            let (a, b) = (pred[i], target[i]);
+            *r = match q {
+                0 => a,
+                1 => b,
+                2 => a * a,
+                3 => b * b,
+                _ => a * b,
+            };
+        }
+    })
 }
 
 /// The per-pixel factors of SSIM = (A·B) / (C·D).
@@ -92,50 +123,42 @@ struct Terms {
     b: f64,
     c: f64,
     d: f64,
+    mu_x: f64,
+    mu_y: f64,
 }
 
-impl Moments {
-    fn new(x: &[f64], y: &[f64], width: usize, height: usize) -> Self {
-        let products: [Vec<f64>; 3] = [
-            x.iter().map(|v| v * v).collect(),
-            y.iter().map(|v| v * v).collect(),
-            x.iter().zip(y).map(|(a, b)| a * b).collect(),
-        ];
-        let inputs: [&[f64]; 5] = [x, y, &products[0], &products[1], &products[2]];
-        let blurred: Vec<Vec<f64>> = inputs
-            .par_iter()
-            .map(|p| blur_plane(p, width, height))
-            .collect();
-        let [mu_x, mu_y, e_xx, e_yy, e_xy]: [Vec<f64>; 5] =
-            blurred.try_into().expect("one blurred plane per moment");
-        Moments {
+impl Terms {
+    /// From the moments [μx, μy, E[x²], E[y²], E[xy]] of one pixel and channel.
+    fn new([mu_x, mu_y, e_xx, e_yy, e_xy]: [f64; MOMENTS]) -> Self {
+        let var_x = e_xx - mu_x * mu_x;
+        let var_y = e_yy - mu_y * mu_y;
+        let cov = e_xy - mu_x * mu_y;
+        Terms {
+            a: 2.0 * mu_x * mu_y + SSIM_C1,
+            b: 2.0 * cov + SSIM_C2,
+            c: mu_x * mu_x + mu_y * mu_y + SSIM_C1,
+            d: var_x + var_y + SSIM_C2,
             mu_x,
             mu_y,
-            e_xx,
-            e_yy,
-            e_xy,
         }
     }
 
-    fn terms(&self, i: usize) -> Terms {
-        let (mx, my) = (self.mu_x[i], self.mu_y[i]);
-        let var_x = self.e_xx[i] - mx * mx;
-        let var_y = self.e_yy[i] - my * my;
-        let cov = self.e_xy[i] - mx * my;
-        Terms {
-            a: 2.0 * mx * my + SSIM_C1,
-            b: 2.0 * cov + SSIM_C2,
-            c: mx * mx + my * my + SSIM_C1,
-            d: var_x + var_y + SSIM_C2,
-        }
+    fn ssim(&self) -> f64 {
+        self.a * self.b / (self.c * self.d)
     }
 }
 
-/// Splits an interleaved image into `channels` planes.
-fn planes(image: &[f64], channels: usize) -> Vec<Vec<f64>> {
-    (0..channels)
-        .map(|c| image.iter().skip(c).step_by(channels).copied().collect())
-        .collect()
+/// Moment q of channel c at (x, y) in the row-interleaved layout.
+fn moment_at(
+    m: &[f64],
+    width: usize,
+    channels: usize,
+    x: usize,
+    y: usize,
+    c: usize,
+) -> [f64; MOMENTS] {
+    let base = (y * MOMENTS * channels + MOMENTS * c) * width + x;
+    std::array::from_fn(|q| m[base + q * width])
 }
 
 fn check_shapes(pred: &[f64], target: &[f64], width: usize, height: usize, channels: usize) {
@@ -164,28 +187,21 @@ pub fn ssim_map(
     channels: usize,
 ) -> Vec<f64> {
     check_shapes(pred, target, width, height, channels);
-    let (xs, ys) = (planes(pred, channels), planes(target, channels));
-    let per_channel: Vec<Vec<f64>> = xs
-        .par_iter()
-        .zip(ys.par_iter())
-        .map(|(x, y)| {
-            let m = Moments::new(x, y, width, height);
-            (0..x.len())
-                .map(|i| {
-                    let t = m.terms(i);
-                    t.a * t.b / (t.c * t.d)
-                })
-                .collect()
-        })
-        .collect();
+    let m = moments(pred, target, width, height, channels);
     let mut map = vec![0.0; pred.len()];
-    for (c, plane) in per_channel.iter().enumerate() {
-        for (i, &v) in plane.iter().enumerate() {
-            map[i * channels + c] = v;
-        }
-    }
+    map.par_chunks_mut(width * channels)
+        .enumerate()
+        .for_each(|(y, row)| {
+            for (j, v) in row.iter_mut().enumerate() {
+                let (x, c) = (j / channels, j % channels);
+                *v = Terms::new(moment_at(&m, width, channels, x, y, c)).ssim();
+            }
+        });
     map
 }
+
+/// Adjoints per channel: of μx, of E[x²] and of E[xy].
+const ADJOINTS: usize = 3;
 
 /// Mean SSIM over all pixels and channels, and its gradient with respect to `pred` (the target is
 /// treated as constant).
@@ -202,50 +218,54 @@ pub fn ssim(
     check_shapes(pred, target, width, height, channels);
     let _span = tracing::trace_span!("ssim", width, height, channels).entered();
     let inv_n = 1.0 / pred.len() as f64;
-    let (xs, ys) = (planes(pred, channels), planes(target, channels));
-    let per_channel: Vec<(f64, Vec<f64>)> = xs
-        .par_iter()
-        .zip(ys.par_iter())
-        .map(|(x, y)| {
-            let m = Moments::new(x, y, width, height);
-            let len = x.len();
-            let (mut g_mu, mut g_xx, mut g_xy) = (vec![0.0; len], vec![0.0; len], vec![0.0; len]);
+    let m = moments(pred, target, width, height, channels);
+    // Adjoints of the moments, row-interleaved like the blur output (plane ADJOINTS · c + q).
+    let stride = ADJOINTS * channels * width;
+    let mut adjoints = vec![0.0; stride * height];
+    let row_sums: Vec<f64> = adjoints
+        .par_chunks_mut(stride)
+        .enumerate()
+        .map(|(y, out)| {
             let mut sum = 0.0;
-            for i in 0..len {
-                let t = m.terms(i);
-                let s = t.a * t.b / (t.c * t.d);
-                sum += s;
-                let ds_da = t.b / (t.c * t.d) * inv_n;
-                let ds_db = t.a / (t.c * t.d) * inv_n;
-                let ds_dc = -s / t.c * inv_n;
-                let ds_dd = -s / t.d * inv_n;
-                let (mx, my) = (m.mu_x[i], m.mu_y[i]);
-                // A = 2μxμy + C1, B = 2(E[xy] − μxμy) + C2, C = μx² + μy² + C1,
-                // D = E[x²] − μx² + E[y²] − μy² + C2.
-                g_mu[i] = 2.0 * my * (ds_da - ds_db) + 2.0 * mx * (ds_dc - ds_dd);
-                g_xx[i] = ds_dd;
-                g_xy[i] = 2.0 * ds_db;
+            for c in 0..channels {
+                for x in 0..width {
+                    let t = Terms::new(moment_at(&m, width, channels, x, y, c));
+                    let s = t.ssim();
+                    sum += s;
+                    let ds_da = t.b / (t.c * t.d) * inv_n;
+                    let ds_db = t.a / (t.c * t.d) * inv_n;
+                    let ds_dc = -s / t.c * inv_n;
+                    let ds_dd = -s / t.d * inv_n;
+                    // A = 2μxμy + C1, B = 2(E[xy] − μxμy) + C2, C = μx² + μy² + C1,
+                    // D = E[x²] − μx² + E[y²] − μy² + C2.
+                    let base = ADJOINTS * c * width + x;
+                    out[base] = 2.0 * t.mu_y * (ds_da - ds_db) + 2.0 * t.mu_x * (ds_dc - ds_dd);
+                    out[base + width] = ds_dd;
+                    out[base + 2 * width] = 2.0 * ds_db;
+                }
             }
-            let adjoints: Vec<Vec<f64>> = [&g_mu, &g_xx, &g_xy]
-                .par_iter()
-                .map(|g| blur_plane(g, width, height))
-                .collect();
-            let grad = (0..len)
-                .map(|i| adjoints[0][i] + 2.0 * x[i] * adjoints[1][i] + y[i] * adjoints[2][i])
-                .collect();
-            (sum, grad)
+            sum
         })
         .collect();
+    let blurred = separable_blur(ADJOINTS * channels, width, height, |y, k, row| {
+        let start = y * stride + k * width;
+        row.copy_from_slice(&adjoints[start..start + width]);
+    });
     let mut grad = vec![0.0; pred.len()];
-    let mut total = 0.0;
-    for (c, (sum, plane)) in per_channel.iter().enumerate() {
-        total += sum;
-        for (i, &g) in plane.iter().enumerate() {
-            grad[i * channels + c] = g;
-        }
-    }
+    grad.par_chunks_mut(width * channels)
+        .enumerate()
+        .for_each(|(y, row)| {
+            for (j, g) in row.iter_mut().enumerate() {
+                let (x, c) = (j / channels, j % channels);
+                let i = y * width * channels + j;
+                let base = y * stride + ADJOINTS * c * width + x;
+                *g = blurred[base]
+                    + 2.0 * pred[i] * blurred[base + width]
+                    + target[i] * blurred[base + 2 * width];
+            }
+        });
     LossValue {
-        value: total * inv_n,
+        value: row_sums.iter().sum::<f64>() * inv_n,
         grad,
     }
 }

@@ -15,7 +15,7 @@ pub enum BackendError {
 /// The backend for a choice: `auto` and `cpu` give the rayon reference backend.
 pub fn select(choice: BackendChoice) -> Result<Box<dyn Backend>, BackendError> {
     match choice {
-        BackendChoice::Auto | BackendChoice::Cpu => Ok(Box::new(CpuBackend::default())),
+        BackendChoice::Auto | BackendChoice::Cpu => Ok(Box::new(CpuBackend)),
         BackendChoice::Gpu => Err(BackendError::GpuUnavailable),
     }
 }

@@ -146,8 +146,8 @@ pub fn evaluate(
         let rendered = scene.render(&view.camera)?;
         let g = rendered.gbuffers();
         let (w, h) = (g.width, g.height);
-        let mask: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();
-        let mask = Some(mask.as_slice());
+        let mask_pixels: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();
+        let mask = Some(mask_pixels.as_slice());
         let s = &rendered.shaded;
         let gt_stokes = ground_truth_stokes(view)?;
         let (pred0, target0) = match &gt_stokes {
@@ -176,7 +176,7 @@ pub fn evaluate(
             );
             let polarized: Vec<bool> = gt_dolp
                 .iter()
-                .zip(mask.unwrap_or_default())
+                .zip(&mask_pixels)
                 .map(|(&d, &m)| m && d > 0.05)
                 .collect();
             let pred_aolp = metrics::aolp(&gp1, &gp2).map_err(metric_err)?;

@@ -9,7 +9,7 @@
 //! Signs are pinned down against the Mitsuba data by `tests/physics_check.rs`.
 //!
 //! Threading: [`shade_image`] and [`shade_image_backward`] are parallel over image rows with rayon;
-//! the backward pass accumulates the light's gradient in one [`EnvGrad`] per rayon task and reduces
+//! the backward pass accumulates the light's gradient in one [`EnvGrad`] per block of rows and reduces
 //! them at the end.
 
 pub mod check;
@@ -538,6 +538,9 @@ pub struct GBufferGrad {
     pub ior: Vec<f64>,
 }
 
+/// Row blocks of [`shade_image_backward`], each with its own light-gradient accumulator.
+const ENV_GRAD_BLOCKS: usize = 8;
+
 /// Shades every active pixel of a view (parallel over pixels).
 pub fn shade_image(
     camera: &Camera,
@@ -571,7 +574,7 @@ pub fn shade_image(
 }
 
 /// Backward of [`shade_image`]: per-pixel G-buffer gradients and the light's gradient (one
-/// accumulator per rayon task, reduced).
+/// accumulator per block of rows, reduced in a fixed order, so the result is deterministic).
 pub fn shade_image_backward(
     camera: &Camera,
     buffers: &ShadingBuffers,
@@ -597,33 +600,34 @@ pub fn shade_image_backward(
     }
     let width = camera.width as usize;
     let mut grads = vec![PixelInputGrad::default(); pixels];
-    let env_grad = grads
-        .par_chunks_mut(width.max(1))
+    // A fixed number of row blocks, each with its own light-gradient accumulator, summed in block
+    // order: the result does not depend on rayon's scheduling (bit-exact, resumable training).
+    let rows = camera.height as usize;
+    let block_rows = rows.div_ceil(ENV_GRAD_BLOCKS).max(1);
+    let block_grads: Vec<EnvGrad> = grads
+        .par_chunks_mut((width * block_rows).max(1))
         .enumerate()
-        .with_min_len(4)
-        .fold(
-            || light.zero_grad(),
-            |mut env, (row, out)| {
-                for (x, g) in out.iter_mut().enumerate() {
-                    let p = row * width + x;
-                    if !buffers.is_active(p) {
-                        continue;
-                    }
-                    let up = PixelStokesGrad {
-                        s0: upstream.s0[p],
-                        s1: upstream.s1[p],
-                        s2: upstream.s2[p],
-                    };
-                    *g = shade_backward(&buffers.pixel_input(camera, p), light, lut, &up, &mut env);
+        .map(|(block, out)| {
+            let mut env = light.zero_grad();
+            for (i, g) in out.iter_mut().enumerate() {
+                let p = block * width * block_rows + i;
+                if !buffers.is_active(p) {
+                    continue;
                 }
-                env
-            },
-        )
-        .reduce_with(|mut a, b| {
-            a.add(&b);
-            a
+                let up = PixelStokesGrad {
+                    s0: upstream.s0[p],
+                    s1: upstream.s1[p],
+                    s2: upstream.s2[p],
+                };
+                *g = shade_backward(&buffers.pixel_input(camera, p), light, lut, &up, &mut env);
+            }
+            env
         })
-        .unwrap_or_else(|| light.zero_grad());
+        .collect();
+    let mut env_grad = light.zero_grad();
+    for g in &block_grads {
+        env_grad.add(g);
+    }
     let out = GBufferGrad {
         normal: grads.iter().map(|g| g.normal).collect(),
         albedo: grads.iter().map(|g| g.albedo).collect(),

@@ -313,7 +313,7 @@ impl Run<'_> {
             }
 
             let done = state.iteration;
-            if done % report_every == 0 || done == iterations {
+            if done.is_multiple_of(report_every) || done == iterations {
                 let seconds = elapsed();
                 let done_this_session = f64::from(done - resumed_from.unwrap_or(0)).max(1.0);
                 let rate = session_start.elapsed().as_secs_f64() / done_this_session;
@@ -329,7 +329,7 @@ impl Run<'_> {
                 });
             }
             if self.config.eval_interval > 0
-                && done % self.config.eval_interval == 0
+                && done.is_multiple_of(self.config.eval_interval)
                 && done < iterations
             {
                 if let Some(psnr) = self.test_psnr(&state, &env)? {
@@ -340,7 +340,7 @@ impl Run<'_> {
                 }
             }
             if self.config.checkpoint_interval > 0
-                && done % self.config.checkpoint_interval == 0
+                && done.is_multiple_of(self.config.checkpoint_interval)
                 && done < iterations
             {
                 // A resumed run starts with no pending gradient and a freshly prefiltered map: do
@@ -391,7 +391,7 @@ impl Run<'_> {
                 }
                 None => pending.env = Some((env_grad.clone(), 1)),
             }
-            if (it + 1) % self.config.envmap_prefilter_interval == 0 {
+            if (it + 1).is_multiple_of(self.config.envmap_prefilter_interval) {
                 self.flush_env(state, env, pending)?;
             }
         }
@@ -458,7 +458,7 @@ impl Run<'_> {
             _ => self.config.densify_interval_polar,
         }
         .max(1);
-        if it > from && it <= until && it % interval == 0 {
+        if it > from && it <= until && it.is_multiple_of(interval) {
             let _span = tracing::debug_span!("densify", iteration = it).entered();
             let plan = densify::plan(&state.surfels, &state.densify, &self.densify_rules);
             let final_keep = densify::apply(&mut state.surfels, &plan, rng);
@@ -468,7 +468,7 @@ impl Run<'_> {
             state.densify = DensifyStats::new(state.surfels.len());
         }
         let reset = self.config.opacity_reset_interval;
-        if reset > 0 && it % reset == 0 && it <= until {
+        if reset > 0 && it.is_multiple_of(reset) && it <= until {
             densify::reset_opacity(&mut state.surfels, 0.01);
             state.adam.reset_group("opacity");
         }

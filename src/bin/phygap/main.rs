@@ -1,5 +1,7 @@
 //! The `phygap` command line: a thin shell over the library; each subcommand lives in its own module.
 
+mod bench;
+
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
@@ -18,6 +20,8 @@ struct Cli {
 enum Command {
     /// Print the default training configuration as JSON (a template for --config).
     Config,
+    /// Time the compute backends on synthetic scenes.
+    Bench(bench::BenchArgs),
 }
 
 fn main() -> Result<()> {
@@ -34,6 +38,7 @@ fn main() -> Result<()> {
                 serde_json::to_string_pretty(&phygap::config::TrainConfig::default())?
             );
         }
+        Command::Bench(args) => bench::run(args)?,
     }
     Ok(())
 }

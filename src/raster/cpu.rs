@@ -1,11 +1,11 @@
 //! The f64 cpu reference rasterizer: tile-based forward compositing and its hand-written backward.
 //!
 //! Pipeline (each stage in a `tracing` span): `project` (rayon over surfels, [`project::project`]),
-//! `bin` (sequential: surfels sorted once by centre view depth, then appended to every 16×16 tile
+//! `bin` (surfels sorted once by centre view depth, then appended sequentially to every 16×16 tile
 //! their pixel box touches, so each tile's list is already front-to-back), `rasterize` (rayon over
-//! tiles; inside a tile the loop runs over the tile's surfels with the pixels of the surfel's box
-//! inner, so a small surfel only visits its own pixels; each pixel keeps its transmittance and
-//! its 10 running sums), `depth_normal`.
+//! tiles; a tile first copies its surfels into a per-thread contiguous buffer, then loops over them
+//! with the pixels of each surfel's box inner, so a small surfel only visits its own pixels; each
+//! pixel keeps its transmittance and its 10 running sums), `depth_normal`.
 //!
 //! Backward: the upstream gradient on the depth normals is chained into the depth buffer, the
 //! α-normalization is undone per pixel (`dL/dS = g/α`, `dL/dα −= Σ g·out/α`), then each tile
@@ -13,7 +13,8 @@
 //! composited entries (rayon over tiles). Per pixel only two numbers are carried: `T` and
 //! `B = Σ_{j>i} w_j (dL/dα + Σ_c dL/dS_c v_{j,c})`, which gives
 //! `dL/dα_i = T_i (dL/dα + Σ_c dL/dS_c v_{i,c}) − B / (1 − α_i)`. Gradients are summed per (tile,
-//! surfel) entry in registers and returned per tile, then reduced per surfel in a fixed order
+//! surfel) entry in registers and written to the tile's own slice of one buffer, then reduced per
+//! surfel in a fixed order
 //! (deterministic, no atomics or locks), and chained to raw parameters by
 //! [`project::project_backward`] (rayon over surfels).
 

@@ -5,6 +5,7 @@
 //! `shared/docs/METHOD.md`; each module is named after the concept it computes.
 
 pub mod backend;
+pub mod bench;
 pub mod brdf_lut;
 pub mod camera;
 pub mod capture;

@@ -1,11 +1,11 @@
 //! The f64 cpu reference rasterizer: tile-based forward compositing and its hand-written backward.
 //!
 //! Pipeline (each stage in a `tracing` span): `project` (rayon over surfels, [`project::project`]),
-//! `bin` (sequential: surfels sorted once by centre view depth, then appended to every 16×16 tile
+//! `bin` (surfels sorted once by centre view depth, then appended sequentially to every 16×16 tile
 //! their pixel box touches, so each tile's list is already front-to-back), `rasterize` (rayon over
-//! tiles; inside a tile the loop runs over the tile's surfels with the pixels of the surfel's box
-//! inner, so a small surfel only visits its own pixels; each pixel keeps its transmittance and
-//! its 10 running sums), `depth_normal`.
+//! tiles; a tile first copies its surfels into a per-thread contiguous buffer, then loops over them
+//! with the pixels of each surfel's box inner, so a small surfel only visits its own pixels; each
+//! pixel keeps its transmittance and its 10 running sums), `depth_normal`.
 //!
 //! Backward: the upstream gradient on the depth normals is chained into the depth buffer, the
 //! α-normalization is undone per pixel (`dL/dS = g/α`, `dL/dα −= Σ g·out/α`), then each tile
@@ -13,14 +13,15 @@
 //! composited entries (rayon over tiles). Per pixel only two numbers are carried: `T` and
 //! `B = Σ_{j>i} w_j (dL/dα + Σ_c dL/dS_c v_{j,c})`, which gives
 //! `dL/dα_i = T_i (dL/dα + Σ_c dL/dS_c v_{i,c}) − B / (1 − α_i)`. Gradients are summed per (tile,
-//! surfel) entry in registers and returned per tile, then reduced per surfel in a fixed order
+//! surfel) entry in registers and written to the tile's own slice of one buffer, then reduced per
+//! surfel in a fixed order
 //! (deterministic, no atomics or locks), and chained to raw parameters by
 //! [`project::project_backward`] (rayon over surfels).
 
 use rayon::prelude::*;
 use tracing::info_span;
 
-use super::project::{self, Projected, ProjectedGrad, ProjectionCamera, RawGrad, NUM_FEATURES};
+use super::project::{self, Projected, ProjectedGrad, ProjectionCamera, NUM_FEATURES};
 use super::{
     depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads, GBuffers,
     RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
@@ -40,11 +41,8 @@ struct Saved {
     num_surfels: usize,
     camera: Camera,
     settings: RasterSettings,
-    projected: Vec<Projected>,
+    bins: Bins,
     tiles: TileGrid,
-    /// Per tile, `entries[tile_offsets[t]..tile_offsets[t + 1]]` index `projected`, front to back.
-    tile_offsets: Vec<usize>,
-    entries: Vec<u32>,
     /// Tile-major (`tile * tile_size² + local`) final transmittance and number of list entries
     /// up to and including the last one composited.
     final_transmittance: Vec<f64>,
@@ -96,6 +94,36 @@ impl TileGrid {
             (rect[2] as usize - 1) / s + 1,
             (rect[3] as usize - 1) / s + 1,
         ]
+    }
+}
+
+/// Visible surfels binned into tiles.
+struct Bins {
+    /// Per surfel, its projection (`None`: culled).
+    projected: Vec<Option<Projected>>,
+    /// Number of projected surfels.
+    visible: usize,
+    /// Per tile `t`, entries `tile_offsets[t]..tile_offsets[t + 1]`, front to back.
+    tile_offsets: Vec<usize>,
+    /// Entry → surfel index.
+    entries: Vec<u32>,
+}
+
+impl Bins {
+    fn tile_range(&self, t: usize) -> std::ops::Range<usize> {
+        self.tile_offsets[t]..self.tile_offsets[t + 1]
+    }
+
+    /// Copies tile `t`'s projected surfels, front to back, into `buf`: the per-pixel loops then
+    /// stream contiguous memory (reading them through `entries` there was dominated by cache
+    /// misses).
+    fn gather(&self, t: usize, buf: &mut Vec<Projected>) {
+        buf.clear();
+        buf.extend(
+            self.entries[self.tile_range(t)]
+                .iter()
+                .filter_map(|&i| self.projected[i as usize]),
+        );
     }
 }
 
@@ -154,15 +182,21 @@ fn evaluate(p: &Projected, x: f64, y: f64, c: &PixelConsts) -> Option<Hit> {
     let pz = q[6] * x + q[7] * y + q[8];
     let dx = x - p.mean[0];
     let dy = y - p.mean[1];
-    let inv = 1.0 / pz;
-    let s = px * inv;
-    let t = py * inv;
-    let rho3 = s * s + t * t;
     let rho2 = if c.lowpass {
         (dx * dx + dy * dy) * c.inv_sigma2
     } else {
         f64::INFINITY
     };
+    // Cheap rejection without the division: both ρ_3d = (px² + py²) / pz² and ρ_2d beyond the
+    // cut (also rejects NaN).
+    let num = px * px + py * py;
+    if rho2 > p.rho_cut && (num > p.rho_cut * (pz * pz) || num.is_nan()) {
+        return None;
+    }
+    let inv = 1.0 / pz;
+    let s = px * inv;
+    let t = py * inv;
+    let rho3 = s * s + t * t;
     // NaN ρ_3d (ray parallel to a degenerate plane) takes the filter branch.
     let use3d = rho3 <= rho2;
     let rho = if use3d { rho3 } else { rho2 };
@@ -215,8 +249,7 @@ struct TileForward {
 fn forward_tile(
     grid: &TileGrid,
     tile: usize,
-    list: &[u32],
-    projected: &[Projected],
+    list: &[Projected],
     consts: &PixelConsts,
     transmittance_min: f64,
 ) -> TileForward {
@@ -231,8 +264,7 @@ fn forward_tile(
     let mut done = vec![false; n];
     let live_pixels = (x1 - x0) * (y1 - y0);
     let mut n_done = 0;
-    for (k, &pi) in list.iter().enumerate() {
-        let p = &projected[pi as usize];
+    for (k, p) in list.iter().enumerate() {
         let rx0 = (p.rect[0] as usize).max(x0);
         let ry0 = (p.rect[1] as usize).max(y0);
         let rx1 = (p.rect[2] as usize).min(x1);
@@ -280,29 +312,33 @@ fn project_and_bin(
     camera: &Camera,
     settings: &RasterSettings,
     grid: &TileGrid,
-) -> (Vec<Projected>, Vec<usize>, Vec<u32>) {
+) -> Bins {
     let cam = ProjectionCamera::new(camera);
-    let projected: Vec<Projected> = {
+    let projected: Vec<Option<Projected>> = {
         let _span = info_span!("project", surfels = surfels.len()).entered();
         (0..surfels.len())
             .into_par_iter()
-            .filter_map(|i| project::project(surfels, i, &cam, settings))
+            .map(|i| project::project(surfels, i, &cam, settings))
             .collect()
     };
-    let _span = info_span!("bin", visible = projected.len()).entered();
-    let mut order: Vec<u32> = (0..projected.len() as u32).collect();
-    // Stable sort by depth: ties keep surfel order, so the result is deterministic.
-    order.par_sort_by(|&a, &b| {
-        projected[a as usize]
-            .view_depth
-            .total_cmp(&projected[b as usize].view_depth)
-    });
+    let _span = info_span!("bin").entered();
+    // Sort by centre depth; depths are > near ≥ 0, so their bit patterns order like the values.
+    // Ties are broken by index: the order is deterministic.
+    let mut keys: Vec<(u64, u32)> = projected
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| p.as_ref().map(|p| (p.view_depth.to_bits(), i as u32)))
+        .collect();
+    keys.par_sort_unstable();
+    let rect_of = |i: u32| projected[i as usize].as_ref().map(|p| p.rect);
     let mut counts = vec![0usize; grid.count() + 1];
-    for p in &projected {
-        let [tx0, ty0, tx1, ty1] = grid.tiles_of(p.rect);
-        for ty in ty0..ty1 {
-            for tx in tx0..tx1 {
-                counts[ty * grid.nx + tx + 1] += 1;
+    for &(_, i) in &keys {
+        if let Some(rect) = rect_of(i) {
+            let [tx0, ty0, tx1, ty1] = grid.tiles_of(rect);
+            for ty in ty0..ty1 {
+                for tx in tx0..tx1 {
+                    counts[ty * grid.nx + tx + 1] += 1;
+                }
             }
         }
     }
@@ -312,17 +348,24 @@ fn project_and_bin(
     let offsets = counts;
     let mut cursor = offsets.clone();
     let mut entries = vec![0u32; offsets[grid.count()]];
-    for &pi in &order {
-        let [tx0, ty0, tx1, ty1] = grid.tiles_of(projected[pi as usize].rect);
-        for ty in ty0..ty1 {
-            for tx in tx0..tx1 {
-                let t = ty * grid.nx + tx;
-                entries[cursor[t]] = pi;
-                cursor[t] += 1;
+    for &(_, i) in &keys {
+        if let Some(rect) = rect_of(i) {
+            let [tx0, ty0, tx1, ty1] = grid.tiles_of(rect);
+            for ty in ty0..ty1 {
+                for tx in tx0..tx1 {
+                    let t = ty * grid.nx + tx;
+                    entries[cursor[t]] = i;
+                    cursor[t] += 1;
+                }
             }
         }
     }
-    (projected, offsets, entries)
+    Bins {
+        visible: keys.len(),
+        projected,
+        tile_offsets: offsets,
+        entries,
+    }
 }
 
 impl Backend for CpuBackend {
@@ -340,23 +383,16 @@ impl Backend for CpuBackend {
         let _span = info_span!("raster_forward", backend = "cpu").entered();
         let (w, h) = (camera.width as usize, camera.height as usize);
         let grid = TileGrid::new(w, h, settings.tile_size as usize);
-        let (projected, tile_offsets, entries) = project_and_bin(surfels, camera, settings, &grid);
+        let bins = project_and_bin(surfels, camera, settings, &grid);
         let consts = PixelConsts::new(settings);
 
         let tiles: Vec<TileForward> = {
-            let _span = info_span!("rasterize", entries = entries.len()).entered();
+            let _span = info_span!("rasterize", entries = bins.entries.len()).entered();
             (0..grid.count())
                 .into_par_iter()
-                .map(|t| {
-                    let list = &entries[tile_offsets[t]..tile_offsets[t + 1]];
-                    forward_tile(
-                        &grid,
-                        t,
-                        list,
-                        &projected,
-                        &consts,
-                        settings.transmittance_min,
-                    )
+                .map_init(Vec::new, |list, t| {
+                    bins.gather(t, list);
+                    forward_tile(&grid, t, list, &consts, settings.transmittance_min)
                 })
                 .collect()
         };
@@ -394,8 +430,8 @@ impl Backend for CpuBackend {
             gb.depth_normal = depth_normals(camera, &gb.depth, &gb.alpha, eps);
         }
         let stats = RasterStats {
-            visible_surfels: projected.len(),
-            tile_entries: entries.len(),
+            visible_surfels: bins.visible,
+            tile_entries: bins.entries.len(),
             pixel_evaluations: evaluations,
         };
         Ok(Rasterized {
@@ -405,10 +441,8 @@ impl Backend for CpuBackend {
                 num_surfels: surfels.len(),
                 camera: *camera,
                 settings: *settings,
-                projected,
+                bins,
                 tiles: grid,
-                tile_offsets,
-                entries,
                 final_transmittance,
                 contributors,
             }),
@@ -456,42 +490,64 @@ impl Backend for CpuBackend {
 
         let grid = saved.tiles;
         let consts = PixelConsts::new(settings);
-        let tile_grads: Vec<Vec<ProjectedGrad>> = {
+        let bins = &saved.bins;
+        // One gradient slot per (tile, surfel) entry; each tile writes its own slice.
+        let mut entry_grads = vec![ProjectedGrad::default(); bins.entries.len()];
+        {
             let _span = info_span!("rasterize_backward").entered();
-            (0..grid.count())
+            let mut slices: Vec<&mut [ProjectedGrad]> = Vec::with_capacity(grid.count());
+            let mut rest = entry_grads.as_mut_slice();
+            for t in 0..grid.count() {
+                let (head, tail) = rest.split_at_mut(bins.tile_range(t).len());
+                slices.push(head);
+                rest = tail;
+            }
+            slices
                 .into_par_iter()
-                .map(|t| backward_tile(saved, t, gb, upstream, &depth_grad, &consts, eps))
-                .collect()
-        };
+                .enumerate()
+                .for_each_init(Vec::new, |list, (t, out)| {
+                    bins.gather(t, list);
+                    backward_tile(saved, t, list, gb, upstream, &depth_grad, &consts, eps, out)
+                });
+        }
 
         let _span = info_span!("project_backward").entered();
-        let mut per_projected = vec![ProjectedGrad::default(); saved.projected.len()];
-        for (t, grads) in tile_grads.iter().enumerate() {
-            let list = &saved.entries[saved.tile_offsets[t]..saved.tile_offsets[t + 1]];
-            for (g, &pi) in grads.iter().zip(list) {
-                per_projected[pi as usize].add(g);
-            }
+        // Reduction per surfel in entry order: deterministic, no shared writes. (Streaming the
+        // entries and scattering measured faster than gathering each surfel's entries.)
+        let mut per_surfel = vec![ProjectedGrad::default(); surfels.len()];
+        for (g, &i) in entry_grads.iter().zip(&bins.entries) {
+            per_surfel[i as usize].add(g);
         }
+        drop(entry_grads);
         let cam = ProjectionCamera::new(camera);
-        let raw: Vec<RawGrad> = saved
-            .projected
-            .par_iter()
-            .zip(per_projected.par_iter())
-            .map(|(p, g)| project::project_backward(surfels, p.index as usize, &cam, g))
-            .collect();
         let mut grads = SurfelGrads::zeros(surfels.len());
         let mut mean2d = vec![0.0; surfels.len()];
-        for (p, r) in saved.projected.iter().zip(&raw) {
-            let i = p.index as usize;
-            grads.position[i] = r.position;
-            grads.log_scale[i] = r.log_scale;
-            grads.rotation[i] = r.rotation;
-            grads.opacity[i] = r.opacity;
-            grads.albedo[i] = r.albedo;
-            grads.roughness[i] = r.roughness;
-            grads.ior[i] = r.ior;
-            mean2d[i] = r.mean2d_norm;
-        }
+        (
+            grads.position.par_iter_mut(),
+            grads.log_scale.par_iter_mut(),
+            grads.rotation.par_iter_mut(),
+            grads.opacity.par_iter_mut(),
+            grads.albedo.par_iter_mut(),
+            grads.roughness.par_iter_mut(),
+            grads.ior.par_iter_mut(),
+            mean2d.par_iter_mut(),
+            bins.projected.par_iter(),
+            per_surfel.par_iter(),
+        )
+            .into_par_iter()
+            .for_each(|(pos, ls, rot, op, alb, rough, ior, m2d, p, g)| {
+                if let Some(p) = p {
+                    let r = project::project_backward(surfels, p, &cam, g);
+                    *pos = r.position;
+                    *ls = r.log_scale;
+                    *rot = r.rotation;
+                    *op = r.opacity;
+                    *alb = r.albedo;
+                    *rough = r.roughness;
+                    *ior = r.ior;
+                    *m2d = r.mean2d_norm;
+                }
+            });
         Ok(RasterGrads {
             surfels: grads,
             mean2d_grad_norm: mean2d,
@@ -500,24 +556,25 @@ impl Backend for CpuBackend {
 }
 
 /// Back-to-front replay of one tile; returns the gradient of each entry of the tile's list.
+#[allow(clippy::too_many_arguments)]
 fn backward_tile(
     saved: &Saved,
     tile: usize,
+    list: &[Projected],
     gb: &GBuffers,
     upstream: &GBufferGrads,
     depth_grad: &[f64],
     consts: &PixelConsts,
     eps: f64,
-) -> Vec<ProjectedGrad> {
+    grads: &mut [ProjectedGrad],
+) {
     let grid = &saved.tiles;
-    let list = &saved.entries[saved.tile_offsets[tile]..saved.tile_offsets[tile + 1]];
-    let mut grads = vec![ProjectedGrad::default(); list.len()];
     let npix = grid.pixels();
     let base = tile * npix;
     let contributors = &saved.contributors[base..base + npix];
     let max_contrib = contributors.iter().copied().max().unwrap_or(0) as usize;
     if max_contrib == 0 {
-        return grads;
+        return;
     }
     let [x0, y0, x1, y1] = grid.bounds(tile);
     let w = gb.width;
@@ -569,7 +626,7 @@ fn backward_tile(
     }
 
     for k in (0..max_contrib).rev() {
-        let p = &saved.projected[list[k] as usize];
+        let p = &list[k];
         let rx0 = (p.rect[0] as usize).max(x0);
         let ry0 = (p.rect[1] as usize).max(y0);
         let rx1 = (p.rect[2] as usize).min(x1);
@@ -633,5 +690,4 @@ fn backward_tile(
         }
         grads[k] = acc;
     }
-    grads
 }

@@ -344,11 +344,11 @@ pub struct RawGrad {
 /// Chains the gradient on a surfel's projected values back to its raw parameters.
 pub fn project_backward(
     surfels: &Surfels,
-    i: usize,
+    projected: &Projected,
     cam: &ProjectionCamera,
     grad: &ProjectedGrad,
 ) -> RawGrad {
-    let geo = geometry(surfels, i, cam);
+    let geo = geometry(surfels, projected.index as usize, cam);
     let [m0, m1, m2] = geo.m;
     let px = m1.cross(m2);
     let py = m2.cross(m0);
@@ -395,23 +395,21 @@ pub fn project_backward(
     let proj: f64 = (0..4).map(|k| qu[k] * g_unit[k]).sum();
     let rotation = std::array::from_fn(|k| (g_unit[k] - qu[k] * proj) / geo.q_norm);
 
-    let dsig = |raw: f64| {
-        let s = sigmoid(raw);
-        s * (1.0 - s)
-    };
-    let alb = surfels.albedo[i];
+    // sigmoid' = σ (1 − σ), from the activated values the projection kept.
+    let dsig = |s: f64| s * (1.0 - s);
+    let act = &projected.features;
     RawGrad {
         position,
         log_scale,
         rotation,
-        opacity: grad.opacity * dsig(surfels.opacity[i]),
+        opacity: grad.opacity * dsig(projected.opacity),
         albedo: [
-            f[3] * dsig(alb[0]),
-            f[4] * dsig(alb[1]),
-            f[5] * dsig(alb[2]),
+            f[3] * dsig(act[3]),
+            f[4] * dsig(act[4]),
+            f[5] * dsig(act[5]),
         ],
-        roughness: f[6] * dsig(surfels.roughness[i]),
-        ior: f[7] * dsig(surfels.ior[i]),
+        roughness: f[6] * dsig(act[6]),
+        ior: f[7] * dsig(act[7] - IOR_MIN),
         mean2d_norm: (mean2d[0] * mean2d[0] + mean2d[1] * mean2d[1]).sqrt(),
     }
 }

@@ -1,5 +1,6 @@
 //! The `phygap` command line: a thin shell over the library; each subcommand lives in its own module.
 
+mod bench;
 mod eval;
 mod export;
 mod inspect;
@@ -34,6 +35,8 @@ enum Command {
     Export(export::ExportArgs),
     /// Render a small synthetic full-Stokes capture (sample data for a fresh machine).
     Synth(synth::SynthArgs),
+    /// Time the compute backends on synthetic scenes.
+    Bench(bench::BenchArgs),
     /// Print the default training configuration as JSON (a template for --config).
     Config,
 }
@@ -46,6 +49,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Eval(args) => eval::run(&args),
         Command::Export(args) => export::run(&args),
         Command::Synth(args) => synth::run(&args),
+        Command::Bench(args) => bench::run(&args),
         Command::Config => {
             let config = phygap::config::TrainConfig::default();
             println!("{}", serde_json::to_string_pretty(&config)?);

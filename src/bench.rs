@@ -1,0 +1,203 @@
+//! Timing of rasterizer backends on a synthetic object: surfels tangent to the unit sphere, seen
+//! from distance 4 with a 40° field of view (the framing of the shared captures).
+//!
+//! Surfels sit on a Fibonacci lattice of the sphere with scale `0.6 × spacing`, so the shell is
+//! covered with overlap; both hemispheres are rasterized (surfels are two-sided), as in training.
+//! Timings are medians over `repeats` runs after one warm-up run.
+
+use std::time::Instant;
+
+use glam::{DMat3, DQuat, DVec3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+use tracing::info_span;
+
+use crate::camera::Camera;
+use crate::raster::{Backend, GBuffers, RasterError, RasterSettings};
+use crate::surfels::{logit, Surfels};
+
+/// One benchmark measurement.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BenchRow {
+    pub surfels: usize,
+    pub width: u32,
+    pub height: u32,
+    /// Median forward time in milliseconds.
+    pub fwd_ms: f64,
+    /// Median forward + backward time in milliseconds.
+    pub fwd_bwd_ms: f64,
+    /// (pixel, surfel) pairs the forward pass evaluated (not serialized).
+    #[serde(skip)]
+    pub pixel_evaluations: u64,
+}
+
+impl BenchRow {
+    /// Forward (pixel, surfel) evaluations per second.
+    pub fn evaluations_per_s(&self) -> f64 {
+        self.pixel_evaluations as f64 / (self.fwd_ms * 1e-3)
+    }
+}
+
+/// `n` surfels tangent to the unit sphere, covering it (deterministic for a seed).
+pub fn shell_surfels(n: usize, seed: u64) -> Surfels {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut s = Surfels::zeros(n);
+    let spacing = (4.0 * std::f64::consts::PI / n.max(1) as f64).sqrt();
+    let golden = std::f64::consts::PI * (3.0 - 5.0f64.sqrt());
+    for i in 0..n {
+        let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+        let r = (1.0 - z * z).sqrt();
+        let phi = golden * i as f64;
+        let normal = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+        let helper = if normal.x.abs() < 0.9 {
+            DVec3::X
+        } else {
+            DVec3::Y
+        };
+        let tu = normal.cross(helper).normalize();
+        let tv = normal.cross(tu);
+        let q = DQuat::from_mat3(&DMat3::from_cols(tu, tv, normal)).normalize();
+        s.position[i] = normal.to_array();
+        let scale = (0.6 * spacing * rng.random_range(0.8..1.2f64)).ln();
+        s.log_scale[i] = [scale, scale];
+        s.rotation[i] = [q.w, q.x, q.y, q.z];
+        s.opacity[i] = logit(rng.random_range(0.7..0.95));
+        s.albedo[i] = std::array::from_fn(|_| rng.random_range(-2.0..2.0));
+        s.roughness[i] = rng.random_range(-2.0..2.0);
+        s.ior[i] = rng.random_range(-2.0..2.0);
+    }
+    s
+}
+
+/// Camera at distance 4 from the origin with a 40° horizontal field of view.
+pub fn shell_camera(width: u32, height: u32) -> Camera {
+    Camera::look_at(
+        width,
+        height,
+        40f64.to_radians(),
+        DVec3::new(1.5, -3.6, 0.7).normalize() * 4.0,
+        DVec3::ZERO,
+        DVec3::Z,
+    )
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n == 0 {
+        return f64::NAN;
+    }
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+/// Median forward and forward+backward times of `backend` for each surfel count.
+pub fn bench_raster(
+    backend: &dyn Backend,
+    surfel_counts: &[usize],
+    width: u32,
+    height: u32,
+    repeats: usize,
+) -> Result<Vec<BenchRow>, RasterError> {
+    let camera = shell_camera(width, height);
+    let settings = RasterSettings::default();
+    let repeats = repeats.max(1);
+    let mut rows = Vec::new();
+    for &n in surfel_counts {
+        let _span = info_span!("bench_raster", surfels = n, backend = backend.name()).entered();
+        let surfels = shell_surfels(n, 7);
+        let mut rng = ChaCha8Rng::seed_from_u64(9);
+        let (w, h) = (width as usize, height as usize);
+        let mut upstream = GBuffers::zeros(w, h);
+        for k in 0..w * h {
+            upstream.alpha[k] = rng.random_range(-1.0..1.0);
+            upstream.depth[k] = rng.random_range(-1.0..1.0);
+            upstream.normal[k] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
+            upstream.albedo[k] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
+            upstream.roughness[k] = rng.random_range(-1.0..1.0);
+            upstream.ior[k] = rng.random_range(-1.0..1.0);
+            upstream.depth_normal[k] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
+        }
+        // Warm-up.
+        let fwd = backend.forward(&surfels, &camera, &settings)?;
+        backend.backward(&surfels, &camera, &settings, &fwd, &upstream)?;
+        let evaluations = fwd.stats.pixel_evaluations;
+        drop(fwd);
+
+        let mut fwd_times = Vec::with_capacity(repeats);
+        let mut both_times = Vec::with_capacity(repeats);
+        for _ in 0..repeats {
+            let start = Instant::now();
+            let fwd = backend.forward(&surfels, &camera, &settings)?;
+            fwd_times.push(start.elapsed().as_secs_f64() * 1e3);
+            drop(fwd);
+            let start = Instant::now();
+            let fwd = backend.forward(&surfels, &camera, &settings)?;
+            let grads = backend.backward(&surfels, &camera, &settings, &fwd, &upstream)?;
+            both_times.push(start.elapsed().as_secs_f64() * 1e3);
+            drop((fwd, grads));
+        }
+        rows.push(BenchRow {
+            surfels: n,
+            width,
+            height,
+            fwd_ms: median(fwd_times),
+            fwd_bwd_ms: median(both_times),
+            pixel_evaluations: evaluations,
+        });
+    }
+    Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::cpu::CpuBackend;
+
+    #[test]
+    fn shell_scene_covers_the_sphere_silhouette() {
+        let camera = shell_camera(64, 64);
+        let s = shell_surfels(4000, 1);
+        let out = CpuBackend
+            .forward(&s, &camera, &RasterSettings::default())
+            .unwrap()
+            .gbuffers;
+        // Pixels whose ray passes well inside the unit sphere must be opaque, at depth ≈ 3..4.
+        let mut inside = 0;
+        for j in 0..64u32 {
+            for i in 0..64u32 {
+                let d = camera.pixel_dir(i, j);
+                let o = camera.origin();
+                let closest = (o - d * o.dot(d)).length();
+                if closest < 0.8 {
+                    inside += 1;
+                    let k = (j * 64 + i) as usize;
+                    assert!(out.alpha[k] > 0.95, "pixel ({i},{j}) α {}", out.alpha[k]);
+                    assert!(out.depth[k] > 2.9 && out.depth[k] < 4.0);
+                }
+            }
+        }
+        assert!(inside > 500);
+    }
+
+    #[test]
+    fn bench_reports_one_row_per_count() {
+        let rows = bench_raster(&CpuBackend, &[100, 300], 32, 32, 1).unwrap();
+        assert_eq!(rows.len(), 2);
+        assert_eq!(rows[1].surfels, 300);
+        assert!(rows.iter().all(|r| r.fwd_ms > 0.0 && r.fwd_bwd_ms > 0.0));
+        assert!(rows[1].pixel_evaluations > 0);
+        let json = serde_json::to_value(&rows[0]).unwrap();
+        let keys: Vec<&str> = json
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(|k| k.as_str())
+            .collect();
+        assert_eq!(keys.len(), 5, "{keys:?}");
+    }
+}

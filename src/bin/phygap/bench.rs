@@ -1,0 +1,79 @@
+//! `phygap bench ...`: timing of the compute backends on synthetic scenes.
+
+use anyhow::Result;
+use clap::{Args, Subcommand, ValueEnum};
+
+use phygap::bench::bench_raster;
+use phygap::raster::cpu::CpuBackend;
+use phygap::raster::Backend;
+
+#[derive(Args)]
+pub struct BenchArgs {
+    #[command(subcommand)]
+    what: BenchWhat,
+}
+
+#[derive(Subcommand)]
+enum BenchWhat {
+    /// Rasterizer forward and forward+backward on surfels covering a unit sphere.
+    Raster(RasterBenchArgs),
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum BenchBackend {
+    Cpu,
+}
+
+#[derive(Args)]
+struct RasterBenchArgs {
+    #[arg(long, value_enum, default_value = "cpu")]
+    backend: BenchBackend,
+    /// Print a JSON array of {surfels, width, height, fwd_ms, fwd_bwd_ms}.
+    #[arg(long)]
+    json: bool,
+    /// Surfel counts, comma separated.
+    #[arg(long, value_delimiter = ',', default_values_t = [10_000usize, 50_000, 200_000])]
+    surfels: Vec<usize>,
+    #[arg(long, default_value_t = 256)]
+    width: u32,
+    #[arg(long, default_value_t = 256)]
+    height: u32,
+    /// Timed runs per count (the median is reported).
+    #[arg(long, default_value_t = 7)]
+    repeats: usize,
+}
+
+pub fn run(args: BenchArgs) -> Result<()> {
+    match args.what {
+        BenchWhat::Raster(a) => {
+            let backend: Box<dyn Backend> = match a.backend {
+                BenchBackend::Cpu => Box::new(CpuBackend),
+            };
+            let rows = bench_raster(backend.as_ref(), &a.surfels, a.width, a.height, a.repeats)?;
+            if a.json {
+                println!("{}", serde_json::to_string_pretty(&rows)?);
+            } else {
+                println!(
+                    "backend {} ({} threads)",
+                    backend.name(),
+                    rayon::current_num_threads()
+                );
+                println!(
+                    "{:>9} {:>9} {:>10} {:>13} {:>16}",
+                    "surfels", "size", "fwd ms", "fwd+bwd ms", "fwd evals/s"
+                );
+                for r in &rows {
+                    println!(
+                        "{:>9} {:>9} {:>10.2} {:>13.2} {:>16.3e}",
+                        r.surfels,
+                        format!("{}x{}", r.width, r.height),
+                        r.fwd_ms,
+                        r.fwd_bwd_ms,
+                        r.evaluations_per_s()
+                    );
+                }
+            }
+        }
+    }
+    Ok(())
+}

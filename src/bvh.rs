@@ -16,8 +16,11 @@ use crate::mesh::TriangleMesh;
 const MAX_LEAF: usize = 4;
 /// SAH bins per axis.
 const BINS: usize = 12;
-/// Traversal stack depth (the tree depth is bounded well below this for any mesh that fits u32).
-const STACK: usize = 64;
+/// Below this depth nodes split by object median instead of SAH, which bounds the tree depth by
+/// `MEDIAN_DEPTH + 32` for any triangle count that fits u32.
+const MEDIAN_DEPTH: usize = 48;
+/// Traversal stack size: at most one entry per level.
+const STACK: usize = MEDIAN_DEPTH + 40;
 /// Hits closer than this ray parameter are ignored (self-intersection guard for unit directions).
 pub const T_MIN: f64 = 1e-9;
 
@@ -134,7 +137,7 @@ impl Bvh {
             .collect();
         let mut nodes = Vec::with_capacity(2 * items.len().max(1) / MAX_LEAF + 1);
         if !items.is_empty() {
-            build_node(&mut items, 0, &mut nodes);
+            build_node(&mut items, 0, 0, &mut nodes);
         }
         let original: Vec<u32> = items.iter().map(|it| it.triangle).collect();
         let triangles = original
@@ -391,7 +394,12 @@ impl Bvh {
 
 /// Recursively builds the subtree over `items` (whose first slot is `offset`), appending nodes in
 /// depth-first order, and returns its node index. Reorders `items`.
-fn build_node(items: &mut [BuildItem], offset: usize, nodes: &mut Vec<Node>) -> usize {
+fn build_node(
+    items: &mut [BuildItem],
+    offset: usize,
+    depth: usize,
+    nodes: &mut Vec<Node>,
+) -> usize {
     let mut bounds = Aabb::EMPTY;
     let mut centroids = Aabb::EMPTY;
     for it in items.iter() {
@@ -407,10 +415,28 @@ fn build_node(items: &mut [BuildItem], offset: usize, nodes: &mut Vec<Node>) -> 
     if items.len() <= MAX_LEAF {
         return index;
     }
-    let split = sah_split(items, &centroids).unwrap_or(items.len() / 2);
+    let split = if depth < MEDIAN_DEPTH {
+        sah_split(items, &centroids)
+    } else {
+        None
+    }
+    .unwrap_or_else(|| {
+        // Object median along the widest centroid axis (halves the count, so depth stays bounded).
+        let extent = centroids.max - centroids.min;
+        let axis = if extent.x >= extent.y && extent.x >= extent.z {
+            0
+        } else if extent.y >= extent.z {
+            1
+        } else {
+            2
+        };
+        let mid = items.len() / 2;
+        items.select_nth_unstable_by(mid, |a, b| a.centroid[axis].total_cmp(&b.centroid[axis]));
+        mid
+    });
     let (left, right) = items.split_at_mut(split);
-    build_node(left, offset, nodes);
-    let right_index = build_node(right, offset + split, nodes);
+    build_node(left, offset, depth + 1, nodes);
+    let right_index = build_node(right, offset + split, depth + 1, nodes);
     nodes[index].first_or_right = right_index as u32;
     nodes[index].count = 0;
     index
@@ -763,6 +789,43 @@ mod tests {
             }
             assert_eq!(bvh.contains(p), r < 1.0, "point at radius {r}");
         }
+    }
+
+    fn tree_depth(bvh: &Bvh, node: usize) -> usize {
+        let n = &bvh.nodes[node];
+        if n.count > 0 {
+            1
+        } else {
+            1 + tree_depth(bvh, node + 1).max(tree_depth(bvh, n.first_or_right as usize))
+        }
+    }
+
+    #[test]
+    fn geometric_spacing_cannot_overflow_the_traversal_stack() {
+        // Triangles at x = 2^-i: binned SAH peels them off one by one, so the depth must be
+        // capped by the median fallback.
+        let mut mesh = TriangleMesh::default();
+        for i in 0..400u32 {
+            let x = 0.5f64.powi(i as i32 / 2) * if i % 2 == 0 { 1.0 } else { -1.0 };
+            let b = mesh.vertices.len() as u32;
+            mesh.vertices
+                .extend([[x, -1.0, -1.0], [x, 1.0, -1.0], [x, 0.0, 1.0]]);
+            mesh.triangles.push([b, b + 1, b + 2]);
+        }
+        let bvh = Bvh::build(&mesh);
+        let depth = tree_depth(&bvh, 0);
+        assert!(depth <= STACK, "depth {depth}");
+        assert!(
+            depth > 20,
+            "depth {depth}: the test no longer exercises deep trees"
+        );
+        let hits = bvh.count_crossings(DVec3::new(2.0, 0.0, 0.0), DVec3::new(-1.0, 0.001, 0.002));
+        assert_eq!(hits, 400);
+        let first = bvh
+            .intersect(DVec3::new(2.0, 0.0, 0.0), DVec3::NEG_X, 9.0)
+            .unwrap();
+        assert!((first.t - 1.0).abs() < 1e-15);
+        assert!(check_rays_against_brute_force(&mesh, 200, 4) > 50);
     }
 
     #[test]

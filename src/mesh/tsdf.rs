@@ -954,4 +954,66 @@ mod tests {
         assert!(mesh.triangles.len() < a.triangles.len());
         assert!(mesh.vertices.iter().all(|v| v[2] < 0.6));
     }
+
+    #[test]
+    fn ground_truth_knot_depth_fuses_close_to_the_knot_mesh() {
+        use crate::camera::{CameraConvention, Intrinsics};
+        use glam::DMat4;
+        let data =
+            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/knot"));
+        if !data.is_dir() {
+            println!("skipping: ../shared/data not found");
+            return;
+        }
+        let text = std::fs::read_to_string(data.join("transforms_train.json")).unwrap();
+        let meta: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let number = |key: &str| meta[key].as_f64().unwrap();
+        let intrinsics = Intrinsics {
+            width: number("w") as u32,
+            height: number("h") as u32,
+            fx: number("fl_x"),
+            fy: number("fl_y"),
+            cx: number("cx"),
+            cy: number("cy"),
+        };
+        let frames = meta["frames"].as_array().unwrap();
+        let mut cameras = Vec::new();
+        let mut depths = Vec::new();
+        for frame in frames {
+            let rows: Vec<Vec<f64>> =
+                serde_json::from_value(frame["transform_matrix"].clone()).unwrap();
+            let c2w =
+                DMat4::from_cols_array_2d(&[0, 1, 2, 3].map(|c| [0, 1, 2, 3].map(|r| rows[r][c])));
+            cameras.push(Camera::new(intrinsics, c2w, CameraConvention::OpenGL));
+            let path = data.join(frame["depth_path"].as_str().unwrap());
+            let image = crate::image_io::read_exr(&path).unwrap();
+            depths.push(
+                image
+                    .data
+                    .iter()
+                    .step_by(image.channels)
+                    .map(|&d| d as f64)
+                    .collect::<Vec<f64>>(),
+            );
+        }
+        let views: Vec<DepthView> = cameras
+            .iter()
+            .zip(&depths)
+            .map(|(camera, depth)| DepthView {
+                camera,
+                depth,
+                alpha: None,
+            })
+            .collect();
+        let bounds = (DVec3::splat(-1.1), DVec3::splat(1.1));
+        let params = TsdfParams::automatic(128, &views, bounds);
+        let mesh = extract_mesh(&views, bounds, &params).unwrap();
+        let gt = TriangleMesh::read_ply(&data.join("mesh.ply")).unwrap();
+        let voxel = 2.2 / 128.0;
+        let forward = super::super::chamfer_l1_with(&mesh, &gt, 50_000, 0).unwrap();
+        let backward = super::super::chamfer_l1_with(&gt, &mesh, 50_000, 0).unwrap();
+        println!("knot: {} triangles, chamfer pred→gt {forward:.5}, gt→pred {backward:.5}, voxel {voxel:.5}", mesh.triangles.len());
+        assert!(forward < 0.1 * voxel, "pred→gt {forward}");
+        assert!(backward < 0.1 * voxel, "gt→pred {backward} (holes?)");
+    }
 }

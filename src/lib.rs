@@ -7,6 +7,7 @@
 pub mod backend;
 pub mod bench;
 pub mod brdf_lut;
+pub mod bvh;
 pub mod camera;
 pub mod capture;
 pub mod checkpoint;
@@ -18,7 +19,9 @@ pub mod events;
 pub mod export;
 pub mod gradcheck;
 pub mod image_io;
+pub mod kdtree;
 pub mod loss;
+pub mod mesh;
 pub mod mesh_io;
 pub mod metrics;
 pub mod model;

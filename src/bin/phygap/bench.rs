@@ -43,8 +43,8 @@ struct RasterBenchArgs {
     repeats: usize,
 }
 
-pub fn run(args: BenchArgs) -> Result<()> {
-    match args.what {
+pub fn run(args: &BenchArgs) -> Result<()> {
+    match &args.what {
         BenchWhat::Raster(a) => {
             let backend: Box<dyn Backend> = match a.backend {
                 BenchBackend::Cpu => Box::new(CpuBackend),

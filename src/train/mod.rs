@@ -229,7 +229,6 @@ impl Run<'_> {
                 .into_iter()
                 .map(|g| (g, 0.0))
                 .collect(),
-            angles_initialized: false,
             adam: Adam::new(AdamConfig::default()),
             densify: DensifyStats::new(n),
             elapsed_seconds: 0.0,
@@ -286,9 +285,11 @@ impl Run<'_> {
             }
             let it = state.iteration;
             let stage = stage_of(it, self.config);
-            if stage == Stage::Polar && !state.angles_initialized {
-                state.polarizer_angles = angles::initialize(self, &state, &env)?;
-                state.angles_initialized = true;
+            // Unknown polarizer angles are estimated when the PolarDR stage starts (a fixed
+            // iteration, so a resumed run does the same); until then the material and lighting
+            // are not fitted well enough to tell θ from θ + 90°.
+            if it == self.config.polar_stage_start() && !state.polarizer_angles.is_empty() {
+                state.polarizer_angles = angles::estimate(self, &state, &env)?;
             }
             let mut rng = iteration_rng(self.config.seed, it);
             let target = &self.targets[rng.random_range(0..self.targets.len())];

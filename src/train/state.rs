@@ -26,8 +26,6 @@ pub struct TrainState {
     pub envmap: CubeMap,
     /// Learned polarizer angle per `polarizer_group`, radians in [0, π).
     pub polarizer_angles: BTreeMap<String, f64>,
-    /// Groups whose angle has been initialized by the coarse search.
-    pub angles_initialized: bool,
     pub adam: Adam,
     pub densify: DensifyStats,
     /// Wall time spent in earlier sessions of this run.
@@ -39,7 +37,6 @@ struct Meta {
     iteration: u32,
     envmap_size: usize,
     polarizer_angles: BTreeMap<String, f64>,
-    angles_initialized: bool,
     adam_config: AdamConfig,
     adam_groups: BTreeMap<String, (u64, usize)>,
     elapsed_seconds: f64,
@@ -62,7 +59,6 @@ impl TrainState {
             iteration: self.iteration,
             envmap_size: self.envmap.size,
             polarizer_angles: self.polarizer_angles.clone(),
-            angles_initialized: self.angles_initialized,
             adam_config: self.adam.config,
             adam_groups,
             elapsed_seconds: self.elapsed_seconds,
@@ -130,7 +126,6 @@ impl TrainState {
             surfels,
             envmap,
             polarizer_angles: meta.polarizer_angles,
-            angles_initialized: meta.angles_initialized,
             adam,
             densify,
             elapsed_seconds: meta.elapsed_seconds,

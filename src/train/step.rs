@@ -76,10 +76,21 @@ pub fn run(
     let mut up = GBufferGrads::zeros(w, h);
     let mut losses = BTreeMap::new();
 
-    let theta = match &target.polarizer {
-        Some(Polarizer::Fixed(t)) => Some(*t),
-        Some(Polarizer::Learned(name)) => Some(angles.get(name).copied().unwrap_or(0.0)),
-        None => None,
+    let polarized_view = target.polarizer.is_some();
+    // Before the PolarDR stage a view behind a polarizer is fitted as unpolarized light
+    // (I = S0 / 2 on average over θ); from then on with its known or learned angle.
+    let theta = match (&target.polarizer, stage) {
+        (_, Stage::Geometry | Stage::Material) => None,
+        (Some(Polarizer::Fixed(t)), Stage::Polar) => Some(*t),
+        (Some(Polarizer::Learned(name)), Stage::Polar) => {
+            Some(angles.get(name).copied().unwrap_or(0.0))
+        }
+        (None, Stage::Polar) => None,
+    };
+    let unpolarized_scale = if polarized_view && theta.is_none() {
+        0.5
+    } else {
+        1.0
     };
 
     // Shading (not in the geometry stage, where colour = albedo).
@@ -96,13 +107,9 @@ pub fn run(
     for p in 0..pixels {
         let a = g.alpha[p];
         let colour = match &shaded {
-            None => {
-                let albedo = DVec3::from_array(g.albedo[p]);
-                // Behind a polarizer an unpolarized surface passes half its radiance.
-                albedo * if theta.is_some() { 0.5 } else { 1.0 }
-            }
+            None => DVec3::from_array(g.albedo[p]) * unpolarized_scale,
             Some((_, s)) => match theta {
-                None => s.s0[p],
+                None => s.s0[p] * unpolarized_scale,
                 Some(t) => 0.5 * (s.s0[p] + s.s1[p] * (2.0 * t).cos() + s.s2[p] * (2.0 * t).sin()),
             },
         };
@@ -126,7 +133,7 @@ pub fn run(
             losses.insert("stokes".to_owned(), weights.lambda_stokes * stokes.value);
             let scale = |v: Vec<f64>| v.into_iter().map(|x| x * weights.lambda_stokes).collect();
             grad_s12 = Some((scale(stokes.grad_s1), scale(stokes.grad_s2)));
-        } else if theta.is_some() {
+        } else if polarized_view {
             let extra = loss::l1(&pred, &target.photometric, None);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * extra.value);
             add_into(&mut grad_pred, &extra.grad, weights.lambda_stokes);
@@ -176,7 +183,7 @@ pub fn run(
     let mut env_grad = None;
     match &shaded {
         None => {
-            let k = if theta.is_some() { 0.5 } else { 1.0 };
+            let k = unpolarized_scale;
             for p in 0..pixels {
                 let gp = DVec3::from_slice(&grad_pred[p * 3..p * 3 + 3]);
                 let albedo = DVec3::from_array(g.albedo[p]);
@@ -194,8 +201,8 @@ pub fn run(
                 let gp = DVec3::from_slice(&grad_pred[p * 3..p * 3 + 3]);
                 match theta {
                     None => {
-                        d0[p] = gp * a;
-                        up.alpha[p] += s.s0[p].dot(gp);
+                        d0[p] = gp * (a * unpolarized_scale);
+                        up.alpha[p] += unpolarized_scale * s.s0[p].dot(gp);
                     }
                     Some(t) => {
                         let (c, sn) = ((2.0 * t).cos(), (2.0 * t).sin());

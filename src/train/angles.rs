@@ -91,7 +91,7 @@ impl AngleFit {
     /// The angle in [0, π), or `None` when the samples carry no polarization (singular system).
     pub(crate) fn angle(&self) -> Option<f64> {
         let det = self.a11 * self.a22 - self.a12 * self.a12;
-        if !(det > 1e-12 * (self.a11 * self.a22).max(f64::MIN_POSITIVE)) {
+        if det.is_nan() || det <= 1e-12 * (self.a11 * self.a22).max(f64::MIN_POSITIVE) {
             return None;
         }
         let x = (self.a22 * self.b1 - self.a12 * self.b2) / det;

@@ -110,6 +110,8 @@ pub enum RasterError {
     },
     #[error("backward was given a forward result of another backend or another scene: {0}")]
     ForwardMismatch(&'static str),
+    #[error("gpu backend: {0}")]
+    Gpu(String),
 }
 
 /// Per-pixel G-buffers, row-major (index `y * width + x`), row 0 on top.

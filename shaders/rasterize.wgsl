@@ -39,10 +39,12 @@ fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id)
     var last = 0u;
     var n_evals = 0u;
     for (var k = range.x; k < range.y; k++) {
-        let p = proj[entries[k].z];
-        if !rect_contains(p.rect, x, y) {
+        let idx = entries[k].z;
+        // The box alone first: most entries of a tile miss most of its pixels.
+        if !rect_contains(proj[idx].rect, x, y) {
             continue;
         }
+        let p = proj[idx];
         n_evals++;
         let hit = evaluate(p, xf, yf, prm);
         if !hit.ok {

@@ -57,10 +57,10 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
     var b_acc = 0.0;
     for (var kk = n; kk > 0u; kk--) {
         let e = entries[range.x + kk - 1u];
-        let p = proj[e.z];
-        if !rect_contains(p.rect, x, y) {
+        if !rect_contains(proj[e.z].rect, x, y) {
             continue;
         }
+        let p = proj[e.z];
         let hit = evaluate(p, xf, yf, prm);
         if !hit.ok {
             continue;

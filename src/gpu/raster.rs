@@ -875,6 +875,14 @@ impl Backend for GpuBackend {
         "gpu"
     }
 
+    fn description(&self) -> String {
+        format!(
+            "gpu on {}, {:?} atomics",
+            self.ctx.adapter_summary(),
+            self.atomics
+        )
+    }
+
     fn forward(
         &self,
         surfels: &Surfels,

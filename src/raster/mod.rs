@@ -243,6 +243,10 @@ pub struct RasterGrads {
 /// A rasterizer implementation.
 pub trait Backend: Send + Sync {
     fn name(&self) -> &'static str;
+    /// The name plus what it runs on (for logs and `phygap bench`).
+    fn description(&self) -> String {
+        self.name().to_string()
+    }
     fn forward(
         &self,
         surfels: &Surfels,

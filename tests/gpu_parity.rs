@@ -502,3 +502,81 @@ fn short_training_run_matches_cpu() {
         "test PSNR gpu {gpu_psnr} vs cpu {cpu_psnr}"
     );
 }
+
+/// No surfels, and surfels that are all culled (behind the camera), give empty buffers and zero
+/// gradients without touching a zero-sized binding.
+#[test]
+fn empty_and_fully_culled_scenes() {
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let camera = random_camera(&mut rng, 20, 17);
+    let settings = RasterSettings::default();
+    let mut behind = random_surfels(&mut rng, 40);
+    let back = -camera.origin();
+    for p in &mut behind.position {
+        *p = (DVec3::from_array(*p) * 0.1 + camera.origin() - back.normalize() * 0.5).to_array();
+    }
+    for surfels in [Surfels::zeros(0), behind] {
+        let fwd = gpu.forward(&surfels, &camera, &settings).unwrap();
+        assert_eq!(fwd.stats.visible_surfels, 0);
+        assert_eq!(fwd.stats.tile_entries, 0);
+        assert_eq!(fwd.gbuffers, GBuffers::zeros(20, 17));
+        let upstream = random_upstream(&mut rng, 20, 17);
+        let grads = gpu
+            .backward(&surfels, &camera, &settings, &fwd, &upstream)
+            .unwrap();
+        assert_eq!(grads.surfels, SurfelGrads::zeros(surfels.len()));
+        assert!(grads.mean2d_grad_norm.iter().all(|&v| v == 0.0));
+    }
+}
+
+/// A render whose G-buffer exceeds the device's storage-binding limit fails with an error that
+/// names the buffer (instead of a device error or a crash).
+#[test]
+fn too_large_render_fails_with_a_clear_error() {
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let limits = gpu.context().device.limits();
+    let limit = u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
+    // 10 f32 per pixel: a square image just over the limit.
+    let side = ((limit / 40) as f64).sqrt().ceil() as u32 + 1;
+    let camera = Camera::look_at(
+        side,
+        side,
+        0.8,
+        DVec3::new(0.0, -4.0, 0.0),
+        DVec3::ZERO,
+        DVec3::Z,
+    );
+    let mut rng = ChaCha8Rng::seed_from_u64(6);
+    let surfels = random_surfels(&mut rng, 3);
+    let err = gpu
+        .forward(&surfels, &camera, &RasterSettings::default())
+        .err()
+        .expect("a render beyond the device limits must fail");
+    let msg = err.to_string();
+    assert!(
+        msg.contains("g-buffers") && msg.contains("max_storage_buffer_binding_size"),
+        "{msg}"
+    );
+}
+
+/// `auto` takes the gpu backend only on a hardware adapter; `gpu` takes any adapter.
+#[test]
+fn auto_prefers_hardware_and_gpu_takes_any_adapter() {
+    use phygap::backend::select;
+    use phygap::config::BackendChoice;
+    if gpu(GpuOptions::default()).is_none() {
+        return;
+    }
+    let adapters = phygap::gpu::list_adapters();
+    assert!(!adapters.is_empty());
+    let auto = select(BackendChoice::Auto).unwrap();
+    let hardware = adapters.iter().any(|a| !a.software);
+    assert_eq!(auto.name(), if hardware { "gpu" } else { "cpu" });
+    assert_eq!(select(BackendChoice::Gpu).unwrap().name(), "gpu");
+    assert_eq!(select(BackendChoice::Cpu).unwrap().name(), "cpu");
+}

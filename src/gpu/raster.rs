@@ -18,6 +18,9 @@
 //! Limits: every buffer is checked against the device's `max_storage_buffer_binding_size` and
 //! `max_buffer_size` before it is created, and a scene that does not fit fails with
 //! [`RasterError::Gpu`] naming the buffer. The kernels use no workgroup memory.
+//!
+//! Threading: calls on one [`GpuBackend`] are serialized (a mutex); the host-side conversions
+//! are single-threaded.
 
 use bytemuck::{Pod, Zeroable};
 use tracing::info_span;
@@ -137,6 +140,8 @@ struct RawGpu {
 const PROJ_BYTES: u64 = 112;
 /// Bytes of one sort entry (vec4<u32>).
 const ENTRY_BYTES: u64 = 16;
+/// Smallest buffer: a binding must hold at least one element of its array (the largest is a `Proj`).
+const MIN_BINDING_BYTES: u64 = PROJ_BYTES;
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -163,6 +168,9 @@ pub struct GpuBackend {
     ctx: GpuContext,
     pipelines: Pipelines,
     atomics: AtomicsMode,
+    /// Serializes forward and backward calls: wgpu's error scopes are one stack per device, so
+    /// two threads inside [`GpuBackend::scoped`] at once would pop each other's scopes.
+    exclusive: std::sync::Mutex<()>,
 }
 
 /// What the forward pass keeps (on the device) for the backward pass.
@@ -244,6 +252,7 @@ impl GpuBackend {
             ctx,
             pipelines,
             atomics,
+            exclusive: std::sync::Mutex::new(()),
         })
     }
 
@@ -276,8 +285,7 @@ impl GpuBackend {
     fn storage(&self, name: &str, bytes: u64, extra: wgpu::BufferUsages) -> wgpu::Buffer {
         self.device().create_buffer(&wgpu::BufferDescriptor {
             label: Some(name),
-            // Bindings cannot be empty.
-            size: bytes.max(16).next_multiple_of(4),
+            size: bytes.max(MIN_BINDING_BYTES).next_multiple_of(4),
             usage: wgpu::BufferUsages::STORAGE | extra,
             mapped_at_creation: false,
         })
@@ -285,9 +293,9 @@ impl GpuBackend {
 
     fn storage_init(&self, name: &str, contents: &[u8]) -> wgpu::Buffer {
         let mut padded;
-        let data = if contents.len() < 16 {
+        let data = if (contents.len() as u64) < MIN_BINDING_BYTES {
             padded = contents.to_vec();
-            padded.resize(16, 0);
+            padded.resize(MIN_BINDING_BYTES as usize, 0);
             &padded[..]
         } else {
             contents
@@ -423,6 +431,11 @@ impl GpuBackend {
         stage: &str,
         f: impl FnOnce() -> Result<T, RasterError>,
     ) -> Result<T, RasterError> {
+        // A panic inside another call leaves no state behind that this one depends on.
+        let _exclusive = self
+            .exclusive
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
         let device = self.device();
         device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -636,8 +649,8 @@ impl GpuBackend {
         };
 
         let _span = info_span!("readback").entered();
-        let g: &[f32] = bytemuck::cast_slice(&out[0]);
-        let evals: &[u32] = bytemuck::cast_slice(&out[1]);
+        let g: Vec<f32> = bytemuck::pod_collect_to_vec(&out[0]);
+        let evals: Vec<u32> = bytemuck::pod_collect_to_vec(&out[1]);
         let mut gb = GBuffers::zeros(w, h);
         for (k, px) in g.chunks_exact(NUM_OUT).enumerate() {
             let v = |c: usize| f64::from(px[c]);
@@ -849,7 +862,7 @@ impl GpuBackend {
             )?;
             self.submit_and_read(encoder, &[(&out_buf, raw_grad_bytes)])?
         };
-        let vals: &[f32] = bytemuck::cast_slice(&out[0]);
+        let vals: Vec<f32> = bytemuck::pod_collect_to_vec(&out[0]);
         let mut grads = SurfelGrads::zeros(n);
         let mut mean2d = vec![0.0; n];
         for (i, g) in vals.chunks_exact(NUM_RAW_GRAD).enumerate() {

@@ -198,3 +198,44 @@ impl GpuContext {
             .contains(wgpu::Features::SHADER_FLOAT32_ATOMIC)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn info(name: &str, device_type: wgpu::DeviceType) -> wgpu::AdapterInfo {
+        wgpu::AdapterInfo {
+            name: name.into(),
+            vendor: 0,
+            device: 0,
+            device_type,
+            driver: String::new(),
+            driver_info: String::new(),
+            backend: wgpu::Backend::Vulkan,
+        }
+    }
+
+    #[test]
+    fn software_adapters_are_recognized_by_type_or_name() {
+        use wgpu::DeviceType::*;
+        assert!(is_software(&info("llvmpipe (LLVM 15.0.6, 256 bits)", Cpu)));
+        assert!(is_software(&info("SwiftShader Device (Subzero)", Other)));
+        assert!(is_software(&info(
+            "Microsoft Basic Render Driver",
+            IntegratedGpu
+        )));
+        assert!(!is_software(&info("NVIDIA H100 80GB HBM3", DiscreteGpu)));
+        assert!(!is_software(&info(
+            "AMD Radeon Graphics (RADV GFX1103_R1)",
+            IntegratedGpu
+        )));
+    }
+
+    #[test]
+    fn adapters_rank_discrete_first_and_cpu_last() {
+        use wgpu::DeviceType::*;
+        let mut types = [Cpu, Other, DiscreteGpu, VirtualGpu, IntegratedGpu];
+        types.sort_by_key(|&t| rank(t));
+        assert_eq!(types, [DiscreteGpu, IntegratedGpu, VirtualGpu, Other, Cpu]);
+    }
+}

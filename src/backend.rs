@@ -1,21 +1,51 @@
 //! Choosing the compute backend (`--backend auto|cpu|gpu`).
+//!
+//! `cpu` is the rayon f64 reference. `gpu` opens any Vulkan/Metal/DX12 adapter, software ones
+//! such as lavapipe included, and fails with what to install when there is none. `auto` takes the
+//! gpu backend only on a real (non-software) adapter and falls back to cpu otherwise, so a machine
+//! with only lavapipe trains on the (faster there) cpu backend.
 
 use thiserror::Error;
+use tracing::info;
 
 use crate::config::BackendChoice;
+use crate::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuError};
 use crate::raster::cpu::CpuBackend;
 use crate::raster::Backend;
 
 #[derive(Debug, Error)]
 pub enum BackendError {
-    #[error("the gpu backend is not available in this build yet; use `--backend cpu` (or `auto`)")]
-    GpuUnavailable,
+    #[error("the gpu backend is unavailable: {0}")]
+    Gpu(#[from] GpuError),
 }
 
-/// The backend for a choice: `auto` and `cpu` give the rayon reference backend.
+/// The backend for a choice.
 pub fn select(choice: BackendChoice) -> Result<Box<dyn Backend>, BackendError> {
     match choice {
-        BackendChoice::Auto | BackendChoice::Cpu => Ok(Box::new(CpuBackend)),
-        BackendChoice::Gpu => Err(BackendError::GpuUnavailable),
+        BackendChoice::Cpu => Ok(Box::new(CpuBackend)),
+        BackendChoice::Gpu => Ok(Box::new(GpuBackend::new(GpuContext::new(
+            AdapterRequirement::Any,
+        )?)?)),
+        BackendChoice::Auto => {
+            match GpuContext::new(AdapterRequirement::Hardware).and_then(GpuBackend::new) {
+                Ok(gpu) => Ok(Box::new(gpu)),
+                Err(e) => {
+                    info!("backend auto: using cpu ({e})");
+                    Ok(Box::new(CpuBackend))
+                }
+            }
+        }
+    }
+}
+
+/// What a choice resolves to on this machine, as `phygap info` prints it: `Ok("gpu (adapter)")`
+/// or `Ok("cpu")`, or the error the choice would fail with.
+pub fn describe(choice: BackendChoice) -> Result<String, BackendError> {
+    let gpu = |req| GpuContext::new(req).map(|ctx| format!("gpu on {}", ctx.adapter_summary()));
+    match choice {
+        BackendChoice::Cpu => Ok(format!("cpu ({} threads)", rayon::current_num_threads())),
+        BackendChoice::Gpu => Ok(gpu(AdapterRequirement::Any)?),
+        BackendChoice::Auto => Ok(gpu(AdapterRequirement::Hardware)
+            .unwrap_or_else(|e| format!("cpu ({} threads; {e})", rayon::current_num_threads()))),
     }
 }

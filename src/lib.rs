@@ -17,6 +17,7 @@ pub mod envmap;
 pub mod evaluate;
 pub mod events;
 pub mod export;
+pub mod gpu;
 pub mod gradcheck;
 pub mod image_io;
 pub mod kdtree;

@@ -110,6 +110,8 @@ pub enum RasterError {
     },
     #[error("backward was given a forward result of another backend or another scene: {0}")]
     ForwardMismatch(&'static str),
+    #[error("gpu backend: {0}")]
+    Gpu(String),
 }
 
 /// Per-pixel G-buffers, row-major (index `y * width + x`), row 0 on top.
@@ -241,6 +243,10 @@ pub struct RasterGrads {
 /// A rasterizer implementation.
 pub trait Backend: Send + Sync {
     fn name(&self) -> &'static str;
+    /// The name plus what it runs on (for logs and `phygap bench`).
+    fn description(&self) -> String {
+        self.name().to_string()
+    }
     fn forward(
         &self,
         surfels: &Surfels,

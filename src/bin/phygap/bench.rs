@@ -1,11 +1,11 @@
 //! `phygap bench ...`: timing of the compute backends on synthetic scenes.
 
 use anyhow::Result;
-use clap::{Args, Subcommand, ValueEnum};
+use clap::{Args, Subcommand};
 
+use phygap::backend::select;
 use phygap::bench::bench_raster;
-use phygap::raster::cpu::CpuBackend;
-use phygap::raster::Backend;
+use phygap::config::BackendChoice;
 
 #[derive(Args)]
 pub struct BenchArgs {
@@ -19,15 +19,11 @@ enum BenchWhat {
     Raster(RasterBenchArgs),
 }
 
-#[derive(Clone, Copy, ValueEnum)]
-enum BenchBackend {
-    Cpu,
-}
-
 #[derive(Args)]
 struct RasterBenchArgs {
+    /// `gpu` runs on any Vulkan/Metal/DX12 adapter, lavapipe included.
     #[arg(long, value_enum, default_value = "cpu")]
-    backend: BenchBackend,
+    backend: BackendChoice,
     /// Print a JSON array of {surfels, width, height, fwd_ms, fwd_bwd_ms}.
     #[arg(long)]
     json: bool,
@@ -46,18 +42,16 @@ struct RasterBenchArgs {
 pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.what {
         BenchWhat::Raster(a) => {
-            let backend: Box<dyn Backend> = match a.backend {
-                BenchBackend::Cpu => Box::new(CpuBackend),
-            };
+            let backend = select(a.backend)?;
             let rows = bench_raster(backend.as_ref(), &a.surfels, a.width, a.height, a.repeats)?;
             if a.json {
                 println!("{}", serde_json::to_string_pretty(&rows)?);
             } else {
-                println!(
-                    "backend {} ({} threads)",
-                    backend.name(),
-                    rayon::current_num_threads()
-                );
+                if backend.name() == "cpu" {
+                    println!("backend cpu ({} threads)", rayon::current_num_threads());
+                } else {
+                    println!("backend {}", backend.description());
+                }
                 println!(
                     "{:>9} {:>9} {:>10} {:>13} {:>16}",
                     "surfels", "size", "fwd ms", "fwd+bwd ms", "fwd evals/s"

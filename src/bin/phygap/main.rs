@@ -3,6 +3,7 @@
 mod bench;
 mod eval;
 mod export;
+mod info;
 mod inspect;
 mod render;
 mod synth;
@@ -39,6 +40,8 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Print the default training configuration as JSON (a template for --config).
     Config,
+    /// List the gpu adapters found and which backend each `--backend` choice would use.
+    Info,
 }
 
 fn run(command: Command) -> anyhow::Result<()> {
@@ -50,6 +53,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Export(args) => export::run(&args),
         Command::Synth(args) => synth::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Info => info::run(),
         Command::Config => {
             let config = phygap::config::TrainConfig::default();
             println!("{}", serde_json::to_string_pretty(&config)?);
@@ -61,7 +65,8 @@ fn run(command: Command) -> anyhow::Result<()> {
 fn main() {
     tracing_subscriber::fmt()
         .with_env_filter(
-            tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "warn".into()),
+            tracing_subscriber::EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| "warn,wgpu_hal=error,wgpu_core=error".into()),
         )
         .with_writer(std::io::stderr)
         // With RUST_LOG=phygap=debug every pipeline span reports its busy time when it closes.

@@ -1,0 +1,61 @@
+// Tile binning around the sort: `emit` writes one (tile, depth, surfel) entry per tile that a
+// projected surfel's pixel box touches, at the surfel's offset from the host's exclusive scan of the
+// tile counts; `pad` fills the entries beyond the real ones up to the power-of-two size of the
+// bitonic sort with keys that sort last; after the sort, `tile_ranges` marks where each tile's run
+// of entries starts and ends (the ranges buffer is cleared to zero first, so empty tiles are 0..0).
+// Threading: one thread per surfel (`emit`) or per entry (`pad`, `tile_ranges`), 256-thread
+// workgroups on a 2-D grid. Entries are vec4<u32>(tile, depth bits, surfel, 0): the centre depth is
+// positive, so its f32 bit pattern orders like its value.
+
+@group(0) @binding(0) var<uniform> params: Params;
+@group(0) @binding(1) var<storage, read> proj: array<Proj>;
+@group(0) @binding(2) var<storage, read> offsets: array<u32>;
+@group(0) @binding(3) var<storage, read_write> entries: array<vec4<u32>>;
+@group(0) @binding(4) var<storage, read_write> ranges: array<vec2<u32>>;
+
+@compute @workgroup_size(256)
+fn emit(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
+    let i = linear_index(gid, nwg);
+    if i >= params.counts.x {
+        return;
+    }
+    let p = proj[i];
+    let r = p.rect;
+    if r.x >= r.z {
+        return;
+    }
+    let depth_bits = bitcast<u32>(p.q1.w);
+    let tiles_x = params.dims.z;
+    var o = offsets[i];
+    for (var ty = r.y / TILE; ty <= (r.w - 1u) / TILE; ty++) {
+        for (var tx = r.x / TILE; tx <= (r.z - 1u) / TILE; tx++) {
+            entries[o] = vec4<u32>(ty * tiles_x + tx, depth_bits, i, 0u);
+            o++;
+        }
+    }
+}
+
+@compute @workgroup_size(256)
+fn pad(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
+    let i = linear_index(gid, nwg) + params.counts.y;
+    if i >= params.counts.z {
+        return;
+    }
+    entries[i] = vec4<u32>(0xffffffffu, 0xffffffffu, 0xffffffffu, 0u);
+}
+
+@compute @workgroup_size(256)
+fn tile_ranges(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
+    let i = linear_index(gid, nwg);
+    let n = params.counts.y;
+    if i >= n {
+        return;
+    }
+    let t = entries[i].x;
+    if i == 0u || entries[i - 1u].x != t {
+        ranges[t].x = i;
+    }
+    if i + 1u == n || entries[i + 1u].x != t {
+        ranges[t].y = i + 1u;
+    }
+}

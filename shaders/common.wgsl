@@ -1,0 +1,213 @@
+// Shared definitions of the rasterizer kernels: the uniform parameters, the buffer layouts and the
+// per-pixel evaluation of one projected surfel (a port of `evaluate` in src/raster/cpu.rs, in f32).
+// No bindings and no entry points: every kernel file is compiled as `common.wgsl` + itself, so the
+// forward and backward passes evaluate (and skip) exactly the same (pixel, surfel) pairs.
+
+// Tile edge in pixels; the rasterization kernels run one 16×16 workgroup per tile.
+const TILE: u32 = 16u;
+// Per-surfel gradient accumulators: Q (9), det, mean (2), opacity, features (8), view depth.
+const NUM_ACC: u32 = 22u;
+// Per-pixel values of the forward output: α, depth, normal (3), albedo (3), roughness, IoR.
+const NUM_OUT: u32 = 10u;
+// Finite stand-in for +∞ (WGSL has no infinity literal).
+const BIG: f32 = 3.0e38;
+
+struct Params {
+    // World-to-camera rotation (columns) and translation, OpenCV axes.
+    rot0: vec4<f32>,
+    rot1: vec4<f32>,
+    rot2: vec4<f32>,
+    trans: vec4<f32>,
+    // Camera centre in world coordinates.
+    origin: vec4<f32>,
+    // fx, fy, cx, cy.
+    intr: vec4<f32>,
+    // width, height, tiles along x, tiles along y.
+    dims: vec4<u32>,
+    // surfels, tile entries, padded entries (power of two), low-pass filter on (1) or off (0).
+    counts: vec4<u32>,
+    // near, alpha_min, alpha_max, transmittance_min.
+    thr0: vec4<f32>,
+    // lowpass_sigma_px, 1/σ², α-normalization ε, unused.
+    thr1: vec4<f32>,
+}
+
+// Raw (unactivated) surfel parameters.
+struct Raw {
+    // position xyz, opacity logit
+    pos_op: vec4<f32>,
+    // quaternion (w, x, y, z), not normalized
+    quat: vec4<f32>,
+    // log scale u, log scale v, roughness logit, IoR logit
+    scale_rough_ior: vec4<f32>,
+    // albedo logits rgb, unused
+    albedo: vec4<f32>,
+}
+
+// A surfel projected into the camera (`Projected` of src/raster/project.rs).
+struct Proj {
+    // Rows of Q = adj(M) in xyz; w: det(M), centre view depth, ρ cut.
+    q0: vec4<f32>,
+    q1: vec4<f32>,
+    q2: vec4<f32>,
+    // projected centre (pixels), activated opacity, unused
+    mean_op: vec4<f32>,
+    // features: normal facing the camera (3), albedo (3), roughness, IoR
+    f0: vec4<f32>,
+    f1: vec4<f32>,
+    // pixel box [x0, y0, x1, y1); empty (x0 == x1) when the surfel is culled
+    rect: vec4<u32>,
+}
+
+// One projected surfel evaluated at one pixel centre.
+struct Hit {
+    ok: bool,
+    alpha: f32,
+    // Gaussian weight G
+    g: f32,
+    // α hit the alpha_max clamp
+    clamped: bool,
+    // ρ came from the surfel plane (else from the screen-space low-pass filter)
+    use3d: bool,
+    s: f32,
+    t: f32,
+    inv: f32,
+    px: f32,
+    py: f32,
+    z: f32,
+    dx: f32,
+    dy: f32,
+}
+
+fn rect_contains(r: vec4<u32>, x: u32, y: u32) -> bool {
+    return x >= r.x && x < r.z && y >= r.y && y < r.w;
+}
+
+// Evaluates surfel `p` at pixel centre (x, y); `ok` is false when the pair is skipped
+// (intersection not beyond `near`, α < alpha_min, outside the α cut).
+fn evaluate(p: Proj, x: f32, y: f32, prm: Params) -> Hit {
+    var h: Hit;
+    h.ok = false;
+    let px = p.q0.x * x + p.q0.y * y + p.q0.z;
+    let py = p.q1.x * x + p.q1.y * y + p.q1.z;
+    let pz = p.q2.x * x + p.q2.y * y + p.q2.z;
+    let dx = x - p.mean_op.x;
+    let dy = y - p.mean_op.y;
+    let rho_cut = p.q2.w;
+    var rho2 = BIG;
+    if prm.counts.w != 0u {
+        rho2 = (dx * dx + dy * dy) * prm.thr1.y;
+    }
+    // ρ_3d = (px² + py²) / pz² within the cut, tested without the division.
+    let num = px * px + py * py;
+    let in3d = pz != 0.0 && num <= rho_cut * (pz * pz);
+    if !in3d && !(rho2 <= rho_cut) {
+        return h;
+    }
+    var use3d = false;
+    var rho = rho2;
+    var inv = 0.0;
+    var s = 0.0;
+    var t = 0.0;
+    if in3d {
+        inv = 1.0 / pz;
+        s = px * inv;
+        t = py * inv;
+        let rho3 = s * s + t * t;
+        if rho3 <= rho2 {
+            use3d = true;
+            rho = rho3;
+        }
+    }
+    if !(rho <= rho_cut) {
+        return h;
+    }
+    // Depth: the ray–plane intersection, or the centre's depth where the filter wins.
+    var z = p.q1.w;
+    if use3d {
+        z = p.q0.w * inv;
+        if !(z > prm.thr0.x && z < BIG) {
+            return h;
+        }
+    }
+    let g = exp(-0.5 * rho);
+    let oa = p.mean_op.z * g;
+    let clamped = oa > prm.thr0.z;
+    let alpha = select(oa, prm.thr0.z, clamped);
+    if alpha < prm.thr0.y {
+        return h;
+    }
+    h.ok = true;
+    h.alpha = alpha;
+    h.g = g;
+    h.clamped = clamped;
+    h.use3d = use3d;
+    h.s = s;
+    h.t = t;
+    h.inv = inv;
+    h.px = px;
+    h.py = py;
+    h.z = z;
+    h.dx = dx;
+    h.dy = dy;
+    return h;
+}
+
+fn sigmoid(x: f32) -> f32 {
+    return 1.0 / (1.0 + exp(-x));
+}
+
+// Rotation matrix (columns t_u, t_v, normal) of a unit quaternion (w, x, y, z).
+fn rotation_from_unit(q: vec4<f32>) -> mat3x3<f32> {
+    let w = q.x;
+    let x = q.y;
+    let y = q.z;
+    let z = q.w;
+    return mat3x3<f32>(
+        vec3<f32>(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y + w * z), 2.0 * (x * z - w * y)),
+        vec3<f32>(2.0 * (x * y - w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z + w * x)),
+        vec3<f32>(2.0 * (x * z + w * y), 2.0 * (y * z - w * x), 1.0 - 2.0 * (x * x + y * y)),
+    );
+}
+
+// Intermediate values of the projection of one surfel, shared by the projection and its backward.
+struct Geometry {
+    q_norm: f32,
+    q_unit: vec4<f32>,
+    rot: mat3x3<f32>,
+    scale: vec2<f32>,
+    // Camera-space scaled tangent axes and centre.
+    a: vec3<f32>,
+    b: vec3<f32>,
+    c: vec3<f32>,
+    // Rows of M = K [a b c].
+    m0: vec3<f32>,
+    m1: vec3<f32>,
+    m2: vec3<f32>,
+    // +1 when the surfel normal already faces the camera, else −1.
+    normal_sign: f32,
+}
+
+fn geometry(r: Raw, prm: Params) -> Geometry {
+    var geo: Geometry;
+    let p = r.pos_op.xyz;
+    geo.q_norm = length(r.quat);
+    geo.q_unit = r.quat / geo.q_norm;
+    geo.rot = rotation_from_unit(geo.q_unit);
+    geo.scale = exp(r.scale_rough_ior.xy);
+    let cam_rot = mat3x3<f32>(prm.rot0.xyz, prm.rot1.xyz, prm.rot2.xyz);
+    geo.a = geo.scale.x * (cam_rot * geo.rot[0]);
+    geo.b = geo.scale.y * (cam_rot * geo.rot[1]);
+    geo.c = cam_rot * p + prm.trans.xyz;
+    geo.m2 = vec3<f32>(geo.a.z, geo.b.z, geo.c.z);
+    geo.m0 = prm.intr.x * vec3<f32>(geo.a.x, geo.b.x, geo.c.x) + prm.intr.z * geo.m2;
+    geo.m1 = prm.intr.y * vec3<f32>(geo.a.y, geo.b.y, geo.c.y) + prm.intr.w * geo.m2;
+    geo.normal_sign = select(1.0, -1.0, dot(geo.rot[2], p - prm.origin.xyz) > 0.0);
+    return geo;
+}
+
+// Index of a 1-D invocation laid out on a 2-D grid of 256-thread workgroups (a dispatch has at
+// most 65535 workgroups per dimension).
+fn linear_index(gid: vec3<u32>, nwg: vec3<u32>) -> u32 {
+    return gid.x + gid.y * nwg.x * 256u;
+}

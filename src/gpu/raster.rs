@@ -1,0 +1,939 @@
+//! [`GpuBackend`]: the rasterizer's forward and backward passes as wgpu compute kernels.
+//!
+//! Forward (each stage in a `tracing` span): `upload` (raw surfels as f32), `project` (kernel,
+//! one thread per surfel, then the per-surfel tile counts are read back), `scan` (host exclusive
+//! scan into entry offsets), `bin_sort` (kernels: emit (tile, depth, surfel) entries, pad to a power
+//! of two, bitonic sort, per-tile ranges), `rasterize` (kernel, one 16×16 workgroup per tile, one
+//! thread per pixel), `readback` (G-buffers and evaluation counts) and `depth_normal` (host, f64).
+//! The tiles are always 16×16 on the device whatever `RasterSettings::tile_size` says: the output
+//! does not depend on the tile size.
+//!
+//! Backward: the host chains the depth-normal gradient into the depth gradient (f64) and uploads
+//! the per-pixel upstream gradient; `rasterize_backward` (one thread per pixel) accumulates into
+//! 22 per-surfel sums with float atomics (or a CAS loop, [`AtomicsMode`]); `project_backward`
+//! (one thread per surfel) chains them to raw parameters and |dL/dμ|; the result is read back.
+//! Buffers the backward pass needs (projections, sorted entries, tile ranges, G-buffers, final
+//! transmittance, contributor counts) stay on the device in the forward result.
+//!
+//! Limits: every buffer is checked against the device's `max_storage_buffer_binding_size` and
+//! `max_buffer_size` before it is created, and a scene that does not fit fails with
+//! [`RasterError::Gpu`] naming the buffer. The kernels use no workgroup memory.
+//!
+//! Threading: calls on one [`GpuBackend`] are serialized (a mutex); the host-side conversions
+//! are single-threaded.
+
+use bytemuck::{Pod, Zeroable};
+use tracing::info_span;
+use wgpu::util::DeviceExt;
+
+use super::{GpuContext, GpuError};
+use crate::camera::Camera;
+use crate::raster::{
+    depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads, GBuffers,
+    RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
+};
+use crate::surfels::{SurfelGrads, Surfels};
+
+/// Tile edge of the device kernels (`TILE` in shaders/common.wgsl).
+const TILE: u32 = 16;
+/// Threads per workgroup of the 1-D kernels.
+const GROUP: u32 = 256;
+/// Per-surfel gradient accumulators (`NUM_ACC`).
+const NUM_ACC: u64 = 22;
+/// Per-pixel forward outputs (`NUM_OUT`).
+const NUM_OUT: usize = 10;
+/// Per-surfel raw gradient outputs of `project_backward`.
+const NUM_RAW_GRAD: usize = 16;
+
+const COMMON: &str = include_str!("../../shaders/common.wgsl");
+const PROJECT: &str = include_str!("../../shaders/project.wgsl");
+const BIN: &str = include_str!("../../shaders/bin.wgsl");
+const SORT: &str = include_str!("../../shaders/sort.wgsl");
+const RASTERIZE: &str = include_str!("../../shaders/rasterize.wgsl");
+const RASTERIZE_BACKWARD: &str = include_str!("../../shaders/rasterize_backward.wgsl");
+const ATOMIC_FLOAT: &str = include_str!("../../shaders/atomic_float.wgsl");
+const ATOMIC_CAS: &str = include_str!("../../shaders/atomic_cas.wgsl");
+const PROJECT_BACKWARD: &str = include_str!("../../shaders/project_backward.wgsl");
+
+/// How the backward pass adds into the per-surfel gradient sums.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AtomicsMode {
+    /// Native `atomicAdd` on `atomic<f32>` (`SHADER_FLOAT32_ATOMIC`).
+    Float,
+    /// Compare-and-swap loop on the f32 bit pattern in an `atomic<u32>`.
+    CompareExchange,
+}
+
+/// Options of [`GpuBackend::with_options`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct GpuOptions {
+    /// Use the compare-and-swap path even where float atomics exist (to test it).
+    pub force_compare_exchange: bool,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct ParamsGpu {
+    rot: [[f32; 4]; 3],
+    trans: [f32; 4],
+    origin: [f32; 4],
+    intr: [f32; 4],
+    dims: [u32; 4],
+    counts: [u32; 4],
+    thr0: [f32; 4],
+    thr1: [f32; 4],
+}
+
+impl ParamsGpu {
+    fn new(camera: &Camera, settings: &RasterSettings, surfels: u32) -> Self {
+        let (rot, trans) = camera.world_to_camera_opencv();
+        let v4 = |v: glam::DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
+        let sigma = settings.lowpass_sigma_px;
+        let lowpass = sigma > 0.0;
+        ParamsGpu {
+            rot: [v4(rot.x_axis), v4(rot.y_axis), v4(rot.z_axis)],
+            trans: v4(trans),
+            origin: v4(camera.origin()),
+            intr: [
+                camera.fx as f32,
+                camera.fy as f32,
+                camera.cx as f32,
+                camera.cy as f32,
+            ],
+            dims: [
+                camera.width,
+                camera.height,
+                camera.width.div_ceil(TILE),
+                camera.height.div_ceil(TILE),
+            ],
+            counts: [surfels, 0, 0, lowpass as u32],
+            thr0: [
+                settings.near as f32,
+                settings.alpha_min as f32,
+                settings.alpha_max as f32,
+                settings.transmittance_min as f32,
+            ],
+            thr1: [
+                sigma as f32,
+                if lowpass {
+                    (1.0 / (sigma * sigma)) as f32
+                } else {
+                    0.0
+                },
+                settings.normalize_alpha_min as f32,
+                0.0,
+            ],
+        }
+    }
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct RawGpu {
+    pos_op: [f32; 4],
+    quat: [f32; 4],
+    scale_rough_ior: [f32; 4],
+    albedo: [f32; 4],
+}
+
+/// Bytes of one `Proj` (7 × vec4).
+const PROJ_BYTES: u64 = 112;
+/// Bytes of one sort entry (vec4<u32>).
+const ENTRY_BYTES: u64 = 16;
+/// Smallest buffer: a binding must hold at least one element of its array (the largest is a `Proj`).
+const MIN_BINDING_BYTES: u64 = PROJ_BYTES;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct StageGpu {
+    k: u32,
+    j: u32,
+    pairs: u32,
+    unused: u32,
+}
+
+struct Pipelines {
+    project: wgpu::ComputePipeline,
+    emit: wgpu::ComputePipeline,
+    pad: wgpu::ComputePipeline,
+    tile_ranges: wgpu::ComputePipeline,
+    bitonic: wgpu::ComputePipeline,
+    rasterize: wgpu::ComputePipeline,
+    rasterize_backward: wgpu::ComputePipeline,
+    project_backward: wgpu::ComputePipeline,
+}
+
+/// The wgpu rasterizer backend.
+pub struct GpuBackend {
+    ctx: GpuContext,
+    pipelines: Pipelines,
+    atomics: AtomicsMode,
+    /// Serializes forward and backward calls: wgpu's error scopes are one stack per device, so
+    /// two threads inside [`GpuBackend::scoped`] at once would pop each other's scopes.
+    exclusive: std::sync::Mutex<()>,
+}
+
+/// What the forward pass keeps (on the device) for the backward pass.
+struct Saved {
+    num_surfels: usize,
+    camera: Camera,
+    settings: RasterSettings,
+    params: wgpu::Buffer,
+    raw: wgpu::Buffer,
+    proj: wgpu::Buffer,
+    entries: wgpu::Buffer,
+    ranges: wgpu::Buffer,
+    gbuf: wgpu::Buffer,
+    final_t: wgpu::Buffer,
+    contrib: wgpu::Buffer,
+}
+
+fn gpu_err(e: impl std::fmt::Display) -> RasterError {
+    RasterError::Gpu(e.to_string())
+}
+
+impl GpuBackend {
+    /// Compiles the kernels on `ctx`'s device; float atomics where the device has them.
+    pub fn new(ctx: GpuContext) -> Result<Self, GpuError> {
+        Self::with_options(ctx, GpuOptions::default())
+    }
+
+    pub fn with_options(ctx: GpuContext, options: GpuOptions) -> Result<Self, GpuError> {
+        let atomics = if ctx.has_float_atomics() && !options.force_compare_exchange {
+            AtomicsMode::Float
+        } else {
+            AtomicsMode::CompareExchange
+        };
+        let device = &ctx.device;
+        device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let pipeline = |label: &str, sources: &[&str], entry: &str| {
+            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(label),
+                source: wgpu::ShaderSource::Wgsl(sources.concat().into()),
+            });
+            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(label),
+                layout: None,
+                module: &module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+        };
+        let atomic_src = match atomics {
+            AtomicsMode::Float => ATOMIC_FLOAT,
+            AtomicsMode::CompareExchange => ATOMIC_CAS,
+        };
+        let pipelines = Pipelines {
+            project: pipeline("project", &[COMMON, PROJECT], "project"),
+            emit: pipeline("emit", &[COMMON, BIN], "emit"),
+            pad: pipeline("pad", &[COMMON, BIN], "pad"),
+            tile_ranges: pipeline("tile_ranges", &[COMMON, BIN], "tile_ranges"),
+            bitonic: pipeline("bitonic_step", &[COMMON, SORT], "bitonic_step"),
+            rasterize: pipeline("rasterize", &[COMMON, RASTERIZE], "rasterize"),
+            rasterize_backward: pipeline(
+                "rasterize_backward",
+                &[COMMON, RASTERIZE_BACKWARD, atomic_src],
+                "rasterize_backward",
+            ),
+            project_backward: pipeline(
+                "project_backward",
+                &[COMMON, PROJECT_BACKWARD],
+                "project_backward",
+            ),
+        };
+        if let Some(e) = pollster::block_on(device.pop_error_scope()) {
+            return Err(GpuError::Shader {
+                adapter: ctx.adapter_summary().name.clone(),
+                message: e.to_string(),
+            });
+        }
+        Ok(GpuBackend {
+            ctx,
+            pipelines,
+            atomics,
+            exclusive: std::sync::Mutex::new(()),
+        })
+    }
+
+    pub fn context(&self) -> &GpuContext {
+        &self.ctx
+    }
+
+    pub fn atomics(&self) -> AtomicsMode {
+        self.atomics
+    }
+
+    fn device(&self) -> &wgpu::Device {
+        &self.ctx.device
+    }
+
+    /// Fails with a message naming the buffer when `bytes` exceeds the device's limits.
+    fn check_size(&self, name: &str, bytes: u64) -> Result<(), RasterError> {
+        let limits = self.device().limits();
+        let limit = u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
+        if bytes > limit {
+            return Err(RasterError::Gpu(format!(
+                "buffer `{name}` needs {bytes} bytes, more than the device allows \
+                 ({limit} bytes, max_storage_buffer_binding_size); use fewer surfels, a smaller \
+                 image or `--backend cpu`"
+            )));
+        }
+        Ok(())
+    }
+
+    fn storage(&self, name: &str, bytes: u64, extra: wgpu::BufferUsages) -> wgpu::Buffer {
+        self.device().create_buffer(&wgpu::BufferDescriptor {
+            label: Some(name),
+            size: bytes.max(MIN_BINDING_BYTES).next_multiple_of(4),
+            usage: wgpu::BufferUsages::STORAGE | extra,
+            mapped_at_creation: false,
+        })
+    }
+
+    fn storage_init(&self, name: &str, contents: &[u8]) -> wgpu::Buffer {
+        let mut padded;
+        let data = if (contents.len() as u64) < MIN_BINDING_BYTES {
+            padded = contents.to_vec();
+            padded.resize(MIN_BINDING_BYTES as usize, 0);
+            &padded[..]
+        } else {
+            contents
+        };
+        self.device()
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(name),
+                contents: data,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            })
+    }
+
+    fn bind(
+        &self,
+        pipeline: &wgpu::ComputePipeline,
+        buffers: &[(u32, &wgpu::Buffer)],
+    ) -> wgpu::BindGroup {
+        let entries: Vec<wgpu::BindGroupEntry> = buffers
+            .iter()
+            .map(|&(binding, buffer)| wgpu::BindGroupEntry {
+                binding,
+                resource: buffer.as_entire_binding(),
+            })
+            .collect();
+        self.device().create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &entries,
+        })
+    }
+
+    /// Workgroup grid for `threads` invocations of a 256-thread 1-D kernel (`linear_index`).
+    fn grid(&self, threads: u64) -> Result<(u32, u32), RasterError> {
+        let max = u64::from(self.device().limits().max_compute_workgroups_per_dimension);
+        let groups = threads.div_ceil(u64::from(GROUP));
+        let x = groups.min(max);
+        let y = groups.div_ceil(x.max(1));
+        if y > max {
+            return Err(RasterError::Gpu(format!(
+                "{threads} threads exceed the device's dispatch limit"
+            )));
+        }
+        Ok((x as u32, y as u32))
+    }
+
+    fn dispatch_1d(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        label: &str,
+        pipeline: &wgpu::ComputePipeline,
+        group: &wgpu::BindGroup,
+        threads: u64,
+    ) -> Result<(), RasterError> {
+        if threads == 0 {
+            return Ok(());
+        }
+        let (x, y) = self.grid(threads)?;
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some(label),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, group, &[]);
+        pass.dispatch_workgroups(x, y, 1);
+        Ok(())
+    }
+
+    fn dispatch_tiles(
+        encoder: &mut wgpu::CommandEncoder,
+        label: &str,
+        pipeline: &wgpu::ComputePipeline,
+        group: &wgpu::BindGroup,
+        camera: &Camera,
+    ) {
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some(label),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, group, &[]);
+        pass.dispatch_workgroups(camera.width.div_ceil(TILE), camera.height.div_ceil(TILE), 1);
+    }
+
+    /// Copies each `(buffer, bytes)` into a mappable buffer after `encoder`'s work, submits, waits
+    /// and returns the bytes.
+    fn submit_and_read(
+        &self,
+        mut encoder: wgpu::CommandEncoder,
+        sources: &[(&wgpu::Buffer, u64)],
+    ) -> Result<Vec<Vec<u8>>, RasterError> {
+        let staging: Vec<(wgpu::Buffer, u64)> = sources
+            .iter()
+            .map(|&(src, bytes)| {
+                let size = bytes.max(4).next_multiple_of(4);
+                let dst = self.device().create_buffer(&wgpu::BufferDescriptor {
+                    label: Some("readback"),
+                    size,
+                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                });
+                if bytes > 0 {
+                    encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size);
+                }
+                (dst, bytes)
+            })
+            .collect();
+        self.ctx.queue.submit([encoder.finish()]);
+        let (tx, rx) = std::sync::mpsc::channel();
+        for (i, (buf, _)) in staging.iter().enumerate() {
+            let tx = tx.clone();
+            buf.slice(..)
+                .map_async(wgpu::MapMode::Read, move |r| drop(tx.send((i, r))));
+        }
+        drop(tx);
+        self.device().poll(wgpu::PollType::Wait).map_err(gpu_err)?;
+        for (_, r) in rx.iter() {
+            r.map_err(|e| RasterError::Gpu(format!("reading back a buffer failed: {e}")))?;
+        }
+        Ok(staging
+            .iter()
+            .map(|(buf, bytes)| {
+                let data = buf.slice(..).get_mapped_range()[..*bytes as usize].to_vec();
+                buf.unmap();
+                data
+            })
+            .collect())
+    }
+
+    /// Runs `f` inside out-of-memory and validation error scopes; a device error becomes a
+    /// [`RasterError::Gpu`] naming `stage`.
+    fn scoped<T>(
+        &self,
+        stage: &str,
+        f: impl FnOnce() -> Result<T, RasterError>,
+    ) -> Result<T, RasterError> {
+        // A panic inside another call leaves no state behind that this one depends on.
+        let _exclusive = self
+            .exclusive
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let device = self.device();
+        device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let result = f();
+        let validation = pollster::block_on(device.pop_error_scope());
+        let oom = pollster::block_on(device.pop_error_scope());
+        if let Some(e) = oom.or(validation) {
+            return Err(RasterError::Gpu(format!("{stage}: {e}")));
+        }
+        result
+    }
+
+    fn forward_impl(
+        &self,
+        surfels: &Surfels,
+        camera: &Camera,
+        settings: &RasterSettings,
+    ) -> Result<Rasterized, RasterError> {
+        let device = self.device();
+        let queue = &self.ctx.queue;
+        let n = surfels.len();
+        let n32 = u32::try_from(n)
+            .map_err(|_| RasterError::Gpu(format!("{n} surfels exceed the u32 index range")))?;
+        let (w, h) = (camera.width as usize, camera.height as usize);
+        let pixels = (w * h) as u64;
+        let tiles =
+            u64::from(camera.width.div_ceil(TILE)) * u64::from(camera.height.div_ceil(TILE));
+        for (name, bytes) in [
+            ("raw surfels", n as u64 * 64),
+            ("projected surfels", n as u64 * PROJ_BYTES),
+            ("g-buffers", pixels * NUM_OUT as u64 * 4),
+            ("gradient sums", n as u64 * NUM_ACC * 4),
+        ] {
+            self.check_size(name, bytes)?;
+        }
+
+        let mut params = ParamsGpu::new(camera, settings, n32);
+        let params_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("params"),
+            contents: bytemuck::bytes_of(&params),
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        });
+        let raw_buf = {
+            let _span = info_span!("upload", surfels = n).entered();
+            let f = |v: f64| v as f32;
+            let raw: Vec<RawGpu> = (0..n)
+                .map(|i| {
+                    let p = surfels.position[i];
+                    let q = surfels.rotation[i];
+                    let s = surfels.log_scale[i];
+                    let a = surfels.albedo[i];
+                    RawGpu {
+                        pos_op: [f(p[0]), f(p[1]), f(p[2]), f(surfels.opacity[i])],
+                        quat: q.map(f),
+                        scale_rough_ior: [
+                            f(s[0]),
+                            f(s[1]),
+                            f(surfels.roughness[i]),
+                            f(surfels.ior[i]),
+                        ],
+                        albedo: [f(a[0]), f(a[1]), f(a[2]), 0.0],
+                    }
+                })
+                .collect();
+            self.storage_init("raw surfels", bytemuck::cast_slice(&raw))
+        };
+
+        // Projection and tile counts.
+        let proj_buf = self.storage(
+            "projected surfels",
+            n as u64 * PROJ_BYTES,
+            wgpu::BufferUsages::empty(),
+        );
+        let counts_buf = self.storage("tile counts", n as u64 * 4, wgpu::BufferUsages::COPY_SRC);
+        let counts: Vec<u32> = {
+            let _span = info_span!("project", surfels = n).entered();
+            let mut encoder = device.create_command_encoder(&Default::default());
+            let group = self.bind(
+                &self.pipelines.project,
+                &[
+                    (0, &params_buf),
+                    (1, &raw_buf),
+                    (2, &proj_buf),
+                    (3, &counts_buf),
+                ],
+            );
+            self.dispatch_1d(
+                &mut encoder,
+                "project",
+                &self.pipelines.project,
+                &group,
+                n as u64,
+            )?;
+            let out = self.submit_and_read(encoder, &[(&counts_buf, n as u64 * 4)])?;
+            bytemuck::pod_collect_to_vec(&out[0])
+        };
+
+        // Host exclusive scan of the tile counts.
+        let (offsets, total, visible) = {
+            let _span = info_span!("scan").entered();
+            let mut offsets = Vec::with_capacity(n);
+            let mut total = 0u64;
+            let mut visible = 0usize;
+            for &c in &counts {
+                offsets.push(total as u32);
+                total += u64::from(c);
+                visible += (c > 0) as usize;
+                if total > u64::from(u32::MAX / 2) {
+                    return Err(RasterError::Gpu(format!(
+                        "more than {} (tile, surfel) entries",
+                        u32::MAX / 2
+                    )));
+                }
+            }
+            (offsets, total, visible)
+        };
+        let padded = if total == 0 {
+            0
+        } else {
+            total.next_power_of_two()
+        };
+        self.check_size("tile entries", padded * ENTRY_BYTES)?;
+        params.counts[1] = total as u32;
+        params.counts[2] = padded as u32;
+        queue.write_buffer(&params_buf, 0, bytemuck::bytes_of(&params));
+
+        let offsets_buf = self.storage_init("entry offsets", bytemuck::cast_slice(&offsets));
+        let entries_buf = self.storage(
+            "tile entries",
+            padded * ENTRY_BYTES,
+            wgpu::BufferUsages::empty(),
+        );
+        let ranges_buf = self.storage("tile ranges", tiles * 8, wgpu::BufferUsages::COPY_DST);
+        let gbuf_buf = self.storage(
+            "g-buffers",
+            pixels * NUM_OUT as u64 * 4,
+            wgpu::BufferUsages::COPY_SRC,
+        );
+        let final_t_buf = self.storage(
+            "final transmittance",
+            pixels * 4,
+            wgpu::BufferUsages::empty(),
+        );
+        let contrib_buf = self.storage("contributors", pixels * 4, wgpu::BufferUsages::empty());
+        let evals_buf = self.storage("evaluations", pixels * 4, wgpu::BufferUsages::COPY_SRC);
+
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let _span = info_span!("bin_sort", entries = total).entered();
+            let group = self.bind(
+                &self.pipelines.emit,
+                &[
+                    (0, &params_buf),
+                    (1, &proj_buf),
+                    (2, &offsets_buf),
+                    (3, &entries_buf),
+                ],
+            );
+            self.dispatch_1d(&mut encoder, "emit", &self.pipelines.emit, &group, n as u64)?;
+            let group = self.bind(&self.pipelines.pad, &[(0, &params_buf), (3, &entries_buf)]);
+            self.dispatch_1d(
+                &mut encoder,
+                "pad",
+                &self.pipelines.pad,
+                &group,
+                padded - total,
+            )?;
+            self.encode_sort(&mut encoder, &entries_buf, padded)?;
+            encoder.clear_buffer(&ranges_buf, 0, None);
+            let group = self.bind(
+                &self.pipelines.tile_ranges,
+                &[(0, &params_buf), (3, &entries_buf), (4, &ranges_buf)],
+            );
+            self.dispatch_1d(
+                &mut encoder,
+                "tile_ranges",
+                &self.pipelines.tile_ranges,
+                &group,
+                total,
+            )?;
+        }
+        let out = {
+            let _span = info_span!("rasterize", entries = total).entered();
+            let group = self.bind(
+                &self.pipelines.rasterize,
+                &[
+                    (0, &params_buf),
+                    (1, &entries_buf),
+                    (2, &ranges_buf),
+                    (3, &proj_buf),
+                    (4, &gbuf_buf),
+                    (5, &final_t_buf),
+                    (6, &contrib_buf),
+                    (7, &evals_buf),
+                ],
+            );
+            Self::dispatch_tiles(
+                &mut encoder,
+                "rasterize",
+                &self.pipelines.rasterize,
+                &group,
+                camera,
+            );
+            self.submit_and_read(
+                encoder,
+                &[
+                    (&gbuf_buf, pixels * NUM_OUT as u64 * 4),
+                    (&evals_buf, pixels * 4),
+                ],
+            )?
+        };
+
+        let _span = info_span!("readback").entered();
+        let g: Vec<f32> = bytemuck::pod_collect_to_vec(&out[0]);
+        let evals: Vec<u32> = bytemuck::pod_collect_to_vec(&out[1]);
+        let mut gb = GBuffers::zeros(w, h);
+        for (k, px) in g.chunks_exact(NUM_OUT).enumerate() {
+            let v = |c: usize| f64::from(px[c]);
+            gb.alpha[k] = v(0);
+            gb.depth[k] = v(1);
+            gb.normal[k] = [v(2), v(3), v(4)];
+            gb.albedo[k] = [v(5), v(6), v(7)];
+            gb.roughness[k] = v(8);
+            gb.ior[k] = v(9);
+        }
+        drop(_span);
+        {
+            let _span = info_span!("depth_normal").entered();
+            gb.depth_normal =
+                depth_normals(camera, &gb.depth, &gb.alpha, settings.normalize_alpha_min);
+        }
+        let stats = RasterStats {
+            visible_surfels: visible,
+            tile_entries: total as usize,
+            pixel_evaluations: evals.iter().map(|&e| u64::from(e)).sum(),
+        };
+        Ok(Rasterized {
+            gbuffers: gb,
+            stats,
+            saved: Box::new(Saved {
+                num_surfels: n,
+                camera: *camera,
+                settings: *settings,
+                params: params_buf,
+                raw: raw_buf,
+                proj: proj_buf,
+                entries: entries_buf,
+                ranges: ranges_buf,
+                gbuf: gbuf_buf,
+                final_t: final_t_buf,
+                contrib: contrib_buf,
+            }),
+        })
+    }
+
+    /// Encodes the bitonic sort of `padded` (a power of two) entries: one dispatch per (k, j)
+    /// stage, each reading its own 256-byte-aligned slice of a uniform buffer.
+    fn encode_sort(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        entries: &wgpu::Buffer,
+        padded: u64,
+    ) -> Result<(), RasterError> {
+        if padded < 2 {
+            return Ok(());
+        }
+        let mut stages = Vec::new();
+        let mut k = 2u64;
+        while k <= padded {
+            let mut j = k / 2;
+            while j >= 1 {
+                stages.push(StageGpu {
+                    k: k as u32,
+                    j: j as u32,
+                    pairs: (padded / 2) as u32,
+                    unused: 0,
+                });
+                j /= 2;
+            }
+            k *= 2;
+        }
+        let stride = u64::from(self.device().limits().min_uniform_buffer_offset_alignment).max(16);
+        let mut bytes = vec![0u8; stages.len() * stride as usize];
+        for (i, s) in stages.iter().enumerate() {
+            let at = i * stride as usize;
+            bytes[at..at + 16].copy_from_slice(bytemuck::bytes_of(s));
+        }
+        let stage_buf = self
+            .device()
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("sort stages"),
+                contents: &bytes,
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
+        let layout = self.pipelines.bitonic.get_bind_group_layout(0);
+        let (x, y) = self.grid(padded / 2)?;
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("bitonic sort"),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(&self.pipelines.bitonic);
+        for i in 0..stages.len() {
+            let group = self.device().create_bind_group(&wgpu::BindGroupDescriptor {
+                label: None,
+                layout: &layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                            buffer: &stage_buf,
+                            offset: i as u64 * stride,
+                            size: wgpu::BufferSize::new(16),
+                        }),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: entries.as_entire_binding(),
+                    },
+                ],
+            });
+            pass.set_bind_group(0, &group, &[]);
+            pass.dispatch_workgroups(x, y, 1);
+        }
+        Ok(())
+    }
+
+    fn backward_impl(
+        &self,
+        saved: &Saved,
+        camera: &Camera,
+        settings: &RasterSettings,
+        gb: &GBuffers,
+        upstream: &GBufferGrads,
+    ) -> Result<RasterGrads, RasterError> {
+        let n = saved.num_surfels;
+        let (w, h) = (gb.width, gb.height);
+        let eps = settings.normalize_alpha_min;
+        // Upstream on the normalized depth, including the depth-normal chain (host, f64).
+        let depth_grad: Vec<f64> = {
+            let _span = info_span!("depth_normal_backward").entered();
+            let mut g =
+                depth_normals_backward(camera, &gb.depth, &gb.alpha, eps, &upstream.depth_normal);
+            for (a, b) in g.iter_mut().zip(&upstream.depth) {
+                *a += b;
+            }
+            g
+        };
+        let up: Vec<f32> = (0..w * h)
+            .flat_map(|k| {
+                let n3 = upstream.normal[k];
+                let a3 = upstream.albedo[k];
+                [
+                    upstream.alpha[k],
+                    depth_grad[k],
+                    n3[0],
+                    n3[1],
+                    n3[2],
+                    a3[0],
+                    a3[1],
+                    a3[2],
+                    upstream.roughness[k],
+                    upstream.ior[k],
+                ]
+                .map(|v| v as f32)
+            })
+            .collect();
+        let up_buf = self.storage_init("upstream gradient", bytemuck::cast_slice(&up));
+        // Newly created buffers are zero-initialized.
+        let acc_buf = self.storage(
+            "gradient sums",
+            n as u64 * NUM_ACC * 4,
+            wgpu::BufferUsages::empty(),
+        );
+        let raw_grad_bytes = n as u64 * NUM_RAW_GRAD as u64 * 4;
+        let out_buf = self.storage(
+            "raw gradients",
+            raw_grad_bytes,
+            wgpu::BufferUsages::COPY_SRC,
+        );
+
+        let mut encoder = self.device().create_command_encoder(&Default::default());
+        {
+            let _span = info_span!("rasterize_backward").entered();
+            let group = self.bind(
+                &self.pipelines.rasterize_backward,
+                &[
+                    (0, &saved.params),
+                    (1, &saved.entries),
+                    (2, &saved.ranges),
+                    (3, &saved.proj),
+                    (4, &saved.gbuf),
+                    (5, &up_buf),
+                    (6, &saved.final_t),
+                    (7, &saved.contrib),
+                    (8, &acc_buf),
+                ],
+            );
+            Self::dispatch_tiles(
+                &mut encoder,
+                "rasterize_backward",
+                &self.pipelines.rasterize_backward,
+                &group,
+                camera,
+            );
+        }
+        let out = {
+            let _span = info_span!("project_backward").entered();
+            let group = self.bind(
+                &self.pipelines.project_backward,
+                &[
+                    (0, &saved.params),
+                    (1, &saved.raw),
+                    (2, &saved.proj),
+                    (3, &acc_buf),
+                    (4, &out_buf),
+                ],
+            );
+            self.dispatch_1d(
+                &mut encoder,
+                "project_backward",
+                &self.pipelines.project_backward,
+                &group,
+                n as u64,
+            )?;
+            self.submit_and_read(encoder, &[(&out_buf, raw_grad_bytes)])?
+        };
+        let vals: Vec<f32> = bytemuck::pod_collect_to_vec(&out[0]);
+        let mut grads = SurfelGrads::zeros(n);
+        let mut mean2d = vec![0.0; n];
+        for (i, g) in vals.chunks_exact(NUM_RAW_GRAD).enumerate() {
+            let v = |c: usize| f64::from(g[c]);
+            grads.position[i] = [v(0), v(1), v(2)];
+            grads.log_scale[i] = [v(3), v(4)];
+            grads.rotation[i] = [v(5), v(6), v(7), v(8)];
+            grads.opacity[i] = v(9);
+            grads.albedo[i] = [v(10), v(11), v(12)];
+            grads.roughness[i] = v(13);
+            grads.ior[i] = v(14);
+            mean2d[i] = v(15);
+        }
+        Ok(RasterGrads {
+            surfels: grads,
+            mean2d_grad_norm: mean2d,
+        })
+    }
+}
+
+impl Backend for GpuBackend {
+    fn name(&self) -> &'static str {
+        "gpu"
+    }
+
+    fn description(&self) -> String {
+        format!(
+            "gpu on {}, {:?} atomics",
+            self.ctx.adapter_summary(),
+            self.atomics
+        )
+    }
+
+    fn forward(
+        &self,
+        surfels: &Surfels,
+        camera: &Camera,
+        settings: &RasterSettings,
+    ) -> Result<Rasterized, RasterError> {
+        validate_inputs(surfels, camera, settings)?;
+        let _span = info_span!("raster_forward", backend = "gpu").entered();
+        self.scoped("forward", || self.forward_impl(surfels, camera, settings))
+    }
+
+    fn backward(
+        &self,
+        surfels: &Surfels,
+        camera: &Camera,
+        settings: &RasterSettings,
+        forward: &Rasterized,
+        upstream: &GBufferGrads,
+    ) -> Result<RasterGrads, RasterError> {
+        validate_inputs(surfels, camera, settings)?;
+        let saved = forward
+            .saved
+            .downcast_ref::<Saved>()
+            .ok_or(RasterError::ForwardMismatch("not a gpu forward result"))?;
+        if saved.num_surfels != surfels.len() {
+            return Err(RasterError::ForwardMismatch("surfel count differs"));
+        }
+        if saved.camera != *camera {
+            return Err(RasterError::ForwardMismatch("camera differs"));
+        }
+        if saved.settings != *settings {
+            return Err(RasterError::ForwardMismatch("settings differ"));
+        }
+        let gb = &forward.gbuffers;
+        upstream.check_size(gb.width, gb.height)?;
+        let _span = info_span!("raster_backward", backend = "gpu").entered();
+        self.scoped("backward", || {
+            self.backward_impl(saved, camera, settings, gb, upstream)
+        })
+    }
+}

@@ -392,12 +392,13 @@ impl PrefilterPlan {
         self.grids.len()
     }
 
-    fn irradiance_grid(&self) -> &CubeGrid {
+    /// Texel geometry of the irradiance map(s): the coarsest level.
+    pub fn irradiance_grid(&self) -> &CubeGrid {
         &self.grids[self.grids.len() - 1]
     }
 
     /// Interpolation of the irradiance maps at an IoR: (map a, map b, weight of b, d weight/d ior).
-    fn irradiance_blend(&self, ior: f64) -> (usize, usize, f64, f64) {
+    pub fn irradiance_blend(&self, ior: f64) -> (usize, usize, f64, f64) {
         let iors = &self.irradiance_iors;
         if iors.len() < 2 {
             return (0, 0, 0.0, 0.0);
@@ -648,7 +649,7 @@ impl PreparedEnv {
     }
 
     /// Level pair and blend weight for a roughness: (l0, weight of l0 + 1, d weight / d r).
-    fn level_blend(&self, roughness: f64) -> (usize, f64, f64) {
+    pub fn level_blend(&self, roughness: f64) -> (usize, f64, f64) {
         let n = self.plan.num_levels();
         let (level, dlevel) = self.plan.spec.level_of(roughness, n);
         let l0 = (level.floor() as usize).min(n - 2);

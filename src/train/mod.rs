@@ -475,6 +475,17 @@ impl Run<'_> {
         Ok(())
     }
 
+    /// Cameras of the training views (saved with the model; the mesh is extracted from them).
+    fn train_cameras(&self) -> Vec<(String, crate::camera::Camera)> {
+        self.targets
+            .iter()
+            .map(|t| {
+                let view = &self.capture.views[t.view];
+                (view.name.clone(), view.camera)
+            })
+            .collect()
+    }
+
     fn scene<'s>(&'s self, state: &'s TrainState, env: &'s PreparedEnv) -> Scene<'s> {
         Scene {
             surfels: &state.surfels,
@@ -526,6 +537,7 @@ impl Run<'_> {
             },
             surfels: state.surfels.clone(),
             envmap: state.envmap.clone(),
+            train_cameras: self.train_cameras(),
         };
         WorldUp::from_vector(up.to_array())?;
         model.save(self.model_dir)?;

@@ -28,10 +28,13 @@ use crate::capture::Capture;
 use crate::checkpoint::CheckpointError;
 use crate::config::{ConfigError, Mode, TrainConfig};
 use crate::densify::{self, DensifyRules, DensifyStats};
-use crate::envmap::{EnvMapError, PrefilterPlan, PreparedEnv, WorldUp};
+use crate::envmap::{EnvMapError, LightProbe, PrefilterPlan, PreparedEnv, WorldUp};
 use crate::evaluate::{self, EvalError};
 use crate::events::{Stage, TrainEvent};
+use crate::gridmap::GridMap;
 use crate::loss::LossWeights;
+use crate::mesh::TriangleMesh;
+use crate::meshing::{self, GRIDMAP_MESH_RESOLUTION};
 use crate::model::{self, Model, ModelError, ModelInfo};
 use crate::optim::{Adam, AdamConfig, LearningRates, OptimError, ENVMAP_GROUP, POLARIZER_GROUP};
 use crate::raster::{Backend, RasterError, RasterSettings};
@@ -134,6 +137,17 @@ fn fingerprint(config: &TrainConfig) -> String {
 struct Pending {
     /// Summed environment gradient and the number of steps it covers.
     env: Option<(crate::envmap::EnvGrad, u32)>,
+}
+
+/// GridMap of a run (METHOD.md §5): the mesh and the probes, rebuilt from the training state on
+/// their schedules and never checkpointed. `current` is false at the start of a session and right
+/// after a checkpoint, so an uninterrupted run and a resumed one rebuild at the same iteration
+/// from the same state (bit-exact resume).
+#[derive(Default)]
+struct Occlusion {
+    mesh: Option<TriangleMesh>,
+    grid: Option<GridMap>,
+    current: bool,
 }
 
 /// Everything fixed during a run.
@@ -273,6 +287,7 @@ impl Run<'_> {
         };
         let mut env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
         let mut pending = Pending::default();
+        let mut occlusion = Occlusion::default();
         let report_every = (self.config.iterations / 300).clamp(1, 25);
         let iterations = self.config.iterations;
         while state.iteration < iterations {
@@ -290,19 +305,31 @@ impl Run<'_> {
                 state.polarizer_angles = angles::initialize(self, &state, &env)?;
                 state.angles_initialized = true;
             }
+            if stage == Stage::Polar && self.config.gridmap {
+                let since = it - self.config.polar_stage_start();
+                let due = |interval: u32| interval > 0 && since.is_multiple_of(interval);
+                let remesh = !occlusion.current || due(self.config.mesh_interval);
+                if remesh || due(self.config.gridmap_interval) {
+                    self.rebuild_gridmap(&mut occlusion, &state, &env, remesh);
+                }
+            }
             let mut rng = iteration_rng(self.config.seed, it);
             let target = &self.targets[rng.random_range(0..self.targets.len())];
             let camera = &self.capture.views[target.view].camera;
             let result = step::run(
                 &step_inputs,
                 &state.surfels,
-                &env,
+                self.light(&occlusion, &env, stage),
                 &state.polarizer_angles,
                 camera,
                 target,
                 stage,
             )?;
-            self.apply_gradients(&mut state, &mut env, &mut pending, &result, stage, it)?;
+            if self.apply_gradients(&mut state, &mut env, &mut pending, &result, stage, it)? {
+                if let Some(grid) = &mut occlusion.grid {
+                    grid.set_global(env.clone());
+                }
+            }
             state
                 .densify
                 .add_view(&result.mean2d_grad_norm, result.width, result.height);
@@ -332,7 +359,7 @@ impl Run<'_> {
                 && done.is_multiple_of(self.config.eval_interval)
                 && done < iterations
             {
-                if let Some(psnr) = self.test_psnr(&state, &env)? {
+                if let Some(psnr) = self.test_psnr(&state, self.light(&occlusion, &env, stage))? {
                     reporter.emit(TrainEvent::Evaluated {
                         iteration: done,
                         test_psnr: psnr,
@@ -347,6 +374,7 @@ impl Run<'_> {
                 // the same here, so the uninterrupted run and a resumed one stay bit-identical.
                 self.flush_env(&mut state, &mut env, &mut pending)?;
                 env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+                occlusion = Occlusion::default();
                 state.elapsed_seconds = elapsed();
                 state.save(&checkpoint, &fp)?;
                 reporter.emit(TrainEvent::Checkpoint { iteration: done });
@@ -356,12 +384,20 @@ impl Run<'_> {
         let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
         state.elapsed_seconds = elapsed();
         state.save(&checkpoint, &fp)?;
-        self.finish(&state, &env, reporter)?;
+        // The final evaluation lights the model as rendering it later will: GridMap rebuilt from
+        // the final state.
+        let last_stage = stage_of(iterations.saturating_sub(1), self.config);
+        let mut occlusion = Occlusion::default();
+        if last_stage == Stage::Polar && self.config.gridmap {
+            self.rebuild_gridmap(&mut occlusion, &state, &env, true);
+        }
+        self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)?;
         Ok(TrainOutcome::Finished)
     }
 
     /// One Adam step on every group the stage trains; the environment's gradient is accumulated
-    /// and applied every `envmap_prefilter_interval` steps (see [`Run::flush_env`]).
+    /// and applied every `envmap_prefilter_interval` steps (see [`Run::flush_env`]). Returns
+    /// whether the environment changed.
     fn apply_gradients(
         &self,
         state: &mut TrainState,
@@ -370,7 +406,8 @@ impl Run<'_> {
         result: &step::StepResult,
         stage: Stage,
         it: u32,
-    ) -> Result<(), TrainError> {
+    ) -> Result<bool, TrainError> {
+        let mut env_changed = false;
         let grads = result.surfels.groups();
         for ((name, params), (_, grad)) in state.surfels.groups_mut().into_iter().zip(grads) {
             let frozen = stage == Stage::Geometry && matches!(name, "roughness" | "ior");
@@ -392,7 +429,7 @@ impl Run<'_> {
                 None => pending.env = Some((env_grad.clone(), 1)),
             }
             if (it + 1).is_multiple_of(self.config.envmap_prefilter_interval) {
-                self.flush_env(state, env, pending)?;
+                env_changed = self.flush_env(state, env, pending)?;
             }
         }
         if stage == Stage::Polar && !state.polarizer_angles.is_empty() {
@@ -414,21 +451,22 @@ impl Run<'_> {
                     .insert(name, v.rem_euclid(std::f64::consts::PI));
             }
         }
-        Ok(())
+        Ok(env_changed)
     }
 
     /// Applies the accumulated environment gradient: one Adam step with the mean gradient and the
     /// learning rate scaled by the number of steps it covers (the displacement K single steps
     /// would make), then rebuilds the prefiltered map. Both the transpose of the prefilter and
-    /// the rebuild cost about as much as a whole step without them, hence the batching.
+    /// the rebuild cost about as much as a whole step without them, hence the batching. Returns
+    /// whether there was a gradient to apply.
     fn flush_env(
         &self,
         state: &mut TrainState,
         env: &mut PreparedEnv,
         pending: &mut Pending,
-    ) -> Result<(), TrainError> {
+    ) -> Result<bool, TrainError> {
         let Some((sum, count)) = pending.env.take() else {
-            return Ok(());
+            return Ok(false);
         };
         let scale = 1.0 / f64::from(count);
         let raw_grad: Vec<f64> = env.backward(&sum).iter().map(|g| g * scale).collect();
@@ -439,7 +477,7 @@ impl Run<'_> {
             self.learning_rates.envmap * f64::from(count),
         )?;
         *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-        Ok(())
+        Ok(true)
     }
 
     /// Densify/prune and opacity reset on their schedules (METHOD.md §7).
@@ -486,10 +524,55 @@ impl Run<'_> {
             .collect()
     }
 
-    fn scene<'s>(&'s self, state: &'s TrainState, env: &'s PreparedEnv) -> Scene<'s> {
+    /// Extracts the mesh of the current surfels (with `remesh`, else keeps the last one) and
+    /// rebuilds GridMap's probes under the current environment. A failure (no surface yet, say)
+    /// is logged and leaves the run on the global light until the next scheduled rebuild.
+    fn rebuild_gridmap(
+        &self,
+        occlusion: &mut Occlusion,
+        state: &TrainState,
+        env: &PreparedEnv,
+        remesh: bool,
+    ) {
+        let _span = tracing::info_span!("gridmap_rebuild", iteration = state.iteration).entered();
+        occlusion.current = true;
+        if remesh {
+            let cameras: Vec<_> = self.train_cameras().into_iter().map(|(_, c)| c).collect();
+            occlusion.mesh = meshing::mesh_from_surfels(
+                &state.surfels,
+                &cameras,
+                self.backend.as_ref(),
+                &self.settings,
+                GRIDMAP_MESH_RESOLUTION,
+            )
+            .inspect_err(|e| tracing::warn!("GridMap mesh extraction failed: {e}"))
+            .ok();
+        }
+        occlusion.grid = occlusion.mesh.as_ref().and_then(|mesh| {
+            GridMap::build(mesh, &state.surfels, &state.envmap, env.clone())
+                .inspect_err(|e| tracing::warn!("GridMap build failed: {e}"))
+                .ok()
+        });
+    }
+
+    /// The light of a stage: GridMap over the environment in the PolarDR stage when it is on and
+    /// built, else the global environment.
+    fn light<'s>(
+        &self,
+        occlusion: &'s Occlusion,
+        env: &'s PreparedEnv,
+        stage: Stage,
+    ) -> &'s dyn LightProbe {
+        match &occlusion.grid {
+            Some(grid) if stage == Stage::Polar => grid,
+            _ => env,
+        }
+    }
+
+    fn scene<'s>(&'s self, state: &'s TrainState, light: &'s dyn LightProbe) -> Scene<'s> {
         Scene {
             surfels: &state.surfels,
-            light: env,
+            light,
             lut: self.lut,
             backend: self.backend.as_ref(),
             settings: self.settings,
@@ -497,12 +580,16 @@ impl Run<'_> {
     }
 
     /// Mean test-view S0 PSNR (sRGB 8-bit inside the mask), if the capture has test views.
-    fn test_psnr(&self, state: &TrainState, env: &PreparedEnv) -> Result<Option<f64>, TrainError> {
+    fn test_psnr(
+        &self,
+        state: &TrainState,
+        light: &dyn LightProbe,
+    ) -> Result<Option<f64>, TrainError> {
         if self.capture.test_views().next().is_none() {
             return Ok(None);
         }
         let report = evaluate::evaluate(
-            &self.scene(state, env),
+            &self.scene(state, light),
             self.capture,
             &state.polarizer_angles,
         )?;
@@ -513,7 +600,7 @@ impl Run<'_> {
     fn finish(
         &self,
         state: &TrainState,
-        env: &PreparedEnv,
+        light: &dyn LightProbe,
         reporter: &mut Reporter,
     ) -> Result<(), TrainError> {
         let up = self.capture.world_up;
@@ -552,7 +639,7 @@ impl Run<'_> {
         )?;
         if self.capture.test_views().next().is_some() {
             let mut report = evaluate::evaluate(
-                &self.scene(state, env),
+                &self.scene(state, light),
                 self.capture,
                 &state.polarizer_angles,
             )?;

@@ -4,6 +4,7 @@ mod bench;
 mod eval;
 mod export;
 mod inspect;
+mod mesh;
 mod render;
 mod synth;
 mod train;
@@ -31,6 +32,8 @@ enum Command {
     Render(render::RenderArgs),
     /// Evaluate a model on a capture's test views (JSON metrics).
     Eval(eval::EvalArgs),
+    /// Extract a model's surface as a triangle mesh (PLY or OBJ).
+    Mesh(mesh::MeshArgs),
     /// Write a model's deliverables (surfels, environment map, config, metrics, renders).
     Export(export::ExportArgs),
     /// Render a small synthetic full-Stokes capture (sample data for a fresh machine).
@@ -47,6 +50,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Train(args) => train::run(&args),
         Command::Render(args) => render::run(&args),
         Command::Eval(args) => eval::run(&args),
+        Command::Mesh(args) => mesh::run(&args),
         Command::Export(args) => export::run(&args),
         Command::Synth(args) => synth::run(&args),
         Command::Bench(args) => bench::run(&args),

@@ -171,10 +171,7 @@ pub fn render_probe(
                 }
             }
         });
-    CubeMap {
-        size,
-        raw,
-    }
+    CubeMap { size, raw }
 }
 
 /// Local light probes around a mesh, blended per surface point, over a global environment.
@@ -196,7 +193,8 @@ impl GridMap {
         global_cube: &CubeMap,
         global: PreparedEnv,
     ) -> Result<Self, GridMapError> {
-        let _span = tracing::info_span!("gridmap_build", triangles = mesh.triangles.len()).entered();
+        let _span =
+            tracing::info_span!("gridmap_build", triangles = mesh.triangles.len()).entered();
         if global_cube.size != global.plan().spec.base_size {
             return Err(GridMapError::SizeMismatch {
                 cube: global_cube.size,
@@ -371,7 +369,8 @@ impl GridMap {
 
 impl LightProbe for GridMap {
     fn irradiance(&self, position: DVec3, normal: DVec3, ior: f64) -> DVec3 {
-        self.blended_irradiance(position, normal, ior, DVec3::ZERO).0
+        self.blended_irradiance(position, normal, ior, DVec3::ZERO)
+            .0
     }
 
     fn irradiance_backward(
@@ -388,7 +387,8 @@ impl LightProbe for GridMap {
 
     fn specular(&self, position: DVec3, dir: DVec3, roughness: f64) -> DVec3 {
         if self.occluded(position, dir) {
-            self.blended_specular(position, dir, roughness, DVec3::ZERO).0
+            self.blended_specular(position, dir, roughness, DVec3::ZERO)
+                .0
         } else {
             self.global.specular(dir, roughness)
         }
@@ -468,7 +468,13 @@ mod tests {
         let material =
             SurfaceMaterial::from_surfels(&sphere_surfels(DVec3::ZERO, 1.0, 100, DVec3::ONE))
                 .unwrap();
-        let probe = render_probe(DVec3::new(2.0, 1.0, 0.5), &nothing, &material, &cube, &global);
+        let probe = render_probe(
+            DVec3::new(2.0, 1.0, 0.5),
+            &nothing,
+            &material,
+            &cube,
+            &global,
+        );
         assert_eq!(probe, cube);
         let local = PreparedEnv::new_batch(&[probe], global.plan().clone()).unwrap();
         assert_eq!(local[0].levels, global.levels);
@@ -483,8 +489,7 @@ mod tests {
         let bvh = Bvh::build(&mesh);
         let albedo = DVec3::new(0.2, 0.5, 0.8);
         let material =
-            SurfaceMaterial::from_surfels(&sphere_surfels(DVec3::ZERO, 1.0, 2000, albedo))
-                .unwrap();
+            SurfaceMaterial::from_surfels(&sphere_surfels(DVec3::ZERO, 1.0, 2000, albedo)).unwrap();
         let anchor = DVec3::new(2.5, 0.3, -0.2);
         let probe = render_probe(anchor, &bvh, &material, &cube, &global);
         let (mut hits, mut misses) = (0, 0);
@@ -497,7 +502,8 @@ mod tests {
                         Some(hit) => {
                             hits += 1;
                             let expected = albedo * global.irradiance(hit.normal, 1.5);
-                            let radiance = DVec3::new(activate(got.x), activate(got.y), activate(got.z));
+                            let radiance =
+                                DVec3::new(activate(got.x), activate(got.y), activate(got.z));
                             assert!(
                                 (radiance - expected).abs().max_element() < 1e-9,
                                 "{radiance} vs {expected}"
@@ -549,7 +555,11 @@ mod tests {
         let (mesh, surfels) = two_spheres();
         let cube = sky();
         let grid = GridMap::build(&mesh, &surfels, &cube, prepared(&cube, false)).unwrap();
-        for x in [DVec3::new(1.0, 0.0, 0.0), DVec3::new(3.0, 0.5, -0.7), grid.anchors()[7]] {
+        for x in [
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(3.0, 0.5, -0.7),
+            grid.anchors()[7],
+        ] {
             let w = grid.weights(x);
             assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-12);
             assert!(w.iter().all(|&w| w > 0.0));
@@ -584,7 +594,10 @@ mod tests {
             .map(|k| w[k] * grid.local(k).specular(dir, r))
             .sum();
         let got = grid.specular(x, dir, r);
-        assert!((got - blend).abs().max_element() < 1e-12, "{got} vs {blend}");
+        assert!(
+            (got - blend).abs().max_element() < 1e-12,
+            "{got} vs {blend}"
+        );
         assert!((got - global.specular(dir, r)).length() > 1e-2);
         let mut env_grad = grid.zero_grad();
         grid.specular_backward(x, dir, r, DVec3::ONE, &mut env_grad);
@@ -597,7 +610,10 @@ mod tests {
         let mut expected = global.zero_grad();
         let reference = global.specular_backward(up, r, DVec3::ONE, &mut expected);
         let mut env_grad = grid.zero_grad();
-        assert_eq!(grid.specular_backward(top, up, r, DVec3::ONE, &mut env_grad), reference);
+        assert_eq!(
+            grid.specular_backward(top, up, r, DVec3::ONE, &mut env_grad),
+            reference
+        );
         assert_eq!(env_grad, expected);
         // A point slightly inside the mesh (surfels below the extracted surface) is not blocked
         // by the surface it sits under.

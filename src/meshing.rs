@@ -63,7 +63,11 @@ pub fn surfel_bounds(surfels: &Surfels) -> Option<(DVec3, DVec3)> {
     let points: Vec<DVec3> = if opaque.len() >= 8 {
         opaque
     } else {
-        surfels.position.iter().map(|p| DVec3::from_array(*p)).collect()
+        surfels
+            .position
+            .iter()
+            .map(|p| DVec3::from_array(*p))
+            .collect()
     };
     let points: Vec<DVec3> = points.into_iter().filter(|p| p.is_finite()).collect();
     if points.is_empty() {
@@ -98,14 +102,7 @@ pub fn orbit_cameras(surfels: &Surfels) -> Vec<Camera> {
             let phi = golden * n as f64;
             let eye = centre + 3.0 * radius * DVec3::new(r * phi.cos(), r * phi.sin(), z);
             let up = if z.abs() > 0.9 { DVec3::Y } else { DVec3::Z };
-            Camera::look_at(
-                ORBIT_SIZE,
-                ORBIT_SIZE,
-                40f64.to_radians(),
-                eye,
-                centre,
-                up,
-            )
+            Camera::look_at(ORBIT_SIZE, ORBIT_SIZE, 40f64.to_radians(), eye, centre, up)
         })
         .collect()
 }
@@ -119,8 +116,8 @@ pub fn mesh_from_surfels(
     settings: &RasterSettings,
     resolution: usize,
 ) -> Result<TriangleMesh, MeshingError> {
-    let _span = tracing::info_span!("mesh_from_surfels", views = cameras.len(), resolution)
-        .entered();
+    let _span =
+        tracing::info_span!("mesh_from_surfels", views = cameras.len(), resolution).entered();
     let bounds = surfel_bounds(surfels).ok_or(MeshingError::NoSurfels)?;
     if cameras.is_empty() {
         return Err(MeshingError::NoCameras);
@@ -190,7 +187,11 @@ pub(crate) fn sphere_surfels(centre: DVec3, radius: f64, count: usize, albedo: D
         let r = (1.0 - z * z).sqrt();
         let phi = golden * n as f64;
         let normal = DVec3::new(r * phi.cos(), r * phi.sin(), z);
-        let helper = if normal.z.abs() < 0.9 { DVec3::Z } else { DVec3::X };
+        let helper = if normal.z.abs() < 0.9 {
+            DVec3::Z
+        } else {
+            DVec3::X
+        };
         let tu = helper.cross(normal).normalize();
         let tv = normal.cross(tu);
         surfels.push_activated(&Surfel {
@@ -216,14 +217,8 @@ mod tests {
         let cameras = orbit_cameras(&surfels);
         assert_eq!(cameras.len(), ORBIT_VIEWS);
         let backend = crate::raster::cpu::CpuBackend;
-        let mesh = mesh_from_surfels(
-            &surfels,
-            &cameras,
-            &backend,
-            &RasterSettings::default(),
-            48,
-        )
-        .unwrap();
+        let mesh = mesh_from_surfels(&surfels, &cameras, &backend, &RasterSettings::default(), 48)
+            .unwrap();
         assert!(mesh.triangles.len() > 500);
         let centre = DVec3::new(0.2, -0.1, 0.3);
         let worst = mesh

@@ -569,7 +569,10 @@ impl PreparedEnv {
     /// Prefilters many cube maps with one plan: the same result as [`Self::new`] on each, bit for
     /// bit, several times faster for many maps because every kernel weight is evaluated once per
     /// group of [`BATCH_MAPS`] maps (GridMap's local probes). Parallel over output texels.
-    pub fn new_batch(cubes: &[CubeMap], plan: Arc<PrefilterPlan>) -> Result<Vec<Self>, EnvMapError> {
+    pub fn new_batch(
+        cubes: &[CubeMap],
+        plan: Arc<PrefilterPlan>,
+    ) -> Result<Vec<Self>, EnvMapError> {
         let _span = tracing::info_span!("prefilter_env_batch", maps = cubes.len()).entered();
         if let Some(cube) = cubes.iter().find(|c| c.size != plan.spec.base_size) {
             return Err(EnvMapError::PlanMismatch {

@@ -659,3 +659,111 @@ impl Run<'_> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::synth::{synth, Shape, SynthOptions};
+
+    /// A short run on a small synthetic torus whose PolarDR stage rebuilds mesh and GridMap
+    /// several times and crosses checkpoints.
+    fn torus_run(dir: &Path) -> (Capture, TrainConfig) {
+        let capture_dir = dir.join("capture");
+        synth(
+            &capture_dir,
+            &SynthOptions {
+                shape: Shape::Torus,
+                views: 9,
+                size: 24,
+                ..SynthOptions::default()
+            },
+        )
+        .unwrap();
+        let config = TrainConfig {
+            iterations: 60,
+            initial_surfels: 1500,
+            envmap_resolution: 16,
+            geometry_stage_end: 0.2,
+            material_stage_end: 0.3,
+            checkpoint_interval: 30,
+            eval_interval: 0,
+            mesh_interval: 20,
+            gridmap_interval: 7,
+            backend: crate::config::BackendChoice::Cpu,
+            ..TrainConfig::default()
+        };
+        (crate::capture::load(&capture_dir).unwrap(), config)
+    }
+
+    #[test]
+    fn gridmap_runs_resume_bit_for_bit() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let never = AtomicBool::new(false);
+        let whole = dir.path().join("whole");
+        train(&capture, &whole, &config, false, &never, &mut |_| {}).unwrap();
+        // Interrupt right after the checkpoint at iteration 30, then resume.
+        let split = dir.path().join("split");
+        let cancel = AtomicBool::new(false);
+        let outcome = train(&capture, &split, &config, false, &cancel, &mut |e| {
+            if matches!(e, TrainEvent::Checkpoint { iteration: 30 }) {
+                cancel.store(true, Ordering::Relaxed);
+            }
+        })
+        .unwrap();
+        assert_eq!(outcome, TrainOutcome::Interrupted { iteration: 30 });
+        let outcome = train(&capture, &split, &config, true, &never, &mut |_| {}).unwrap();
+        assert_eq!(outcome, TrainOutcome::Finished);
+        let a = TrainState::load(&whole.join(CHECKPOINT_FILE)).unwrap().0;
+        let b = TrainState::load(&split.join(CHECKPOINT_FILE)).unwrap().0;
+        assert_eq!(a.iteration, 60);
+        assert_eq!(a.surfels, b.surfels);
+        assert_eq!(a.envmap, b.envmap);
+        // The model keeps its training cameras and renders with GridMap, as it was trained.
+        let model = Model::load(&whole).unwrap();
+        assert_eq!(model.train_cameras.len(), capture.train_views().count());
+        let reconstruction = crate::reconstruction::Reconstruction::new(model).unwrap();
+        assert!(reconstruction.gridmap().is_some());
+    }
+
+    #[test]
+    fn gridmap_changes_only_the_polar_stage() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let never = AtomicBool::new(false);
+        let run = |gridmap: bool, name: &str| {
+            let out = dir.path().join(name);
+            let config = TrainConfig {
+                gridmap,
+                ..config.clone()
+            };
+            train(&capture, &out, &config, false, &never, &mut |_| {}).unwrap();
+            TrainState::load(&out.join(CHECKPOINT_FILE)).unwrap().0
+        };
+        let on = run(true, "on");
+        let off = run(false, "off");
+        assert_ne!(on.surfels, off.surfels);
+        // Before the PolarDR stage both runs are the same run: stop both at the stage start.
+        let early = |gridmap: bool, name: &str| {
+            let out = dir.path().join(name);
+            let config = TrainConfig {
+                gridmap,
+                iterations: 60,
+                checkpoint_interval: 18,
+                ..config.clone()
+            };
+            let cancel = AtomicBool::new(false);
+            train(&capture, &out, &config, false, &cancel, &mut |e| {
+                if matches!(e, TrainEvent::Checkpoint { iteration: 18 }) {
+                    cancel.store(true, Ordering::Relaxed);
+                }
+            })
+            .unwrap();
+            TrainState::load(&out.join(CHECKPOINT_FILE)).unwrap().0
+        };
+        assert_eq!(
+            early(true, "early_on").surfels,
+            early(false, "early_off").surfels
+        );
+    }
+}

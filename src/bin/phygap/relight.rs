@@ -40,7 +40,11 @@ pub fn run(args: &RelightArgs) -> Result<()> {
         .unwrap_or_else(|| args.model.join(TEST_CAMERAS_FILE));
     let cameras = capture::load_cameras(&cameras_file)?;
     let reconstruction = relit_reconstruction(model, &args.envmap, args.rotate)?;
-    let kinds: &[&str] = if args.stokes { &RELIGHT_KINDS } else { &RELIGHT_KINDS[..1] };
+    let kinds: &[&str] = if args.stokes {
+        &RELIGHT_KINDS
+    } else {
+        &RELIGHT_KINDS[..1]
+    };
     let files = reconstruction.render_to_dir(&cameras, &args.out, kinds)?;
     println!(
         "relit {} views ({} files) into {}",

@@ -22,6 +22,19 @@ use phygap::reconstruction::{prefilter_plan, Reconstruction};
 use phygap::train::step::{self, StepInputs};
 use phygap::train::targets::{resolve_mode, ViewTarget};
 
+/// CPU seconds (user + system) of this process so far, from /proc (Linux; 0 elsewhere). On a
+/// shared machine CPU time / threads estimates the wall time an idle machine would take.
+fn cpu_seconds() -> f64 {
+    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
+        return 0.0;
+    };
+    // Fields after the parenthesized command name; utime and stime are the 12th and 13th.
+    let after = stat.rsplit(')').next().unwrap_or("");
+    let fields: Vec<&str> = after.split_whitespace().collect();
+    let ticks = |i: usize| fields.get(i).and_then(|v| v.parse::<f64>().ok()).unwrap_or(0.0);
+    (ticks(11) + ticks(12)) / 100.0
+}
+
 fn best<T>(repeats: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     let mut best = f64::INFINITY;
     let mut last = None;
@@ -65,12 +78,14 @@ fn main() -> anyhow::Result<()> {
     let mesh = meshing::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)?;
     let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
     let env = PreparedEnv::new(&model.envmap, plan)?;
+    let cpu_before = cpu_seconds();
     let (t_build, grid) = best(repeats, || {
         GridMap::build(&mesh, &model.surfels, &model.envmap, env.clone())
     });
+    let cpu_build = (cpu_seconds() - cpu_before) / repeats as f64;
     let grid = grid?;
     println!(
-        "GridMap rebuild ({} anchors, D = {}): {t_build:.2} s",
+        "GridMap rebuild ({} anchors, D = {}): {t_build:.2} s wall (best), {cpu_build:.2} CPU-s per build",
         grid.anchors().len(),
         model.envmap.size
     );

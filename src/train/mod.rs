@@ -4,8 +4,18 @@
 //! folder at the end. Progress is reported as [`TrainEvent`]s to the caller and appended to
 //! `MODEL/progress.jsonl`.
 //!
+//! GridMap (METHOD.md §5, `gridmap = true`): in the PolarDR stage the shader's light is GridMap over
+//! the learned environment. The mesh is extracted from the surfels rendered at the training cameras
+//! (TSDF at R = 128) at the start of the stage and every `mesh_interval` steps; the local probes are
+//! rebuilt every `gridmap_interval` steps (and with each new mesh). Probes are *not* rebuilt each
+//! time the learned map is re-prefiltered (every `envmap_prefilter_interval` steps; a rebuild costs
+//! about 2 CPU-seconds at D = 64): only GridMap's global light — used by escaping mirror
+//! rays and receiving their gradient — follows the map at once.
+//!
 //! Determinism: every random choice of iteration `i` comes from a generator seeded by
 //! `(seed, i)`, and the state is checkpointed completely, so `--resume` continues bit for bit.
+//! GridMap is not checkpointed: it is rebuilt from the state at the first PolarDR step of a session
+//! and, in the uninterrupted run, right after each checkpoint, so both runs see the same probes.
 
 mod angles;
 pub mod state;

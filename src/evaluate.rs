@@ -29,6 +29,12 @@ pub struct EvalReport {
     pub albedo_mae: Option<f64>,
     pub roughness_mae: Option<f64>,
     pub ior_mae: Option<f64>,
+    /// S0 PSNR / SSIM (sRGB 8-bit, inside the mask) of the model relit by the capture's relight
+    /// map against each test view's `relight_s0` ground truth (`phygap eval --relight-envmap`).
+    pub relight_psnr: Option<f64>,
+    pub relight_ssim: Option<f64>,
+    /// Chamfer-L1 from the model's extracted mesh to a ground-truth mesh (`--gt-mesh`).
+    pub chamfer: Option<f64>,
     pub num_surfels: usize,
     pub train_seconds: Option<f64>,
     /// Learned angle per `polarizer_group`, degrees in [0, 180).
@@ -46,6 +52,52 @@ pub enum EvalError {
     GroundTruth(#[from] ImageError),
     #[error("{view}: {source}")]
     Metrics { view: String, source: MetricsError },
+    #[error("Chamfer distance: {0}")]
+    Mesh(#[from] crate::mesh::MeshError),
+}
+
+/// Mean S0 PSNR and SSIM (sRGB 8-bit, inside the mask) of `relit` — a scene lit by the capture's
+/// relighting map — against the `relight_s0` ground truth of every test view that has one
+/// (`None` when no test view has it).
+pub fn relight_metrics(
+    relit: &Scene,
+    capture: &Capture,
+) -> Result<(Option<f64>, Option<f64>), EvalError> {
+    let _span = tracing::info_span!("relight_metrics").entered();
+    let mut means = Means::default();
+    for view in capture.test_views() {
+        let Some(path) = &view.ground_truth.relight_s0 else {
+            continue;
+        };
+        let metric_err = |source| EvalError::Metrics {
+            view: view.name.clone(),
+            source,
+        };
+        let target = read_f64(path, 3)?;
+        let rendered = relit.render(&view.camera)?;
+        let pred = rendered.premultiplied(&rendered.shaded.s0);
+        let g = rendered.gbuffers();
+        let mask: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();
+        let mask = Some(mask.as_slice());
+        means.add(
+            "psnr",
+            Some(metrics::psnr_srgb8(&pred, &target, 3, mask).map_err(metric_err)?),
+        );
+        means.add(
+            "ssim",
+            Some(
+                metrics::ssim_srgb8(&pred, &target, g.width, g.height, 3, mask)
+                    .map_err(metric_err)?,
+            ),
+        );
+    }
+    Ok((means.get("psnr"), means.get("ssim")))
+}
+
+/// Chamfer-L1 from a predicted mesh to the ground-truth mesh at `gt_path` (PLY), METHOD.md §8.
+pub fn chamfer_to_gt(pred: &crate::mesh::TriangleMesh, gt_path: &Path) -> Result<f64, EvalError> {
+    let gt = crate::mesh::TriangleMesh::read_ply(gt_path)?;
+    Ok(crate::mesh::chamfer_l1(pred, &gt)?)
 }
 
 /// Running means of the per-view figures.
@@ -231,6 +283,9 @@ pub fn evaluate(
         albedo_mae: means.get("albedo_mae"),
         roughness_mae: means.get("roughness_mae"),
         ior_mae: means.get("ior_mae"),
+        relight_psnr: None,
+        relight_ssim: None,
+        chamfer: None,
         num_surfels: scene.surfels.len(),
         train_seconds: None,
         polarizer_angles_deg: angles

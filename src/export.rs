@@ -1,12 +1,14 @@
 //! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
-//! EXR), configuration, metrics, and S0/normal/albedo renders of the capture's test views. This is
-//! what the service publishes as a job's artifacts and what `phygap export` writes.
+//! EXR), the extracted mesh (`mesh.ply`), configuration, metrics, and S0/normal/albedo renders of
+//! the capture's test views. This is what the service publishes as a job's artifacts and what
+//! `phygap export` writes.
 
 use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
 use crate::capture::{self, CaptureError};
+use crate::meshing::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
 use crate::model::{Model, ModelError, TEST_CAMERAS_FILE};
 use crate::reconstruction::{Reconstruction, ReconstructionError};
 
@@ -18,6 +20,8 @@ pub enum ExportError {
     Reconstruction(#[from] ReconstructionError),
     #[error(transparent)]
     Cameras(#[from] CaptureError),
+    #[error(transparent)]
+    Meshing(#[from] MeshingError),
     #[error("{path}: {source}")]
     Io {
         path: PathBuf,
@@ -33,6 +37,9 @@ const COPIED: [&str; 5] = [
     "metrics.json",
     "model.json",
 ];
+
+/// The mesh written into the export folder.
+pub const MESH_FILE: &str = "mesh.ply";
 
 /// Kinds rendered for every test camera.
 const RENDERED: [&str; 3] = ["s0", "normal", "albedo"];
@@ -55,6 +62,10 @@ pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportEr
             written.push(to);
         }
     }
+    let mesh = meshing::extract_from_model(&model, DEFAULT_MESH_RESOLUTION)?;
+    let mesh_path = out_dir.join(MESH_FILE);
+    meshing::write_mesh(&mesh, &mesh_path)?;
+    written.push(mesh_path);
     let cameras_file = model_dir.join(TEST_CAMERAS_FILE);
     if cameras_file.exists() {
         let cameras = capture::load_cameras(&cameras_file)?;

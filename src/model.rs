@@ -11,6 +11,7 @@
 //!   checkpoint.bin    resumable training state
 //!   metrics.json      evaluation on the capture's test views
 //!   test_cameras.json the capture's test cameras (for renders of the model alone)
+//!   train_cameras.json the capture's training cameras (mesh extraction for GridMap and export)
 //! ```
 
 use std::collections::BTreeMap;
@@ -20,6 +21,7 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::camera::Camera;
 use crate::config::{Mode, TrainConfig};
 use crate::envmap::{CubeMap, EnvMapError, WorldUp};
 use crate::image_io::{self, Image, ImageError};
@@ -28,6 +30,9 @@ use crate::surfels::{self, Surfels};
 
 /// Cameras of the capture's test views, in the transforms format.
 pub const TEST_CAMERAS_FILE: &str = "test_cameras.json";
+
+/// Cameras of the capture's training views, in the transforms format.
+pub const TRAIN_CAMERAS_FILE: &str = "train_cameras.json";
 
 /// Height of the exported lat-long environment map (width is twice this).
 pub const LATLONG_HEIGHT: usize = 256;
@@ -69,6 +74,9 @@ pub struct Model {
     pub config: TrainConfig,
     pub surfels: Surfels,
     pub envmap: CubeMap,
+    /// The training cameras (`train_cameras.json`; empty for a folder without it): the views the
+    /// mesh is extracted from.
+    pub train_cameras: Vec<(String, Camera)>,
 }
 
 fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> ModelError + '_ {
@@ -102,6 +110,12 @@ impl Model {
         let latlong = self.envmap.to_latlong(LATLONG_HEIGHT, self.world_up()?);
         image_io::write_exr(&dir.join("envmap.exr"), &latlong)?;
         image_io::write_exr(&dir.join("envmap_cube.exr"), &cube_to_image(&self.envmap))?;
+        if !self.train_cameras.is_empty() {
+            write_json(
+                &dir.join(TRAIN_CAMERAS_FILE),
+                &crate::capture::cameras_to_json(&self.train_cameras),
+            )?;
+        }
         Ok(())
     }
 
@@ -125,11 +139,21 @@ impl Model {
             path: dir.join("envmap_cube.exr"),
             message: "not 6 square faces stacked vertically (RGB)".into(),
         })?;
+        let cameras_path = dir.join(TRAIN_CAMERAS_FILE);
+        let train_cameras = if cameras_path.exists() {
+            crate::capture::load_cameras(&cameras_path).map_err(|e| ModelError::Invalid {
+                path: cameras_path.clone(),
+                message: e.to_string(),
+            })?
+        } else {
+            Vec::new()
+        };
         Ok(Model {
             info,
             config,
             surfels,
             envmap,
+            train_cameras,
         })
     }
 }

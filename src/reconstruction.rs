@@ -1,6 +1,8 @@
-//! A trained model made ready to render: its prefiltered environment, the BRDF table and a
-//! backend. Rendering novel views to files (`phygap render`), evaluation (`phygap eval`) and
-//! relighting (a replaced environment map) all go through it.
+//! A trained model made ready to render: its prefiltered environment, GridMap when the model was
+//! trained with it (mesh extracted from the training cameras, probes under the environment), the
+//! BRDF table and a backend. Rendering novel views to files (`phygap render`), evaluation
+//! (`phygap eval`) and relighting (a replaced environment map, which rebuilds the probes) all go
+//! through it.
 
 use std::path::{Path, PathBuf};
 
@@ -12,9 +14,12 @@ use crate::backend::{self, BackendError};
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::capture::Capture;
-use crate::envmap::{CubeMap, EnvMapError, MipChainSpec, PrefilterPlan, PreparedEnv};
+use crate::envmap::{CubeMap, EnvMapError, LightProbe, MipChainSpec, PrefilterPlan, PreparedEnv};
 use crate::evaluate::{self, EvalError, EvalReport};
+use crate::gridmap::GridMap;
 use crate::image_io::{self, Image, ImageError};
+use crate::mesh::TriangleMesh;
+use crate::meshing::{self, GRIDMAP_MESH_RESOLUTION};
 use crate::model::Model;
 use crate::raster::RasterSettings;
 use crate::render::{RenderError, RenderedView, Scene};
@@ -43,6 +48,9 @@ pub enum ReconstructionError {
 pub struct Reconstruction {
     pub model: Model,
     env: PreparedEnv,
+    /// The mesh GridMap traces against (models trained with GridMap only).
+    mesh: Option<TriangleMesh>,
+    gridmap: Option<GridMap>,
     backend: Box<dyn crate::raster::Backend>,
     lut: &'static BrdfLut,
 }
@@ -65,26 +73,82 @@ impl Reconstruction {
         let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
         let env = PreparedEnv::new(&model.envmap, plan)?;
         let backend = backend::select(model.config.backend)?;
-        Ok(Reconstruction {
+        let mut reconstruction = Reconstruction {
             model,
             env,
+            mesh: None,
+            gridmap: None,
             backend,
             lut: BrdfLut::shared(),
-        })
+        };
+        if reconstruction.trained_with_gridmap() {
+            let model = &reconstruction.model;
+            reconstruction.mesh = meshing::mesh_from_surfels(
+                &model.surfels,
+                &meshing::model_cameras(model),
+                reconstruction.backend.as_ref(),
+                &RasterSettings::default(),
+                GRIDMAP_MESH_RESOLUTION,
+            )
+            .inspect_err(|e| {
+                tracing::warn!("GridMap mesh extraction failed, rendering without GridMap: {e}")
+            })
+            .ok();
+            reconstruction.rebuild_gridmap();
+        }
+        Ok(reconstruction)
     }
 
-    /// Replaces the environment light (relighting) and rebuilds its prefilters.
+    /// Whether the model's PolarDR stage ran with GridMap (then it renders with it too).
+    fn trained_with_gridmap(&self) -> bool {
+        let config = &self.model.config;
+        config.gridmap && config.polar_stage_start() < self.model.info.iterations
+    }
+
+    fn rebuild_gridmap(&mut self) {
+        self.gridmap = self.mesh.as_ref().and_then(|mesh| {
+            GridMap::build(
+                mesh,
+                &self.model.surfels,
+                &self.model.envmap,
+                self.env.clone(),
+            )
+            .inspect_err(|e| tracing::warn!("GridMap build failed, rendering without it: {e}"))
+            .ok()
+        });
+    }
+
+    /// Replaces the environment light (relighting) and rebuilds its prefilters and GridMap's probes.
     pub fn set_envmap(&mut self, cube: CubeMap) -> Result<(), ReconstructionError> {
         let plan = prefilter_plan(cube.size, self.model.config.fresnel_irradiance)?;
         self.env = PreparedEnv::new(&cube, plan)?;
         self.model.envmap = cube;
+        self.rebuild_gridmap();
         Ok(())
+    }
+
+    /// The mesh GridMap traces against, when the model renders with GridMap.
+    pub fn mesh(&self) -> Option<&TriangleMesh> {
+        self.mesh.as_ref()
+    }
+
+    /// GridMap, when the model renders with it.
+    pub fn gridmap(&self) -> Option<&GridMap> {
+        self.gridmap.as_ref()
+    }
+
+    /// The light the model is shaded with: GridMap over the environment, or the environment.
+    pub fn light(&self) -> &dyn LightProbe {
+        match &self.gridmap {
+            Some(grid) => grid,
+            None => &self.env,
+        }
     }
 
     pub fn scene(&self) -> Scene<'_> {
         Scene {
             surfels: &self.model.surfels,
-            light: &self.env,
+            light: self.light(),
             lut: self.lut,
             backend: self.backend.as_ref(),
             settings: RasterSettings::default(),

@@ -72,3 +72,106 @@ pub fn relight(
     let reconstruction = relit_reconstruction(model, envmap, rotate_deg)?;
     Ok(reconstruction.render_to_dir(&cameras, out_dir, &RELIGHT_KINDS)?)
 }
+
+#[cfg(test)]
+mod tests {
+    use std::collections::BTreeMap;
+
+    use glam::DVec3;
+
+    use super::*;
+    use crate::config::{BackendChoice, Mode, TrainConfig};
+    use crate::envmap::{texel_dir, NUM_FACES};
+    use crate::mesh::cameras_around;
+    use crate::model::ModelInfo;
+
+    const SIZE: usize = 16;
+
+    /// A sphere of surfels under a smooth sky, "trained" for 100 iterations.
+    fn sphere_model(gridmap: bool) -> Model {
+        let radiance: Vec<f64> = (0..NUM_FACES * SIZE * SIZE)
+            .flat_map(|t| {
+                let (face, rest) = (t / (SIZE * SIZE), t % (SIZE * SIZE));
+                let d = texel_dir(SIZE, face, rest % SIZE, rest / SIZE);
+                let v = 0.3 + 1.2 * d.z.max(0.0) + 0.6 * (d.x + 1.0);
+                [v, 0.8 * v, 0.5 * v + 0.2]
+            })
+            .collect();
+        let surfels =
+            crate::meshing::sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.5, 0.4, 0.3));
+        let config = TrainConfig {
+            gridmap,
+            iterations: 100,
+            envmap_resolution: SIZE as u32,
+            backend: BackendChoice::Cpu,
+            ..TrainConfig::default()
+        };
+        let train_cameras = cameras_around(12, 4.0, 48, 40f64.to_radians())
+            .into_iter()
+            .enumerate()
+            .map(|(i, c)| (format!("{i:03}"), c))
+            .collect();
+        Model {
+            info: ModelInfo {
+                mode: Mode::Full,
+                world_up: [0.0, 0.0, 1.0],
+                polarizer_angles_deg: BTreeMap::new(),
+                iterations: 100,
+                train_seconds: 0.0,
+                num_surfels: surfels.len(),
+                backend: "cpu".into(),
+            },
+            config,
+            surfels,
+            envmap: CubeMap::from_radiance(SIZE, &radiance).unwrap(),
+            train_cameras,
+        }
+    }
+
+    #[test]
+    fn relighting_with_the_models_own_exported_map_reproduces_its_renders() {
+        for gridmap in [false, true] {
+            let dir = tempfile::tempdir().unwrap();
+            let model = sphere_model(gridmap);
+            model.save(dir.path()).unwrap();
+            let loaded = Model::load(dir.path()).unwrap();
+            assert_eq!(loaded.train_cameras.len(), 12);
+            let plain = Reconstruction::new(loaded.clone()).unwrap();
+            assert_eq!(plain.gridmap().is_some(), gridmap);
+            let relit = relit_reconstruction(loaded, &dir.path().join("envmap.exr"), 0.0).unwrap();
+            assert_eq!(relit.gridmap().is_some(), gridmap);
+            let camera = cameras_around(5, 3.5, 40, 45f64.to_radians())[2];
+            let a = plain.scene().render(&camera).unwrap();
+            let b = relit.scene().render(&camera).unwrap();
+            let (mut worst, mut sum, mut count) = (0.0f64, 0.0, 0);
+            for p in 0..a.shaded.s0.len() {
+                if a.gbuffers().alpha[p] < 0.5 {
+                    continue;
+                }
+                let (x, y) = (a.shaded.s0[p], b.shaded.s0[p]);
+                let relative = ((x - y).abs() / x.abs().max(DVec3::splat(1e-3))).max_element();
+                worst = worst.max(relative);
+                sum += relative;
+                count += 1;
+            }
+            let mean = sum / count as f64;
+            println!("gridmap {gridmap}: relit vs plain S0 relative error mean {mean:.2e}, max {worst:.2e}");
+            assert!(count > 300);
+            // Export (bilinear to 512×256) and import (4×4 supersampled) smooth the map slightly.
+            assert!(mean < 2e-3 && worst < 1e-2, "mean {mean}, max {worst}");
+            // A different map is not mistaken for the same one.
+            let rotated = relit_reconstruction(
+                Model::load(dir.path()).unwrap(),
+                &dir.path().join("envmap.exr"),
+                90.0,
+            )
+            .unwrap();
+            let c = rotated.scene().render(&camera).unwrap();
+            let changed = (0..a.shaded.s0.len())
+                .filter(|&p| a.gbuffers().alpha[p] > 0.5)
+                .map(|p| ((a.shaded.s0[p] - c.shaded.s0[p]).abs() / a.shaded.s0[p]).max_element())
+                .fold(0.0, f64::max);
+            assert!(changed > 0.05, "{changed}");
+        }
+    }
+}

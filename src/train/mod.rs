@@ -4,8 +4,18 @@
 //! folder at the end. Progress is reported as [`TrainEvent`]s to the caller and appended to
 //! `MODEL/progress.jsonl`.
 //!
+//! GridMap (METHOD.md §5, `gridmap = true`): in the PolarDR stage the shader's light is GridMap over
+//! the learned environment. The mesh is extracted from the surfels rendered at the training cameras
+//! (TSDF at R = 128) at the start of the stage and every `mesh_interval` steps; the local probes are
+//! rebuilt every `gridmap_interval` steps (and with each new mesh). Probes are *not* rebuilt each
+//! time the learned map is re-prefiltered (every `envmap_prefilter_interval` steps; a rebuild costs
+//! about 2 CPU-seconds at D = 64): only GridMap's global light — used by escaping mirror
+//! rays and receiving their gradient — follows the map at once.
+//!
 //! Determinism: every random choice of iteration `i` comes from a generator seeded by
 //! `(seed, i)`, and the state is checkpointed completely, so `--resume` continues bit for bit.
+//! GridMap is not checkpointed: it is rebuilt from the state at the first PolarDR step of a session
+//! and, in the uninterrupted run, right after each checkpoint, so both runs see the same probes.
 
 mod angles;
 pub mod state;
@@ -28,10 +38,13 @@ use crate::capture::Capture;
 use crate::checkpoint::CheckpointError;
 use crate::config::{ConfigError, Mode, TrainConfig};
 use crate::densify::{self, DensifyRules, DensifyStats};
-use crate::envmap::{EnvMapError, PrefilterPlan, PreparedEnv, WorldUp};
+use crate::envmap::{EnvMapError, LightProbe, PrefilterPlan, PreparedEnv, WorldUp};
 use crate::evaluate::{self, EvalError};
 use crate::events::{Stage, TrainEvent};
+use crate::gridmap::GridMap;
 use crate::loss::LossWeights;
+use crate::mesh::TriangleMesh;
+use crate::meshing::{self, GRIDMAP_MESH_RESOLUTION};
 use crate::model::{self, Model, ModelError, ModelInfo};
 use crate::optim::{Adam, AdamConfig, LearningRates, OptimError, ENVMAP_GROUP, POLARIZER_GROUP};
 use crate::raster::{Backend, RasterError, RasterSettings};
@@ -134,6 +147,17 @@ fn fingerprint(config: &TrainConfig) -> String {
 struct Pending {
     /// Summed environment gradient and the number of steps it covers.
     env: Option<(crate::envmap::EnvGrad, u32)>,
+}
+
+/// GridMap of a run (METHOD.md §5): the mesh and the probes, rebuilt from the training state on
+/// their schedules and never checkpointed. `current` is false at the start of a session and right
+/// after a checkpoint, so an uninterrupted run and a resumed one rebuild at the same iteration
+/// from the same state (bit-exact resume).
+#[derive(Default)]
+struct Occlusion {
+    mesh: Option<TriangleMesh>,
+    grid: Option<GridMap>,
+    current: bool,
 }
 
 /// Everything fixed during a run.
@@ -272,6 +296,7 @@ impl Run<'_> {
         };
         let mut env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
         let mut pending = Pending::default();
+        let mut occlusion = Occlusion::default();
         let report_every = (self.config.iterations / 300).clamp(1, 25);
         let iterations = self.config.iterations;
         while state.iteration < iterations {
@@ -291,19 +316,31 @@ impl Run<'_> {
             if it == self.config.polar_stage_start() && !state.polarizer_angles.is_empty() {
                 state.polarizer_angles = angles::estimate(self, &state, &env)?;
             }
+            if stage == Stage::Polar && self.config.gridmap {
+                let since = it - self.config.polar_stage_start();
+                let due = |interval: u32| interval > 0 && since.is_multiple_of(interval);
+                let remesh = !occlusion.current || due(self.config.mesh_interval);
+                if remesh || due(self.config.gridmap_interval) {
+                    self.rebuild_gridmap(&mut occlusion, &state, &env, remesh);
+                }
+            }
             let mut rng = iteration_rng(self.config.seed, it);
             let target = &self.targets[rng.random_range(0..self.targets.len())];
             let camera = &self.capture.views[target.view].camera;
             let result = step::run(
                 &step_inputs,
                 &state.surfels,
-                &env,
+                self.light(&occlusion, &env, stage),
                 &state.polarizer_angles,
                 camera,
                 target,
                 stage,
             )?;
-            self.apply_gradients(&mut state, &mut env, &mut pending, &result, stage, it)?;
+            if self.apply_gradients(&mut state, &mut env, &mut pending, &result, stage, it)? {
+                if let Some(grid) = &mut occlusion.grid {
+                    grid.set_global(env.clone());
+                }
+            }
             state
                 .densify
                 .add_view(&result.mean2d_grad_norm, result.width, result.height);
@@ -333,7 +370,7 @@ impl Run<'_> {
                 && done.is_multiple_of(self.config.eval_interval)
                 && done < iterations
             {
-                if let Some(psnr) = self.test_psnr(&state, &env)? {
+                if let Some(psnr) = self.test_psnr(&state, self.light(&occlusion, &env, stage))? {
                     reporter.emit(TrainEvent::Evaluated {
                         iteration: done,
                         test_psnr: psnr,
@@ -348,6 +385,7 @@ impl Run<'_> {
                 // the same here, so the uninterrupted run and a resumed one stay bit-identical.
                 self.flush_env(&mut state, &mut env, &mut pending)?;
                 env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+                occlusion = Occlusion::default();
                 state.elapsed_seconds = elapsed();
                 state.save(&checkpoint, &fp)?;
                 reporter.emit(TrainEvent::Checkpoint { iteration: done });
@@ -357,12 +395,20 @@ impl Run<'_> {
         let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
         state.elapsed_seconds = elapsed();
         state.save(&checkpoint, &fp)?;
-        self.finish(&state, &env, reporter)?;
+        // The final evaluation lights the model as rendering it later will: GridMap rebuilt from
+        // the final state.
+        let last_stage = stage_of(iterations.saturating_sub(1), self.config);
+        let mut occlusion = Occlusion::default();
+        if last_stage == Stage::Polar && self.config.gridmap {
+            self.rebuild_gridmap(&mut occlusion, &state, &env, true);
+        }
+        self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)?;
         Ok(TrainOutcome::Finished)
     }
 
     /// One Adam step on every group the stage trains; the environment's gradient is accumulated
-    /// and applied every `envmap_prefilter_interval` steps (see [`Run::flush_env`]).
+    /// and applied every `envmap_prefilter_interval` steps (see [`Run::flush_env`]). Returns
+    /// whether the environment changed.
     fn apply_gradients(
         &self,
         state: &mut TrainState,
@@ -371,7 +417,8 @@ impl Run<'_> {
         result: &step::StepResult,
         stage: Stage,
         it: u32,
-    ) -> Result<(), TrainError> {
+    ) -> Result<bool, TrainError> {
+        let mut env_changed = false;
         let grads = result.surfels.groups();
         for ((name, params), (_, grad)) in state.surfels.groups_mut().into_iter().zip(grads) {
             let frozen = stage == Stage::Geometry && matches!(name, "roughness" | "ior");
@@ -393,7 +440,7 @@ impl Run<'_> {
                 None => pending.env = Some((env_grad.clone(), 1)),
             }
             if (it + 1).is_multiple_of(self.config.envmap_prefilter_interval) {
-                self.flush_env(state, env, pending)?;
+                env_changed = self.flush_env(state, env, pending)?;
             }
         }
         if stage == Stage::Polar && !state.polarizer_angles.is_empty() {
@@ -415,21 +462,22 @@ impl Run<'_> {
                     .insert(name, v.rem_euclid(std::f64::consts::PI));
             }
         }
-        Ok(())
+        Ok(env_changed)
     }
 
     /// Applies the accumulated environment gradient: one Adam step with the mean gradient and the
     /// learning rate scaled by the number of steps it covers (the displacement K single steps
     /// would make), then rebuilds the prefiltered map. Both the transpose of the prefilter and
-    /// the rebuild cost about as much as a whole step without them, hence the batching.
+    /// the rebuild cost about as much as a whole step without them, hence the batching. Returns
+    /// whether there was a gradient to apply.
     fn flush_env(
         &self,
         state: &mut TrainState,
         env: &mut PreparedEnv,
         pending: &mut Pending,
-    ) -> Result<(), TrainError> {
+    ) -> Result<bool, TrainError> {
         let Some((sum, count)) = pending.env.take() else {
-            return Ok(());
+            return Ok(false);
         };
         let scale = 1.0 / f64::from(count);
         let raw_grad: Vec<f64> = env.backward(&sum).iter().map(|g| g * scale).collect();
@@ -440,7 +488,7 @@ impl Run<'_> {
             self.learning_rates.envmap * f64::from(count),
         )?;
         *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-        Ok(())
+        Ok(true)
     }
 
     /// Densify/prune and opacity reset on their schedules (METHOD.md §7).
@@ -476,10 +524,66 @@ impl Run<'_> {
         Ok(())
     }
 
-    fn scene<'s>(&'s self, state: &'s TrainState, env: &'s PreparedEnv) -> Scene<'s> {
+    /// Cameras of the training views (saved with the model; the mesh is extracted from them).
+    fn train_cameras(&self) -> Vec<(String, crate::camera::Camera)> {
+        self.targets
+            .iter()
+            .map(|t| {
+                let view = &self.capture.views[t.view];
+                (view.name.clone(), view.camera)
+            })
+            .collect()
+    }
+
+    /// Extracts the mesh of the current surfels (with `remesh`, else keeps the last one) and
+    /// rebuilds GridMap's probes under the current environment. A failure (no surface yet, say)
+    /// is logged and leaves the run on the global light until the next scheduled rebuild.
+    fn rebuild_gridmap(
+        &self,
+        occlusion: &mut Occlusion,
+        state: &TrainState,
+        env: &PreparedEnv,
+        remesh: bool,
+    ) {
+        let _span = tracing::info_span!("gridmap_rebuild", iteration = state.iteration).entered();
+        occlusion.current = true;
+        if remesh {
+            let cameras: Vec<_> = self.train_cameras().into_iter().map(|(_, c)| c).collect();
+            occlusion.mesh = meshing::mesh_from_surfels(
+                &state.surfels,
+                &cameras,
+                self.backend.as_ref(),
+                &self.settings,
+                GRIDMAP_MESH_RESOLUTION,
+            )
+            .inspect_err(|e| tracing::warn!("GridMap mesh extraction failed: {e}"))
+            .ok();
+        }
+        occlusion.grid = occlusion.mesh.as_ref().and_then(|mesh| {
+            GridMap::build(mesh, &state.surfels, &state.envmap, env.clone())
+                .inspect_err(|e| tracing::warn!("GridMap build failed: {e}"))
+                .ok()
+        });
+    }
+
+    /// The light of a stage: GridMap over the environment in the PolarDR stage when it is on and
+    /// built, else the global environment.
+    fn light<'s>(
+        &self,
+        occlusion: &'s Occlusion,
+        env: &'s PreparedEnv,
+        stage: Stage,
+    ) -> &'s dyn LightProbe {
+        match &occlusion.grid {
+            Some(grid) if stage == Stage::Polar => grid,
+            _ => env,
+        }
+    }
+
+    fn scene<'s>(&'s self, state: &'s TrainState, light: &'s dyn LightProbe) -> Scene<'s> {
         Scene {
             surfels: &state.surfels,
-            light: env,
+            light,
             lut: self.lut,
             backend: self.backend.as_ref(),
             settings: self.settings,
@@ -487,12 +591,16 @@ impl Run<'_> {
     }
 
     /// Mean test-view S0 PSNR (sRGB 8-bit inside the mask), if the capture has test views.
-    fn test_psnr(&self, state: &TrainState, env: &PreparedEnv) -> Result<Option<f64>, TrainError> {
+    fn test_psnr(
+        &self,
+        state: &TrainState,
+        light: &dyn LightProbe,
+    ) -> Result<Option<f64>, TrainError> {
         if self.capture.test_views().next().is_none() {
             return Ok(None);
         }
         let report = evaluate::evaluate(
-            &self.scene(state, env),
+            &self.scene(state, light),
             self.capture,
             &state.polarizer_angles,
         )?;
@@ -503,7 +611,7 @@ impl Run<'_> {
     fn finish(
         &self,
         state: &TrainState,
-        env: &PreparedEnv,
+        light: &dyn LightProbe,
         reporter: &mut Reporter,
     ) -> Result<(), TrainError> {
         let up = self.capture.world_up;
@@ -527,6 +635,7 @@ impl Run<'_> {
             },
             surfels: state.surfels.clone(),
             envmap: state.envmap.clone(),
+            train_cameras: self.train_cameras(),
         };
         WorldUp::from_vector(up.to_array())?;
         model.save(self.model_dir)?;
@@ -541,7 +650,7 @@ impl Run<'_> {
         )?;
         if self.capture.test_views().next().is_some() {
             let mut report = evaluate::evaluate(
-                &self.scene(state, env),
+                &self.scene(state, light),
                 self.capture,
                 &state.polarizer_angles,
             )?;
@@ -559,5 +668,113 @@ impl Run<'_> {
             seconds: state.elapsed_seconds,
         });
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::synth::{synth, Shape, SynthOptions};
+
+    /// A short run on a small synthetic torus whose PolarDR stage rebuilds mesh and GridMap
+    /// several times and crosses checkpoints.
+    fn torus_run(dir: &Path) -> (Capture, TrainConfig) {
+        let capture_dir = dir.join("capture");
+        synth(
+            &capture_dir,
+            &SynthOptions {
+                shape: Shape::Torus,
+                views: 9,
+                size: 24,
+                ..SynthOptions::default()
+            },
+        )
+        .unwrap();
+        let config = TrainConfig {
+            iterations: 60,
+            initial_surfels: 1500,
+            envmap_resolution: 16,
+            geometry_stage_end: 0.2,
+            material_stage_end: 0.3,
+            checkpoint_interval: 30,
+            eval_interval: 0,
+            mesh_interval: 20,
+            gridmap_interval: 7,
+            backend: crate::config::BackendChoice::Cpu,
+            ..TrainConfig::default()
+        };
+        (crate::capture::load(&capture_dir).unwrap(), config)
+    }
+
+    #[test]
+    fn gridmap_runs_resume_bit_for_bit() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let never = AtomicBool::new(false);
+        let whole = dir.path().join("whole");
+        train(&capture, &whole, &config, false, &never, &mut |_| {}).unwrap();
+        // Interrupt right after the checkpoint at iteration 30, then resume.
+        let split = dir.path().join("split");
+        let cancel = AtomicBool::new(false);
+        let outcome = train(&capture, &split, &config, false, &cancel, &mut |e| {
+            if matches!(e, TrainEvent::Checkpoint { iteration: 30 }) {
+                cancel.store(true, Ordering::Relaxed);
+            }
+        })
+        .unwrap();
+        assert_eq!(outcome, TrainOutcome::Interrupted { iteration: 30 });
+        let outcome = train(&capture, &split, &config, true, &never, &mut |_| {}).unwrap();
+        assert_eq!(outcome, TrainOutcome::Finished);
+        let a = TrainState::load(&whole.join(CHECKPOINT_FILE)).unwrap().0;
+        let b = TrainState::load(&split.join(CHECKPOINT_FILE)).unwrap().0;
+        assert_eq!(a.iteration, 60);
+        assert_eq!(a.surfels, b.surfels);
+        assert_eq!(a.envmap, b.envmap);
+        // The model keeps its training cameras and renders with GridMap, as it was trained.
+        let model = Model::load(&whole).unwrap();
+        assert_eq!(model.train_cameras.len(), capture.train_views().count());
+        let reconstruction = crate::reconstruction::Reconstruction::new(model).unwrap();
+        assert!(reconstruction.gridmap().is_some());
+    }
+
+    #[test]
+    fn gridmap_changes_only_the_polar_stage() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let never = AtomicBool::new(false);
+        let run = |gridmap: bool, name: &str| {
+            let out = dir.path().join(name);
+            let config = TrainConfig {
+                gridmap,
+                ..config.clone()
+            };
+            train(&capture, &out, &config, false, &never, &mut |_| {}).unwrap();
+            TrainState::load(&out.join(CHECKPOINT_FILE)).unwrap().0
+        };
+        let on = run(true, "on");
+        let off = run(false, "off");
+        assert_ne!(on.surfels, off.surfels);
+        // Before the PolarDR stage both runs are the same run: stop both at the stage start.
+        let early = |gridmap: bool, name: &str| {
+            let out = dir.path().join(name);
+            let config = TrainConfig {
+                gridmap,
+                iterations: 60,
+                checkpoint_interval: 18,
+                ..config.clone()
+            };
+            let cancel = AtomicBool::new(false);
+            train(&capture, &out, &config, false, &cancel, &mut |e| {
+                if matches!(e, TrainEvent::Checkpoint { iteration: 18 }) {
+                    cancel.store(true, Ordering::Relaxed);
+                }
+            })
+            .unwrap();
+            TrainState::load(&out.join(CHECKPOINT_FILE)).unwrap().0
+        };
+        assert_eq!(
+            early(true, "early_on").surfels,
+            early(false, "early_off").surfels
+        );
     }
 }

@@ -8,7 +8,7 @@ use std::collections::BTreeMap;
 use glam::DVec3;
 
 use crate::brdf_lut::BrdfLut;
-use crate::envmap::{EnvGrad, PreparedEnv};
+use crate::envmap::{EnvGrad, LightProbe};
 use crate::events::Stage;
 use crate::loss::{self, LossWeights};
 use crate::raster::{Backend, GBufferGrads, RasterSettings};
@@ -49,12 +49,13 @@ fn add_into(dst: &mut [f64], src: &[f64], scale: f64) {
     }
 }
 
-/// Runs forward and backward for `target` seen by `camera`.
+/// Runs forward and backward for `target` seen by `camera`, shading with `light` (the global
+/// environment, or GridMap over it; the light gradient is shaped like the global environment).
 #[allow(clippy::too_many_arguments)]
 pub fn run(
     inputs: &StepInputs,
     surfels: &Surfels,
-    env: &PreparedEnv,
+    light: &dyn LightProbe,
     angles: &BTreeMap<String, f64>,
     camera: &crate::camera::Camera,
     target: &ViewTarget,
@@ -63,7 +64,7 @@ pub fn run(
     let _span = tracing::debug_span!("step", ?stage).entered();
     let scene = Scene {
         surfels,
-        light: env,
+        light,
         lut: inputs.lut,
         backend: inputs.backend,
         settings: inputs.settings,

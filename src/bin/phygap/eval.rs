@@ -1,4 +1,6 @@
-//! `phygap eval MODEL CAPTURE [--json]`: metrics of a trained model on the capture's test views.
+//! `phygap eval MODEL CAPTURE [--json] [--relight-envmap FILE] [--gt-mesh FILE]`: metrics of a
+//! trained model on the capture's test views; with a relighting map, the relit S0 against the
+//! views' `relight_s0` ground truth; with a ground-truth mesh, the Chamfer-L1 of the model's mesh.
 
 use std::path::PathBuf;
 
@@ -6,8 +8,11 @@ use anyhow::Result;
 use clap::Args;
 
 use phygap::capture;
+use phygap::evaluate;
+use phygap::meshing::{self, DEFAULT_MESH_RESOLUTION};
 use phygap::model::Model;
 use phygap::reconstruction::Reconstruction;
+use phygap::relight;
 
 #[derive(Args, Debug)]
 pub struct EvalArgs {
@@ -18,13 +23,30 @@ pub struct EvalArgs {
     /// Print only the JSON object.
     #[arg(long)]
     pub json: bool,
+    /// Lat-long map (.exr/.hdr) the capture's `relight_s0` ground truth is lit by: adds
+    /// `relight_psnr` and `relight_ssim`.
+    #[arg(long)]
+    pub relight_envmap: Option<PathBuf>,
+    /// Ground-truth mesh (PLY): adds `chamfer` (the model's mesh at the default resolution).
+    #[arg(long)]
+    pub gt_mesh: Option<PathBuf>,
 }
 
 pub fn run(args: &EvalArgs) -> Result<()> {
     let capture = capture::load(&args.capture)?;
-    let reconstruction = Reconstruction::new(Model::load(&args.model)?)?;
+    let model = Model::load(&args.model)?;
+    let reconstruction = Reconstruction::new(model.clone())?;
     let mut report = reconstruction.evaluate(&capture)?;
     report.train_seconds = Some(reconstruction.model.info.train_seconds);
+    if let Some(envmap) = &args.relight_envmap {
+        let relit = relight::relit_reconstruction(model.clone(), envmap, 0.0)?;
+        (report.relight_psnr, report.relight_ssim) =
+            evaluate::relight_metrics(&relit.scene(), &capture)?;
+    }
+    if let Some(gt) = &args.gt_mesh {
+        let mesh = meshing::extract_from_model(&model, DEFAULT_MESH_RESOLUTION)?;
+        report.chamfer = Some(evaluate::chamfer_to_gt(&mesh, gt)?);
+    }
     let json = serde_json::to_string_pretty(&report)?;
     if args.json {
         println!("{json}");
@@ -39,6 +61,9 @@ pub fn run(args: &EvalArgs) -> Result<()> {
         println!("albedo MAE      {}", fmt(report.albedo_mae));
         println!("roughness MAE   {}", fmt(report.roughness_mae));
         println!("IoR MAE         {}", fmt(report.ior_mae));
+        println!("relit PSNR (dB) {}", fmt(report.relight_psnr));
+        println!("relit SSIM      {}", fmt(report.relight_ssim));
+        println!("Chamfer-L1      {}", fmt(report.chamfer));
         println!("surfels         {}", report.num_surfels);
         println!("{json}");
     }

@@ -5,6 +5,8 @@ mod eval;
 mod export;
 mod info;
 mod inspect;
+mod mesh;
+mod relight;
 mod render;
 mod synth;
 mod train;
@@ -32,6 +34,10 @@ enum Command {
     Render(render::RenderArgs),
     /// Evaluate a model on a capture's test views (JSON metrics).
     Eval(eval::EvalArgs),
+    /// Render a model under another environment map (relighting).
+    Relight(relight::RelightArgs),
+    /// Extract a model's surface as a triangle mesh (PLY or OBJ).
+    Mesh(mesh::MeshArgs),
     /// Write a model's deliverables (surfels, environment map, config, metrics, renders).
     Export(export::ExportArgs),
     /// Render a small synthetic full-Stokes capture (sample data for a fresh machine).
@@ -50,6 +56,8 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Train(args) => train::run(&args),
         Command::Render(args) => render::run(&args),
         Command::Eval(args) => eval::run(&args),
+        Command::Relight(args) => relight::run(&args),
+        Command::Mesh(args) => mesh::run(&args),
         Command::Export(args) => export::run(&args),
         Command::Synth(args) => synth::run(&args),
         Command::Bench(args) => bench::run(&args),

@@ -33,6 +33,9 @@ pub struct TrainArgs {
     /// Seed of every random choice.
     #[arg(long)]
     pub seed: Option<u64>,
+    /// GridMap self-occlusion-aware lighting in the PolarDR stage (default on).
+    #[arg(long, value_enum)]
+    pub gridmap: Option<Switch>,
     /// JSON file with any training settings (keys: the long flag names in snake_case; see
     /// `phygap config`). Flags given on the command line override it.
     #[arg(long)]
@@ -40,6 +43,13 @@ pub struct TrainArgs {
     /// Continue from the model folder's last checkpoint.
     #[arg(long)]
     pub resume: bool,
+}
+
+/// An on/off flag value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Switch {
+    On,
+    Off,
 }
 
 impl TrainArgs {
@@ -64,6 +74,9 @@ impl TrainArgs {
         }
         if let Some(v) = self.seed {
             config.seed = v;
+        }
+        if let Some(v) = self.gridmap {
+            config.gridmap = v == Switch::On;
         }
         config.validate()?;
         Ok(config)

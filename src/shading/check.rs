@@ -41,7 +41,7 @@ pub struct GroundTruthView<'a> {
 }
 
 /// Agreement between the shading model and ground truth inside the mask.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct ShadingCheck {
     /// Masked pixels compared.
     pub pixels: usize,

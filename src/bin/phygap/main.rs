@@ -1,6 +1,7 @@
 //! The `phygap` command line: a thin shell over the library; each subcommand lives in its own module.
 
 mod bench;
+mod check_shading;
 mod eval;
 mod export;
 mod info;
@@ -42,6 +43,8 @@ enum Command {
     Export(export::ExportArgs),
     /// Render a small synthetic full-Stokes capture (sample data for a fresh machine).
     Synth(synth::SynthArgs),
+    /// Check PolarDR against a capture's ground truth (GT G-buffers and light, no rasterizer).
+    CheckShading(check_shading::CheckShadingArgs),
     /// Time the compute backends on synthetic scenes.
     Bench(bench::BenchArgs),
     /// Print the default training configuration as JSON (a template for --config).
@@ -61,6 +64,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Export(args) => export::run(&args),
         Command::Synth(args) => synth::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::CheckShading(args) => check_shading::run(&args),
         Command::Info => info::run(),
         Command::Config => {
             let config = phygap::config::TrainConfig::default();

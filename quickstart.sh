@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The main job in one command: build everything, render a sample capture with the project's own
+# renderer, start the reconstruction service (embedded SQLite store under ./phygap-data), upload the
+# capture, train it, and list the results. The service keeps running afterwards (Ctrl-C stops it).
+#
+# Settings (environment): PHYGAP_PORT (8080), PHYGAP_DATA_DIR (./phygap-data),
+# PHYGAP_QUICKSTART_ITERATIONS (3000).
+set -euo pipefail
+cd "$(dirname "$0")"
+port=${PHYGAP_PORT:-8080}
+data=${PHYGAP_DATA_DIR:-./phygap-data}
+iterations=${PHYGAP_QUICKSTART_ITERATIONS:-3000}
+base="http://127.0.0.1:$port"
+
+cargo build --release --workspace --bins
+bin=${CARGO_TARGET_DIR:-target}/release
+
+mkdir -p "$data"
+sample="$data/sample-capture"
+rm -rf "$sample"
+"$bin/phygap" synth --out "$sample" --shape sphere --views 24 --size 96
+(cd "$sample" && tar -cf ../sample-capture.tar -- *)
+
+"$bin/phygap-api" serve --bind "127.0.0.1:$port" --data-dir "$data" &
+server=$!
+trap 'kill "$server" 2>/dev/null || true' EXIT INT TERM
+for _ in $(seq 1 100); do
+  curl -fsS "$base/healthz" >/dev/null 2>&1 && break
+  sleep 0.2
+done
+
+json_field() { sed -n "s/.*\"$1\":\"\\([^\"]*\\)\".*/\\1/p"; }
+capture=$(curl -fsS --data-binary @"$data/sample-capture.tar" "$base/v1/captures" | json_field id)
+echo "uploaded capture $capture"
+job=$(curl -fsS -H 'content-type: application/json' \
+  -d "{\"capture_id\":\"$capture\",\"config\":{\"iterations\":$iterations}}" \
+  "$base/v1/jobs" | json_field id)
+echo "submitted job $job ($iterations iterations); progress:"
+while true; do
+  status=$(curl -fsS "$base/v1/jobs/$job")
+  state=$(echo "$status" | json_field state)
+  iteration=$(echo "$status" | sed -n 's/.*"iteration":\([0-9]*\).*/\1/p')
+  printf '\r  %-10s iteration %s/%s   ' "$state" "${iteration:-0}" "$iterations"
+  case "$state" in succeeded|failed|cancelled) echo; break ;; esac
+  sleep 2
+done
+echo "$status"
+echo "artifacts:"
+curl -fsS "$base/v1/jobs/$job/artifacts"
+echo
+echo "service running at $base (data in $data); fetch e.g.:"
+echo "  curl -o mesh.ply $base/v1/jobs/$job/artifacts/mesh.ply"
+echo "  curl -o envmap.exr $base/v1/jobs/$job/artifacts/envmap.exr"
+echo "Ctrl-C stops it."
+wait "$server"

@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 use common::*;
 use phygap_api::store::{JobState, SqliteStore, Store};
 
-const LONG: Duration = Duration::from_secs(60);
+const LONG: Duration = Duration::from_secs(240);
 const CHILD_DIR_VAR: &str = "PHYGAP_API_TEST_CHILD_DATA_DIR";
 
 fn stored_state(data_dir: &Path, id: &str) -> (JobState, u32) {

@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 use common::*;
 use serde_json::{json, Value};
 
-const LONG: Duration = Duration::from_secs(60);
+const LONG: Duration = Duration::from_secs(240);
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn upload_train_and_download_every_artifact() {
@@ -55,6 +55,7 @@ async fn upload_train_and_download_every_artifact() {
     for expected in [
         "config.json",
         "envmap.exr",
+        "mesh.ply",
         "metrics.json",
         "model.json",
         "renders/s0/000.exr",
@@ -97,7 +98,7 @@ async fn upload_train_and_download_every_artifact() {
             "model.json" | "config.json" => {
                 assert_eq!(content_type, "application/json");
             }
-            "surfels.ply" => assert!(bytes.starts_with(b"ply\n")),
+            "surfels.ply" | "mesh.ply" => assert!(bytes.starts_with(b"ply\n")),
             other if other.ends_with(".png") => assert_eq!(&bytes[1..4], b"PNG"),
             other if other.ends_with(".exr") => assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01]),
             other => panic!("unexpected artifact {other}"),
@@ -139,7 +140,7 @@ async fn upload_train_and_download_every_artifact() {
         .await;
     assert_eq!(status, 404, "{body}");
     let (status, body) = t
-        .get_json(&format!("/v1/jobs/{id}/artifacts/mesh.ply"))
+        .get_json(&format!("/v1/jobs/{id}/artifacts/no-such-file.ply"))
         .await;
     assert_eq!((status, error_code(&body).0), (404, "not_found"));
 

@@ -105,6 +105,9 @@ pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u
     Ok(total)
 }
 
+/// Bytes of an oversized upload read (and dropped) before answering 413.
+const DRAIN_BEFORE_REJECT: usize = 8 << 20;
+
 /// Rejects early when the declared length is already over the limit.
 pub fn check_content_length(headers: &HeaderMap, limit: u64) -> Result<(), ApiError> {
     let declared = headers
@@ -176,7 +179,12 @@ pub async fn upload(
     body: Body,
 ) -> Result<(StatusCode, Json<CaptureView>), ApiError> {
     let limit = state.config.max_upload_bytes;
-    check_content_length(&headers, limit)?;
+    if let Err(too_large) = check_content_length(&headers, limit) {
+        // Read and discard a bounded part of the body first: a client still sending it would
+        // otherwise see the connection reset instead of this 413. Past the bound we just close.
+        let _ = axum::body::to_bytes(body, DRAIN_BEFORE_REJECT).await;
+        return Err(too_large);
+    }
     let id = new_id("cap");
     let staging = TempDir::create(state.paths.tmp.join(&id))?;
     let archive = staging.path().join("upload");

@@ -101,6 +101,8 @@ pub fn train_config(iterations: u32, checkpoint_interval: u32) -> Value {
         "eval_interval": checkpoint_interval,
         "initial_surfels": 100,
         "max_surfels": 1000,
+        // The service is under test here, not GridMap (which adds mesh and probe builds per job).
+        "gridmap": false,
     })
 }
 

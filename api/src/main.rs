@@ -9,7 +9,8 @@ use phygap_api::cli::{Cli, Command};
 async fn main() -> anyhow::Result<()> {
     tracing_subscriber::fmt()
         .with_env_filter(
-            tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "info".into()),
+            tracing_subscriber::EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| "info,wgpu_hal=error,wgpu_core=error".into()),
         )
         .with_writer(std::io::stderr)
         .init();

@@ -29,8 +29,8 @@ use wgpu::util::DeviceExt;
 use super::{GpuContext, GpuError};
 use crate::camera::Camera;
 use crate::raster::{
-    depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads, GBuffers,
-    RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
+    check_same_scene, depth_normals, depth_normals_backward, validate_inputs, Backend,
+    GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
 };
 use crate::surfels::{SurfelGrads, Surfels};
 
@@ -920,15 +920,12 @@ impl Backend for GpuBackend {
             .saved
             .downcast_ref::<Saved>()
             .ok_or(RasterError::ForwardMismatch("not a gpu forward result"))?;
-        if saved.num_surfels != surfels.len() {
-            return Err(RasterError::ForwardMismatch("surfel count differs"));
-        }
-        if saved.camera != *camera {
-            return Err(RasterError::ForwardMismatch("camera differs"));
-        }
-        if saved.settings != *settings {
-            return Err(RasterError::ForwardMismatch("settings differ"));
-        }
+        check_same_scene(
+            (saved.num_surfels, &saved.camera, &saved.settings),
+            surfels,
+            camera,
+            settings,
+        )?;
         let gb = &forward.gbuffers;
         upstream.check_size(gb.width, gb.height)?;
         let _span = info_span!("raster_backward", backend = "gpu").entered();

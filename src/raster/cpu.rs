@@ -23,8 +23,8 @@ use tracing::info_span;
 
 use super::project::{self, Projected, ProjectedGrad, ProjectionCamera, NUM_FEATURES};
 use super::{
-    depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads, GBuffers,
-    RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
+    check_same_scene, depth_normals, depth_normals_backward, validate_inputs, Backend,
+    GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
 };
 use crate::camera::Camera;
 use crate::surfels::{SurfelGrads, Surfels};
@@ -462,15 +462,12 @@ impl Backend for CpuBackend {
             .saved
             .downcast_ref::<Saved>()
             .ok_or(RasterError::ForwardMismatch("not a cpu forward result"))?;
-        if saved.num_surfels != surfels.len() {
-            return Err(RasterError::ForwardMismatch("surfel count differs"));
-        }
-        if saved.camera != *camera {
-            return Err(RasterError::ForwardMismatch("camera differs"));
-        }
-        if saved.settings != *settings {
-            return Err(RasterError::ForwardMismatch("settings differ"));
-        }
+        check_same_scene(
+            (saved.num_surfels, &saved.camera, &saved.settings),
+            surfels,
+            camera,
+            settings,
+        )?;
         let gb = &forward.gbuffers;
         let (w, h) = (gb.width, gb.height);
         upstream.check_size(w, h)?;

@@ -263,6 +263,27 @@ pub trait Backend: Send + Sync {
     ) -> Result<RasterGrads, RasterError>;
 }
 
+/// Checks that a saved forward pass — its surfel count, camera and settings — belongs to this
+/// backward call; every backend's `backward` starts with it.
+pub fn check_same_scene(
+    saved: (usize, &Camera, &RasterSettings),
+    surfels: &Surfels,
+    camera: &Camera,
+    settings: &RasterSettings,
+) -> Result<(), RasterError> {
+    let (num_surfels, saved_camera, saved_settings) = saved;
+    if num_surfels != surfels.len() {
+        return Err(RasterError::ForwardMismatch("surfel count differs"));
+    }
+    if saved_camera != camera {
+        return Err(RasterError::ForwardMismatch("camera differs"));
+    }
+    if saved_settings != settings {
+        return Err(RasterError::ForwardMismatch("settings differ"));
+    }
+    Ok(())
+}
+
 /// Checks the inputs every backend needs.
 pub fn validate_inputs(
     surfels: &Surfels,

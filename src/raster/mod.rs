@@ -449,6 +449,49 @@ pub fn depth_normals_backward(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_forward_pass_of_another_scene_is_refused_by_name() {
+        let camera = Camera::look_at(8, 6, 0.7, DVec3::new(0.0, -3.0, 0.0), DVec3::ZERO, DVec3::Z);
+        let other = Camera::look_at(8, 6, 0.7, DVec3::new(0.0, -4.0, 0.0), DVec3::ZERO, DVec3::Z);
+        let settings = RasterSettings::default();
+        let surfels = Surfels::zeros(2);
+        assert!(check_same_scene((2, &camera, &settings), &surfels, &camera, &settings).is_ok());
+        let cases = [
+            (
+                check_same_scene((3, &camera, &settings), &surfels, &camera, &settings),
+                "surfel count",
+            ),
+            (
+                check_same_scene((2, &other, &settings), &surfels, &camera, &settings),
+                "camera",
+            ),
+            (
+                check_same_scene(
+                    (
+                        2,
+                        &camera,
+                        &RasterSettings {
+                            near: 0.5,
+                            ..settings
+                        },
+                    ),
+                    &surfels,
+                    &camera,
+                    &settings,
+                ),
+                "settings",
+            ),
+        ];
+        for (result, what) in cases {
+            match result {
+                Err(RasterError::ForwardMismatch(message)) => {
+                    assert!(message.contains(what), "{message}")
+                }
+                other => panic!("{what}: expected a mismatch, got {other:?}"),
+            }
+        }
+    }
     use crate::gradcheck::assert_gradient;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;

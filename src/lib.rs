@@ -4,6 +4,7 @@
 //! (PolarDR) into Stokes images, and fitted to captured polarization. The science is in
 //! `shared/docs/METHOD.md`; each module is named after the concept it computes.
 
+pub mod allocator;
 pub mod backend;
 pub mod bench;
 pub mod brdf_lut;

@@ -5,8 +5,14 @@ use anyhow::Context;
 use clap::Parser;
 use phygap_api::cli::{Cli, Command};
 
-#[tokio::main]
-async fn main() -> anyhow::Result<()> {
+fn main() -> anyhow::Result<()> {
+    phygap::allocator::keep_large_buffers();
+    tokio::runtime::Runtime::new()
+        .context("starting the async runtime")?
+        .block_on(serve())
+}
+
+async fn serve() -> anyhow::Result<()> {
     tracing_subscriber::fmt()
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env()

@@ -30,11 +30,14 @@ pub struct EvalArgs {
     /// Ground-truth mesh (PLY): adds `chamfer` (the model's mesh at the default resolution).
     #[arg(long)]
     pub gt_mesh: Option<PathBuf>,
+    #[arg(long, help = crate::GRIDMAP_OVERRIDE_HELP)]
+    pub gridmap: Option<crate::Switch>,
 }
 
 pub fn run(args: &EvalArgs) -> Result<()> {
     let capture = capture::load(&args.capture)?;
-    let model = Model::load(&args.model)?;
+    let mut model = Model::load(&args.model)?;
+    crate::override_gridmap(&mut model, args.gridmap);
     let reconstruction = Reconstruction::new(model.clone())?;
     let mut report = reconstruction.evaluate(&capture)?;
     report.train_seconds = Some(reconstruction.model.info.train_seconds);

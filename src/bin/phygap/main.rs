@@ -53,6 +53,24 @@ enum Command {
     Info,
 }
 
+/// An on/off flag value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Switch {
+    On,
+    Off,
+}
+
+/// Help text of the `--gridmap` override of the commands that render a trained model.
+const GRIDMAP_OVERRIDE_HELP: &str = "Render with GridMap on or off regardless of how the model \
+was trained (the ablation of METHOD.md §5); default: as trained";
+
+/// Applies a `--gridmap` override to a loaded model before it is rendered.
+fn override_gridmap(model: &mut phygap::model::Model, switch: Option<Switch>) {
+    if let Some(switch) = switch {
+        model.config.gridmap = switch == Switch::On;
+    }
+}
+
 fn run(command: Command) -> anyhow::Result<()> {
     match command {
         Command::Inspect(args) => inspect::run(&args),
@@ -75,6 +93,7 @@ fn run(command: Command) -> anyhow::Result<()> {
 }
 
 fn main() {
+    phygap::allocator::keep_large_buffers();
     tracing_subscriber::fmt()
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env()

@@ -30,10 +30,13 @@ pub struct RelightArgs {
     /// Also write the S1 and S2 images.
     #[arg(long)]
     pub stokes: bool,
+    #[arg(long, help = crate::GRIDMAP_OVERRIDE_HELP)]
+    pub gridmap: Option<crate::Switch>,
 }
 
 pub fn run(args: &RelightArgs) -> Result<()> {
-    let model = Model::load(&args.model)?;
+    let mut model = Model::load(&args.model)?;
+    crate::override_gridmap(&mut model, args.gridmap);
     let cameras_file = args
         .cameras
         .clone()

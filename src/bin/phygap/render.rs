@@ -20,10 +20,14 @@ pub struct RenderArgs {
     /// Output folder: one sub-folder per output kind, files NNN.exr / NNN.png per camera.
     #[arg(long)]
     pub out: PathBuf,
+    #[arg(long, help = crate::GRIDMAP_OVERRIDE_HELP)]
+    pub gridmap: Option<crate::Switch>,
 }
 
 pub fn run(args: &RenderArgs) -> Result<()> {
-    let reconstruction = Reconstruction::new(Model::load(&args.model)?)?;
+    let mut model = Model::load(&args.model)?;
+    crate::override_gridmap(&mut model, args.gridmap);
+    let reconstruction = Reconstruction::new(model)?;
     let cameras = capture::load_cameras(&args.cameras)?;
     let files = reconstruction.render_to_dir(&cameras, &args.out, &OUTPUT_KINDS)?;
     println!(

@@ -14,6 +14,8 @@ use phygap::config::{BackendChoice, Mode, TrainConfig};
 use phygap::events::TrainEvent;
 use phygap::train::{self, TrainOutcome};
 
+use crate::Switch;
+
 #[derive(Args, Debug)]
 pub struct TrainArgs {
     /// Capture folder (with transforms.json) or a transforms JSON file.
@@ -43,13 +45,6 @@ pub struct TrainArgs {
     /// Continue from the model folder's last checkpoint.
     #[arg(long)]
     pub resume: bool,
-}
-
-/// An on/off flag value.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Switch {
-    On,
-    Off,
 }
 
 impl TrainArgs {

@@ -1,5 +1,6 @@
-//! Timing of rasterizer backends on a synthetic object: surfels tangent to the unit sphere, seen
-//! from distance 4 with a 40° field of view (the framing of the shared captures).
+//! Timings for `phygap bench`: the rasterizer backends on a synthetic object (surfels tangent to
+//! the unit sphere, seen from distance 4 with a 40° field of view, the framing of the shared
+//! captures), and GridMap's periodic rebuild on a trained model.
 //!
 //! Surfels sit on a Fibonacci lattice of the sphere with scale `0.6 × spacing`, so the shell is
 //! covered with overlap; both hemispheres are rasterized (surfels are two-sided), as in training.
@@ -14,7 +15,12 @@ use serde::{Deserialize, Serialize};
 use tracing::info_span;
 
 use crate::camera::Camera;
+use crate::envmap::{EnvMapError, PreparedEnv};
+use crate::gridmap::{GridMap, GridMapError};
+use crate::meshing::{self, MeshingError, GRIDMAP_MESH_RESOLUTION};
+use crate::model::Model;
 use crate::raster::{Backend, GBuffers, RasterError, RasterSettings};
+use crate::reconstruction::prefilter_plan;
 use crate::surfels::{logit, Surfels};
 
 /// One benchmark measurement.
@@ -151,6 +157,66 @@ pub fn bench_raster(
         });
     }
     Ok(rows)
+}
+
+/// What GridMap costs a training run of `model`: the mesh it traces (re-extracted every
+/// `mesh_interval` steps) and the rebuild of its probes (every `gridmap_interval` steps).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GridMapTiming {
+    pub surfels: usize,
+    pub mesh_resolution: usize,
+    pub triangles: usize,
+    /// Mesh extraction (depth rendering from the training cameras, TSDF, marching cubes).
+    pub mesh_seconds: f64,
+    pub anchors: usize,
+    /// Median rebuild (BVH, anchors, probe rendering, prefiltering).
+    pub rebuild_seconds: f64,
+}
+
+/// Times the mesh extraction once and the GridMap rebuild `repeats` times (median) for `model`.
+pub fn bench_gridmap(model: &Model, repeats: usize) -> Result<GridMapTiming, BenchError> {
+    let _span = info_span!("bench_gridmap", surfels = model.surfels.len()).entered();
+    let backend = crate::backend::select(model.config.backend)?;
+    let start = Instant::now();
+    let mesh = meshing::mesh_from_surfels(
+        &model.surfels,
+        &meshing::model_cameras(model),
+        backend.as_ref(),
+        &RasterSettings::default(),
+        GRIDMAP_MESH_RESOLUTION,
+    )?;
+    let mesh_seconds = start.elapsed().as_secs_f64();
+    let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
+    let env = PreparedEnv::new(&model.envmap, plan)?;
+    let mut times = Vec::with_capacity(repeats.max(1));
+    let mut anchors = 0;
+    for _ in 0..repeats.max(1) {
+        let start = Instant::now();
+        let grid = GridMap::build(&mesh, &model.surfels, &model.envmap, env.clone())?;
+        times.push(start.elapsed().as_secs_f64());
+        anchors = grid.anchors().len();
+    }
+    Ok(GridMapTiming {
+        surfels: model.surfels.len(),
+        mesh_resolution: GRIDMAP_MESH_RESOLUTION,
+        triangles: mesh.triangles.len(),
+        mesh_seconds,
+        anchors,
+        rebuild_seconds: median(times),
+    })
+}
+
+/// Why a benchmark of a trained model could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    #[error(transparent)]
+    Backend(#[from] crate::backend::BackendError),
+    #[error(transparent)]
+    Meshing(#[from] MeshingError),
+    #[error(transparent)]
+    EnvMap(#[from] EnvMapError),
+    #[error(transparent)]
+    GridMap(#[from] GridMapError),
 }
 
 #[cfg(test)]

@@ -19,6 +19,10 @@ use rayon::prelude::*;
 use super::grid::{add_rgb, rgb, CubeGrid};
 use super::{activate, activate_derivative, CubeMap, EnvMapError};
 
+/// Output texels per rayon task of [`Convolution::forward_batch`]: their accumulators (16 × 1.3 KiB
+/// for 56 maps) and one source block's rows (64 × 1.3 KiB) stay in the core's L2 cache.
+const OUTPUTS_PER_TASK: usize = 16;
+
 /// Shape and roughness schedule of the specular mip chain.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MipChainSpec {
@@ -257,34 +261,47 @@ impl Convolution {
     /// hold `batch · 3` values per texel (`[texel][map][rgb]`). Each kernel weight is evaluated once
     /// and applied to every map; per map the sums run in the same order as [`Self::apply`], so
     /// the results are bit-identical to filtering the maps one by one.
+    ///
+    /// A source row is `batch · 3` values (1.3 KiB for GridMap's 56 probes), so the task that
+    /// owns [`OUTPUTS_PER_TASK`] neighbouring output texels walks the source blocks once and
+    /// applies each block's rows, still in cache, to all of its outputs, rather than streaming
+    /// the whole lobe from memory once per output texel.
     fn forward_batch(&self, grid: &CubeGrid, src: &[f64], batch: usize) -> Vec<f64> {
         let width = batch * 3;
         let mut out = vec![0.0; grid.num_texels() * width];
-        out.par_chunks_mut(width).enumerate().for_each(|(o, out)| {
-            let n = grid.dirs[o];
-            for (block, &threshold) in grid.blocks.iter().zip(&self.thresholds) {
-                if n.dot(block.center) < threshold {
-                    continue;
-                }
-                let texels = &grid.block_texels[block.start..block.end];
-                let dirs = &grid.block_dirs[block.start..block.end];
-                for (&t, d) in texels.iter().zip(dirs) {
-                    let c = n.dot(*d);
-                    if c <= self.cos_cut {
-                        continue;
+        out.par_chunks_mut(width * OUTPUTS_PER_TASK)
+            .enumerate()
+            .for_each(|(task, out)| {
+                let first = task * OUTPUTS_PER_TASK;
+                for (block, &threshold) in grid.blocks.iter().zip(&self.thresholds) {
+                    let texels = &grid.block_texels[block.start..block.end];
+                    let dirs = &grid.block_dirs[block.start..block.end];
+                    for (k, acc) in out.chunks_mut(width).enumerate() {
+                        let n = grid.dirs[first + k];
+                        if n.dot(block.center) < threshold {
+                            continue;
+                        }
+                        for (&t, d) in texels.iter().zip(dirs) {
+                            let c = n.dot(*d);
+                            if c <= self.cos_cut {
+                                continue;
+                            }
+                            let t = t as usize;
+                            let w = self.kernel.eval(c) * grid.solid_angle[t];
+                            let row = &src[t * width..(t + 1) * width];
+                            for (a, s) in acc.iter_mut().zip(row) {
+                                *a += w * s;
+                            }
+                        }
                     }
-                    let t = t as usize;
-                    let w = self.kernel.eval(c) * grid.solid_angle[t];
-                    let row = &src[t * width..(t + 1) * width];
-                    for (acc, s) in out.iter_mut().zip(row) {
-                        *acc += w * s;
+                }
+                if let Some(z) = &self.normalizer {
+                    for (k, acc) in out.chunks_mut(width).enumerate() {
+                        let z = z[first + k];
+                        acc.iter_mut().for_each(|x| *x /= z);
                     }
                 }
-            }
-            if let Some(z) = &self.normalizer {
-                out.iter_mut().for_each(|x| *x /= z[o]);
-            }
-        });
+            });
         out
     }
 

@@ -1,11 +1,15 @@
-//! `phygap bench ...`: timing of the compute backends on synthetic scenes.
+//! `phygap bench ...`: timing of the compute backends on synthetic scenes, and of GridMap's
+//! rebuild on a trained model.
 
 use anyhow::Result;
 use clap::{Args, Subcommand};
 
 use phygap::backend::select;
-use phygap::bench::bench_raster;
+use std::path::PathBuf;
+
+use phygap::bench::{bench_gridmap, bench_raster};
 use phygap::config::BackendChoice;
+use phygap::model::Model;
 
 #[derive(Args)]
 pub struct BenchArgs {
@@ -17,6 +21,20 @@ pub struct BenchArgs {
 enum BenchWhat {
     /// Rasterizer forward and forward+backward on surfels covering a unit sphere.
     Raster(RasterBenchArgs),
+    /// GridMap on a trained model: mesh extraction and the probes' rebuild.
+    Gridmap(GridMapBenchArgs),
+}
+
+#[derive(Args)]
+struct GridMapBenchArgs {
+    /// Model folder written by `phygap train`.
+    model: PathBuf,
+    /// Timed rebuilds (the median is reported).
+    #[arg(long, default_value_t = 3)]
+    repeats: usize,
+    /// Print the timing as JSON.
+    #[arg(long)]
+    json: bool,
 }
 
 #[derive(Args)]
@@ -66,6 +84,24 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                         r.evaluations_per_s()
                     );
                 }
+            }
+        }
+        BenchWhat::Gridmap(a) => {
+            let t = bench_gridmap(&Model::load(&a.model)?, a.repeats)?;
+            if a.json {
+                println!("{}", serde_json::to_string_pretty(&t)?);
+            } else {
+                println!(
+                    "mesh    {:.2} s  ({} surfels -> {} triangles at resolution {})",
+                    t.mesh_seconds, t.surfels, t.triangles, t.mesh_resolution
+                );
+                println!(
+                    "rebuild {:.2} s  ({} anchors, median of {}, {} threads)",
+                    t.rebuild_seconds,
+                    t.anchors,
+                    a.repeats.max(1),
+                    rayon::current_num_threads()
+                );
             }
         }
     }

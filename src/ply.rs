@@ -367,11 +367,19 @@ pub fn parse_ply(bytes: &[u8]) -> Result<Ply, PlyError> {
     }
     let format = format.ok_or_else(|| header_error(line_no, "no `format` line".into()))?;
     let body = &bytes[offset..];
-    let elements = match format {
-        PlyFormat::Ascii => read_ascii_body(body, declared)?,
-        PlyFormat::BinaryLittleEndian => read_binary_body(body, declared, true)?,
-        PlyFormat::BinaryBigEndian => read_binary_body(body, declared, false)?,
+    let text;
+    let values = match format {
+        PlyFormat::Ascii => {
+            text = String::from_utf8_lossy(body);
+            BodyValues::Ascii(text.split_whitespace())
+        }
+        PlyFormat::BinaryLittleEndian | PlyFormat::BinaryBigEndian => BodyValues::Binary {
+            bytes: body,
+            at: 0,
+            little_endian: format == PlyFormat::BinaryLittleEndian,
+        },
     };
+    let elements = read_body(values, declared, body.len())?;
     Ok(Ply {
         format,
         comments,
@@ -407,33 +415,64 @@ fn empty_values(
         .collect()
 }
 
-fn read_binary_body(
-    body: &[u8],
+/// The values of a body in file order, whatever its encoding.
+enum BodyValues<'a> {
+    Ascii(std::str::SplitWhitespace<'a>),
+    Binary {
+        bytes: &'a [u8],
+        at: usize,
+        little_endian: bool,
+    },
+}
+
+impl BodyValues<'_> {
+    /// The next value, read as `kind`, or what is wrong with it.
+    fn next(&mut self, kind: ScalarType) -> Result<f64, String> {
+        let ends_early = || "file ends early".to_owned();
+        match self {
+            BodyValues::Ascii(tokens) => {
+                let token = tokens.next().ok_or_else(ends_early)?;
+                token
+                    .parse()
+                    .map_err(|_| format!("`{token}` is not a number"))
+            }
+            BodyValues::Binary {
+                bytes,
+                at,
+                little_endian,
+            } => {
+                let value = bytes.get(*at..*at + kind.size()).ok_or_else(ends_early)?;
+                *at += kind.size();
+                Ok(kind.decode(value, *little_endian))
+            }
+        }
+    }
+}
+
+/// Reads the rows of every declared element from `values`; `body_len` bounds the reservations.
+fn read_body(
+    mut values: BodyValues,
     declared: Vec<DeclaredElement>,
-    little_endian: bool,
+    body_len: usize,
 ) -> Result<Vec<Element>, PlyError> {
-    let mut at = 0usize;
-    let mut elements = Vec::new();
+    let mut elements = Vec::with_capacity(declared.len());
     for DeclaredElement {
         name,
         count,
         properties: props,
     } in declared
     {
-        let mut properties = empty_values(&props, count, body.len());
+        let mut properties = empty_values(&props, count, body_len);
         for row in 0..count {
-            let truncated = || PlyError::Body {
-                element: name.clone(),
-                row,
-                message: "file ends early".into(),
+            let mut take = |kind: ScalarType| {
+                values.next(kind).map_err(|message| PlyError::Body {
+                    element: name.clone(),
+                    row,
+                    message,
+                })
             };
-            let mut take = |kind: ScalarType| -> Result<f64, PlyError> {
-                let bytes = body.get(at..at + kind.size()).ok_or_else(truncated)?;
-                at += kind.size();
-                Ok(kind.decode(bytes, little_endian))
-            };
-            for (_, values) in properties.iter_mut() {
-                match values {
+            for (_, column) in properties.iter_mut() {
+                match column {
                     PropertyValues::Scalar { kind, values } => values.push(take(*kind)?),
                     PropertyValues::List {
                         count: count_type,
@@ -444,51 +483,6 @@ fn read_binary_body(
                         let list = (0..n)
                             .map(|_| take(*item))
                             .collect::<Result<Vec<f64>, _>>()?;
-                        values.push(list);
-                    }
-                }
-            }
-        }
-        elements.push(Element {
-            name,
-            count,
-            properties,
-        });
-    }
-    Ok(elements)
-}
-
-fn read_ascii_body(body: &[u8], declared: Vec<DeclaredElement>) -> Result<Vec<Element>, PlyError> {
-    let text = String::from_utf8_lossy(body);
-    let body_len = text.len();
-    let mut tokens = text.split_whitespace();
-    let mut elements = Vec::new();
-    for DeclaredElement {
-        name,
-        count,
-        properties: props,
-    } in declared
-    {
-        let mut properties = empty_values(&props, count, body_len);
-        for row in 0..count {
-            let mut take = || -> Result<f64, PlyError> {
-                let token = tokens.next().ok_or_else(|| PlyError::Body {
-                    element: name.clone(),
-                    row,
-                    message: "file ends early".into(),
-                })?;
-                token.parse().map_err(|_| PlyError::Body {
-                    element: name.clone(),
-                    row,
-                    message: format!("`{token}` is not a number"),
-                })
-            };
-            for (_, values) in properties.iter_mut() {
-                match values {
-                    PropertyValues::Scalar { values, .. } => values.push(take()?),
-                    PropertyValues::List { values, .. } => {
-                        let n = list_length(take()?, &name, row)?;
-                        let list = (0..n).map(|_| take()).collect::<Result<Vec<f64>, _>>()?;
                         values.push(list);
                     }
                 }

@@ -189,6 +189,7 @@ struct Saved {
 }
 
 impl SavedForward for Saved {
+    const NOT_THIS_BACKEND: &'static str = "not a gpu forward result";
     fn scene(&self) -> (usize, &Camera, &RasterSettings) {
         (self.num_surfels, &self.camera, &self.settings)
     }
@@ -921,14 +922,7 @@ impl Backend for GpuBackend {
         forward: &Rasterized,
         upstream: &GBufferGrads,
     ) -> Result<RasterGrads, RasterError> {
-        let saved: &Saved = begin_backward(
-            surfels,
-            camera,
-            settings,
-            forward,
-            upstream,
-            "not a gpu forward result",
-        )?;
+        let saved: &Saved = begin_backward(surfels, camera, settings, forward, upstream)?;
         let gb = &forward.gbuffers;
         let _span = info_span!("raster_backward", backend = "gpu").entered();
         self.scoped("backward", || {

@@ -50,6 +50,7 @@ struct Saved {
 }
 
 impl SavedForward for Saved {
+    const NOT_THIS_BACKEND: &'static str = "not a cpu forward result";
     fn scene(&self) -> (usize, &Camera, &RasterSettings) {
         (self.num_surfels, &self.camera, &self.settings)
     }
@@ -463,14 +464,7 @@ impl Backend for CpuBackend {
         forward: &Rasterized,
         upstream: &GBufferGrads,
     ) -> Result<RasterGrads, RasterError> {
-        let saved: &Saved = begin_backward(
-            surfels,
-            camera,
-            settings,
-            forward,
-            upstream,
-            "not a cpu forward result",
-        )?;
+        let saved: &Saved = begin_backward(surfels, camera, settings, forward, upstream)?;
         let gb = &forward.gbuffers;
         let _span = info_span!("raster_backward", backend = "cpu").entered();
         let eps = settings.normalize_alpha_min;

@@ -266,13 +266,15 @@ pub trait Backend: Send + Sync {
 /// What a backend keeps from its forward pass for the backward pass (the `saved` of
 /// [`Rasterized`]): at least the scene it was computed for.
 pub trait SavedForward: Any {
+    /// The error message when `backward` is given another backend's forward result.
+    const NOT_THIS_BACKEND: &'static str;
     /// The surfel count, camera and settings of the forward pass.
     fn scene(&self) -> (usize, &Camera, &RasterSettings);
 }
 
 /// The checks every backend's `backward` starts with, in order: the inputs are valid
 /// ([`validate_inputs`]), `forward` was computed by this backend (its saved state is an `S`, else
-/// `ForwardMismatch(not_this_backend)`) for the same scene ([`check_same_scene`]), and `upstream`
+/// `ForwardMismatch(S::NOT_THIS_BACKEND)`) for the same scene ([`check_same_scene`]), and `upstream`
 /// has the size of the forward G-buffers. Returns the backend's saved state.
 pub fn begin_backward<'a, S: SavedForward>(
     surfels: &Surfels,
@@ -280,13 +282,12 @@ pub fn begin_backward<'a, S: SavedForward>(
     settings: &RasterSettings,
     forward: &'a Rasterized,
     upstream: &GBufferGrads,
-    not_this_backend: &'static str,
 ) -> Result<&'a S, RasterError> {
     validate_inputs(surfels, camera, settings)?;
     let saved = forward
         .saved
         .downcast_ref::<S>()
-        .ok_or(RasterError::ForwardMismatch(not_this_backend))?;
+        .ok_or(RasterError::ForwardMismatch(S::NOT_THIS_BACKEND))?;
     check_same_scene(saved.scene(), surfels, camera, settings)?;
     upstream.check_size(forward.gbuffers.width, forward.gbuffers.height)?;
     Ok(saved)
@@ -526,6 +527,7 @@ mod tests {
     fn backward_starts_by_checking_backend_scene_and_upstream_size() {
         struct Ours(usize, Camera, RasterSettings);
         impl SavedForward for Ours {
+            const NOT_THIS_BACKEND: &'static str = "not ours";
             fn scene(&self) -> (usize, &Camera, &RasterSettings) {
                 (self.0, &self.1, &self.2)
             }
@@ -542,7 +544,7 @@ mod tests {
         let ours = forward(Box::new(Ours(2, camera, settings)));
         let upstream = GBuffers::zeros(8, 6);
         let begin = |forward: &Rasterized, upstream: &GBufferGrads, settings: &RasterSettings| {
-            begin_backward::<Ours>(&surfels, &camera, settings, forward, upstream, "not ours")
+            begin_backward::<Ours>(&surfels, &camera, settings, forward, upstream)
                 .map(|saved| saved.0)
         };
         assert_eq!(begin(&ours, &upstream, &settings).unwrap(), 2);

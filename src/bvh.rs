@@ -714,6 +714,7 @@ mod tests {
             vertices: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
             normals: vec![[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
             triangles: vec![[0, 1, 2]],
+            material_ids: Vec::new(),
         };
         let bvh = Bvh::build(&mesh);
         let hit = bvh
@@ -854,6 +855,7 @@ mod tests {
             vertices: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
             normals: Vec::new(),
             triangles: vec![[0, 1, 2]; 37],
+            material_ids: Vec::new(),
         };
         let bvh = Bvh::build(&same);
         assert!(bvh.nodes.iter().all(|n| n.count as usize <= MAX_LEAF));

@@ -25,7 +25,6 @@ pub mod image_io;
 pub mod kdtree;
 pub mod loss;
 pub mod mesh;
-pub mod mesh_io;
 pub mod meshing;
 pub mod metrics;
 pub mod model;

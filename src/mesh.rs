@@ -1,8 +1,8 @@
 //! Triangle meshes: PLY/OBJ input and output, TSDF fusion of depth maps followed by marching cubes
 //! (METHOD.md §8), surface sampling and the unidirectional Chamfer-L1 metric.
 //!
-//! The submodules split the work: [`ply`] reads and writes PLY files, [`tsdf`] fuses depth maps into
-//! a truncated signed distance grid, [`marching_cubes`] turns that grid into a welded mesh, and
+//! The submodules split the work: [`ply`] maps meshes to and from documents of the crate's one PLY
+//! parser ([`crate::ply`]), [`tsdf`] fuses depth maps into a truncated signed distance grid, [`marching_cubes`] turns that grid into a welded mesh, and
 //! [`chamfer`] measures the distance from one mesh to another. Long stages run inside `tracing` spans
 //! and use rayon over independent voxel slabs or sample chunks.
 
@@ -32,8 +32,11 @@ pub enum MeshError {
         path: PathBuf,
         source: std::io::Error,
     },
-    #[error("PLY file {path}: {problem}")]
-    Ply { path: PathBuf, problem: String },
+    #[error("PLY file {path}: {source}")]
+    Ply {
+        path: PathBuf,
+        source: crate::ply::PlyError,
+    },
     #[error("TSDF fusion needs at least one depth view")]
     NoViews,
     #[error("depth view {view}: {what} has {actual} values but the camera has {expected} pixels")]
@@ -60,22 +63,26 @@ pub enum MeshError {
 }
 
 /// An indexed triangle mesh in world coordinates. `normals` is either empty or holds one unit
-/// normal per vertex. Triangles are counter-clockwise seen from outside.
+/// normal per vertex. Triangles are counter-clockwise seen from outside. `material_ids` is either
+/// empty or holds one material id per triangle (the GT meshes' 1-based index into scene.json's
+/// materials).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TriangleMesh {
     pub vertices: Vec<[f64; 3]>,
     pub normals: Vec<[f64; 3]>,
     pub triangles: Vec<[u32; 3]>,
+    pub material_ids: Vec<u8>,
 }
 
 impl TriangleMesh {
-    /// Reads a PLY file (ASCII or binary, any property order; polygons are fan-triangulated).
+    /// Reads a PLY file (ASCII or binary, any property order; polygons are fan-triangulated, a
+    /// per-face `material_id` is kept on each of its triangles).
     pub fn read_ply(path: &Path) -> Result<Self, MeshError> {
         ply::read_ply(path)
     }
 
     /// Writes a binary little-endian PLY: float `x y z` (+ `nx ny nz` when normals are present),
-    /// faces as `list uchar int vertex_indices`.
+    /// faces as `list uchar int vertex_indices` (+ `uchar material_id` when ids are present).
     pub fn write_ply(&self, path: &Path) -> Result<(), MeshError> {
         ply::write_ply(self, path)
     }
@@ -166,7 +173,8 @@ impl TriangleMesh {
     }
 
     /// Keeps the connected component (triangles linked through shared vertices) with the most
-    /// triangles and drops the vertices no longer referenced. Normals are kept when present.
+    /// triangles and drops the vertices no longer referenced. Normals and material ids are kept
+    /// when present.
     pub fn keep_largest_component(&mut self) {
         let n = self.vertices.len();
         let mut parent: Vec<u32> = (0..n as u32).collect();
@@ -195,13 +203,19 @@ impl TriangleMesh {
         else {
             return;
         };
-        let triangles: Vec<[u32; 3]> = self
+        let keep: Vec<bool> = self
             .triangles
             .iter()
-            .copied()
-            .filter(|t| find(&mut parent, t[0]) as usize == largest)
+            .map(|t| find(&mut parent, t[0]) as usize == largest)
             .collect();
-        self.triangles = triangles;
+        let mut kept = keep.iter();
+        self.triangles
+            .retain(|_| *kept.next().expect("one flag per triangle"));
+        if self.material_ids.len() == keep.len() {
+            let mut kept = keep.iter();
+            self.material_ids
+                .retain(|_| *kept.next().expect("one flag per triangle"));
+        }
         self.drop_unreferenced_vertices();
     }
 
@@ -296,6 +310,7 @@ impl TriangleMesh {
                 .collect(),
             normals: dirs.iter().map(|d| d.to_array()).collect(),
             triangles,
+            material_ids: Vec::new(),
         }
     }
 }
@@ -331,8 +346,12 @@ mod tests {
         both.normals.extend(&big.normals);
         both.triangles
             .extend(big.triangles.iter().map(|t| t.map(|i| i + offset)));
+        both.material_ids = (0..both.triangles.len())
+            .map(|t| if t < small.triangles.len() { 9 } else { 2 })
+            .collect();
         both.keep_largest_component();
         assert_eq!(both.triangles.len(), big.triangles.len());
+        assert_eq!(both.material_ids, vec![2; big.triangles.len()]);
         assert_eq!(both.vertices.len(), big.vertices.len());
         assert!(both
             .vertices

@@ -1,6 +1,8 @@
-//! A small PLY reader and writer (ASCII, binary little- and big-endian): elements of scalar and
-//! list properties, every value held as f64 in memory. Typed readers build on it
-//! ([`crate::mesh_io`] for triangle meshes, [`crate::surfels::ply`] for surfels).
+//! The one PLY reader and writer of the crate (ASCII, binary little- and big-endian): elements of
+//! scalar and list properties of every PLY type, in any order, every value held as f64 in memory.
+//! Row counts from the header never drive allocations beyond what the body can hold, so a corrupt
+//! header is an error, not an abort. Typed layers build on it (`crate::mesh` for triangle meshes,
+//! [`crate::surfels::ply`] for surfels).
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -93,18 +95,30 @@ impl ScalarType {
         }
     }
 
-    /// Appends `value` in little-endian binary (integers are rounded and saturated).
-    fn encode_le(self, value: f64, out: &mut Vec<u8>) {
+    /// Appends `value` in little-endian binary (integers are rounded), or `None` when `value`
+    /// does not fit the type (an integer type out of range or not finite).
+    fn encode_le(self, value: f64, out: &mut Vec<u8>) -> Option<()> {
+        let integer = |min: f64, max: f64| {
+            let rounded = value.round();
+            (rounded >= min && rounded <= max).then_some(rounded)
+        };
         match self {
-            ScalarType::I8 => out.extend((value.round() as i8).to_le_bytes()),
-            ScalarType::U8 => out.extend((value.round() as u8).to_le_bytes()),
-            ScalarType::I16 => out.extend((value.round() as i16).to_le_bytes()),
-            ScalarType::U16 => out.extend((value.round() as u16).to_le_bytes()),
-            ScalarType::I32 => out.extend((value.round() as i32).to_le_bytes()),
-            ScalarType::U32 => out.extend((value.round() as u32).to_le_bytes()),
+            ScalarType::I8 => {
+                out.extend((integer(i8::MIN as f64, i8::MAX as f64)? as i8).to_le_bytes())
+            }
+            ScalarType::U8 => out.extend((integer(0.0, u8::MAX as f64)? as u8).to_le_bytes()),
+            ScalarType::I16 => {
+                out.extend((integer(i16::MIN as f64, i16::MAX as f64)? as i16).to_le_bytes())
+            }
+            ScalarType::U16 => out.extend((integer(0.0, u16::MAX as f64)? as u16).to_le_bytes()),
+            ScalarType::I32 => {
+                out.extend((integer(i32::MIN as f64, i32::MAX as f64)? as i32).to_le_bytes())
+            }
+            ScalarType::U32 => out.extend((integer(0.0, u32::MAX as f64)? as u32).to_le_bytes()),
             ScalarType::F32 => out.extend((value as f32).to_le_bytes()),
             ScalarType::F64 => out.extend(value.to_le_bytes()),
         }
+        Some(())
     }
 }
 
@@ -277,7 +291,7 @@ pub fn parse_ply(bytes: &[u8]) -> Result<Ply, PlyError> {
                 .to_owned(),
         )
     };
-    if next_line(&mut offset).as_deref() != Some("ply") {
+    if next_line(&mut offset).as_deref().map(str::trim) != Some("ply") {
         return Err(header_error(
             1,
             "not a PLY file (first line is not `ply`)".into(),
@@ -353,11 +367,19 @@ pub fn parse_ply(bytes: &[u8]) -> Result<Ply, PlyError> {
     }
     let format = format.ok_or_else(|| header_error(line_no, "no `format` line".into()))?;
     let body = &bytes[offset..];
-    let elements = match format {
-        PlyFormat::Ascii => read_ascii_body(body, declared)?,
-        PlyFormat::BinaryLittleEndian => read_binary_body(body, declared, true)?,
-        PlyFormat::BinaryBigEndian => read_binary_body(body, declared, false)?,
+    let text;
+    let values = match format {
+        PlyFormat::Ascii => {
+            text = String::from_utf8_lossy(body);
+            BodyValues::Ascii(text.split_whitespace())
+        }
+        PlyFormat::BinaryLittleEndian | PlyFormat::BinaryBigEndian => BodyValues::Binary {
+            bytes: body,
+            at: 0,
+            little_endian: format == PlyFormat::BinaryLittleEndian,
+        },
     };
+    let elements = read_body(values, declared, body.len())?;
     Ok(Ply {
         format,
         comments,
@@ -365,7 +387,15 @@ pub fn parse_ply(bytes: &[u8]) -> Result<Ply, PlyError> {
     })
 }
 
-fn empty_values(declared: &[(String, Declared)], count: usize) -> Vec<(String, PropertyValues)> {
+/// Empty value columns for an element of `count` rows, with room reserved for at most
+/// `body_len` rows (every row takes at least one byte of the body, so larger counts from a corrupt
+/// header fail on reading instead of reserving memory).
+fn empty_values(
+    declared: &[(String, Declared)],
+    count: usize,
+    body_len: usize,
+) -> Vec<(String, PropertyValues)> {
+    let count = count.min(body_len);
     declared
         .iter()
         .map(|(name, d)| {
@@ -385,48 +415,72 @@ fn empty_values(declared: &[(String, Declared)], count: usize) -> Vec<(String, P
         .collect()
 }
 
-fn read_binary_body(
-    body: &[u8],
+/// The values of a body in file order, whatever its encoding.
+enum BodyValues<'a> {
+    Ascii(std::str::SplitWhitespace<'a>),
+    Binary {
+        bytes: &'a [u8],
+        at: usize,
+        little_endian: bool,
+    },
+}
+
+impl BodyValues<'_> {
+    /// The next value, read as `kind`, or what is wrong with it.
+    fn next(&mut self, kind: ScalarType) -> Result<f64, String> {
+        let ends_early = || "file ends early".to_owned();
+        match self {
+            BodyValues::Ascii(tokens) => {
+                let token = tokens.next().ok_or_else(ends_early)?;
+                token
+                    .parse()
+                    .map_err(|_| format!("`{token}` is not a number"))
+            }
+            BodyValues::Binary {
+                bytes,
+                at,
+                little_endian,
+            } => {
+                let value = bytes.get(*at..*at + kind.size()).ok_or_else(ends_early)?;
+                *at += kind.size();
+                Ok(kind.decode(value, *little_endian))
+            }
+        }
+    }
+}
+
+/// Reads the rows of every declared element from `values`; `body_len` bounds the reservations.
+fn read_body(
+    mut values: BodyValues,
     declared: Vec<DeclaredElement>,
-    little_endian: bool,
+    body_len: usize,
 ) -> Result<Vec<Element>, PlyError> {
-    let mut at = 0usize;
-    let mut elements = Vec::new();
+    let mut elements = Vec::with_capacity(declared.len());
     for DeclaredElement {
         name,
         count,
         properties: props,
     } in declared
     {
-        let mut properties = empty_values(&props, count);
+        let mut properties = empty_values(&props, count, body_len);
         for row in 0..count {
-            let truncated = || PlyError::Body {
-                element: name.clone(),
-                row,
-                message: "file ends early".into(),
+            let mut take = |kind: ScalarType| {
+                values.next(kind).map_err(|message| PlyError::Body {
+                    element: name.clone(),
+                    row,
+                    message,
+                })
             };
-            let mut take = |kind: ScalarType| -> Result<f64, PlyError> {
-                let bytes = body.get(at..at + kind.size()).ok_or_else(truncated)?;
-                at += kind.size();
-                Ok(kind.decode(bytes, little_endian))
-            };
-            for (_, values) in properties.iter_mut() {
-                match values {
+            for (_, column) in properties.iter_mut() {
+                match column {
                     PropertyValues::Scalar { kind, values } => values.push(take(*kind)?),
                     PropertyValues::List {
                         count: count_type,
                         item,
                         values,
                     } => {
-                        let n = take(*count_type)?;
-                        if n < 0.0 {
-                            return Err(PlyError::Body {
-                                element: name.clone(),
-                                row,
-                                message: format!("negative list length {n}"),
-                            });
-                        }
-                        let list = (0..n as usize)
+                        let n = list_length(take(*count_type)?, &name, row)?;
+                        let list = (0..n)
                             .map(|_| take(*item))
                             .collect::<Result<Vec<f64>, _>>()?;
                         values.push(list);
@@ -443,48 +497,17 @@ fn read_binary_body(
     Ok(elements)
 }
 
-fn read_ascii_body(body: &[u8], declared: Vec<DeclaredElement>) -> Result<Vec<Element>, PlyError> {
-    let text = String::from_utf8_lossy(body);
-    let mut tokens = text.split_whitespace();
-    let mut elements = Vec::new();
-    for DeclaredElement {
-        name,
-        count,
-        properties: props,
-    } in declared
-    {
-        let mut properties = empty_values(&props, count);
-        for row in 0..count {
-            let mut take = || -> Result<f64, PlyError> {
-                let token = tokens.next().ok_or_else(|| PlyError::Body {
-                    element: name.clone(),
-                    row,
-                    message: "file ends early".into(),
-                })?;
-                token.parse().map_err(|_| PlyError::Body {
-                    element: name.clone(),
-                    row,
-                    message: format!("`{token}` is not a number"),
-                })
-            };
-            for (_, values) in properties.iter_mut() {
-                match values {
-                    PropertyValues::Scalar { values, .. } => values.push(take()?),
-                    PropertyValues::List { values, .. } => {
-                        let n = take()?.max(0.0) as usize;
-                        let list = (0..n).map(|_| take()).collect::<Result<Vec<f64>, _>>()?;
-                        values.push(list);
-                    }
-                }
-            }
-        }
-        elements.push(Element {
-            name,
-            count,
-            properties,
-        });
+/// A list length read from the body: a non-negative integer, or an error naming the row.
+fn list_length(n: f64, element: &str, row: usize) -> Result<usize, PlyError> {
+    if n >= 0.0 && n.fract() == 0.0 && n <= u32::MAX as f64 {
+        Ok(n as usize)
+    } else {
+        Err(PlyError::Body {
+            element: element.to_owned(),
+            row,
+            message: format!("invalid list length {n}"),
+        })
     }
-    Ok(elements)
 }
 
 /// Serializes a document as binary little-endian PLY (whatever `ply.format` says).
@@ -523,19 +546,28 @@ pub fn to_binary_le(ply: &Ply) -> Result<Vec<u8>, PlyError> {
     out.extend(header.as_bytes());
     for element in &ply.elements {
         for row in 0..element.count {
-            for (_, values) in &element.properties {
+            for (name, values) in &element.properties {
+                let encode = |kind: ScalarType, value: f64, out: &mut Vec<u8>| {
+                    kind.encode_le(value, out).ok_or_else(|| PlyError::Invalid {
+                        element: element.name.clone(),
+                        message: format!(
+                            "property `{name}` row {row}: {value} does not fit a {}",
+                            kind.name()
+                        ),
+                    })
+                };
                 match values {
                     PropertyValues::Scalar { kind, values } => {
-                        kind.encode_le(values[row], &mut out)
+                        encode(*kind, values[row], &mut out)?
                     }
                     PropertyValues::List {
                         count,
                         item,
                         values,
                     } => {
-                        count.encode_le(values[row].len() as f64, &mut out);
+                        encode(*count, values[row].len() as f64, &mut out)?;
                         for v in &values[row] {
-                            item.encode_le(*v, &mut out);
+                            encode(*item, *v, &mut out)?;
                         }
                     }
                 }
@@ -636,5 +668,69 @@ property int y\r\nelement face 1\r\nproperty list uchar uint vertex_index\r\nend
         let mut bad = sample();
         bad.elements[0].count = 4;
         assert!(matches!(to_binary_le(&bad), Err(PlyError::Invalid { .. })));
+    }
+
+    #[test]
+    fn corrupt_counts_and_list_lengths_are_named_errors() {
+        // A row count far beyond what the body holds fails on reading, without reserving memory.
+        let huge = b"ply\nformat binary_little_endian 1.0\nelement vertex 999999999999999\n\
+property float x\nend_header\n\x00\x00\x80\x3f";
+        let e = parse_ply(huge).unwrap_err().to_string();
+        assert!(
+            e.contains("`vertex` row 1") && e.contains("ends early"),
+            "{e}"
+        );
+        let list = |length: &str| {
+            format!(
+                "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n\
+end_header\n{length} 0 1 2\n"
+            )
+        };
+        assert_eq!(
+            parse_ply(list("3").as_bytes()).unwrap().elements[0].list("vertex_indices"),
+            Some(&[vec![0.0, 1.0, 2.0]][..])
+        );
+        for bad in ["-1", "2.5"] {
+            let e = parse_ply(list(bad).as_bytes()).unwrap_err().to_string();
+            assert!(
+                e.contains("`face` row 0") && e.contains(&format!("invalid list length {bad}")),
+                "{e}"
+            );
+        }
+        let mut big = b"ply\nformat binary_big_endian 1.0\nelement face 1\n\
+property list char int vertex_indices\nend_header\n"
+            .to_vec();
+        big.push(0xff); // -1 as a signed char
+        let e = parse_ply(&big).unwrap_err().to_string();
+        assert!(e.contains("invalid list length -1"), "{e}");
+    }
+
+    #[test]
+    fn integers_that_do_not_fit_their_type_are_refused_on_writing() {
+        for (kind, value) in [
+            (ScalarType::U8, 256.0),
+            (ScalarType::U8, -1.0),
+            (ScalarType::I32, 2_147_483_648.0),
+            (ScalarType::U16, f64::NAN),
+        ] {
+            let ply = Ply {
+                format: PlyFormat::BinaryLittleEndian,
+                comments: Vec::new(),
+                elements: vec![Element::new("v", 2).with_scalar("a", kind, vec![0.0, value])],
+            };
+            let e = to_binary_le(&ply).unwrap_err().to_string();
+            assert!(
+                e.contains("`v`") && e.contains("`a` row 1") && e.contains(kind.name()),
+                "{e}"
+            );
+        }
+        let edges = Ply {
+            format: PlyFormat::BinaryLittleEndian,
+            comments: Vec::new(),
+            elements: vec![Element::new("v", 2)
+                .with_scalar("a", ScalarType::I8, vec![-128.0, 127.0])
+                .with_scalar("b", ScalarType::U32, vec![0.0, u32::MAX as f64])],
+        };
+        assert_eq!(parse_ply(&to_binary_le(&edges).unwrap()).unwrap(), edges);
     }
 }

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 use super::*;
 use crate::image_io::read_image;
-use crate::mesh_io::read_mesh;
+use crate::mesh::TriangleMesh;
 
 fn data_dir() -> Option<PathBuf> {
     let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data"));
@@ -140,10 +140,10 @@ fn point_triangle_distance_cases() {
 fn gt_depth_backprojects_onto_the_knot_mesh() {
     let Some(data) = data_dir() else { return };
     let capture = load(&data.join("knot")).unwrap();
-    let mesh = read_mesh(&data.join("knot/mesh.ply")).unwrap();
+    let mesh = TriangleMesh::read_ply(&data.join("knot/mesh.ply")).unwrap();
     let triangles: Vec<([DVec3; 3], DVec3, f64)> = (0..mesh.triangles.len())
         .map(|t| {
-            let corners = mesh.corners(t);
+            let corners = mesh.triangle_corners(t);
             let centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
             let radius = corners
                 .iter()
@@ -155,9 +155,9 @@ fn gt_depth_backprojects_onto_the_knot_mesh() {
     let distance_to_mesh = |p: DVec3| {
         // Nearest vertex bounds the distance; only triangles whose sphere is nearer are tested.
         let mut best = mesh
-            .positions
+            .vertices
             .iter()
-            .map(|v| (*v - p).length())
+            .map(|v| (DVec3::from_array(*v) - p).length())
             .fold(f64::INFINITY, f64::min);
         for ([a, b, c], centroid, radius) in &triangles {
             if (*centroid - p).length() - radius < best {

@@ -29,8 +29,8 @@ use wgpu::util::DeviceExt;
 use super::{GpuContext, GpuError};
 use crate::camera::Camera;
 use crate::raster::{
-    check_same_scene, depth_normals, depth_normals_backward, validate_inputs, Backend,
-    GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
+    begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
+    GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
 };
 use crate::surfels::{SurfelGrads, Surfels};
 
@@ -186,6 +186,13 @@ struct Saved {
     gbuf: wgpu::Buffer,
     final_t: wgpu::Buffer,
     contrib: wgpu::Buffer,
+}
+
+impl SavedForward for Saved {
+    const NOT_THIS_BACKEND: &'static str = "not a gpu forward result";
+    fn scene(&self) -> (usize, &Camera, &RasterSettings) {
+        (self.num_surfels, &self.camera, &self.settings)
+    }
 }
 
 fn gpu_err(e: impl std::fmt::Display) -> RasterError {
@@ -915,19 +922,8 @@ impl Backend for GpuBackend {
         forward: &Rasterized,
         upstream: &GBufferGrads,
     ) -> Result<RasterGrads, RasterError> {
-        validate_inputs(surfels, camera, settings)?;
-        let saved = forward
-            .saved
-            .downcast_ref::<Saved>()
-            .ok_or(RasterError::ForwardMismatch("not a gpu forward result"))?;
-        check_same_scene(
-            (saved.num_surfels, &saved.camera, &saved.settings),
-            surfels,
-            camera,
-            settings,
-        )?;
+        let saved: &Saved = begin_backward(surfels, camera, settings, forward, upstream)?;
         let gb = &forward.gbuffers;
-        upstream.check_size(gb.width, gb.height)?;
         let _span = info_span!("raster_backward", backend = "gpu").entered();
         self.scoped("backward", || {
             self.backward_impl(saved, camera, settings, gb, upstream)

@@ -144,6 +144,7 @@ mod tests {
             ],
             normals: Vec::new(),
             triangles: vec![[0, 1, 2], [3, 4, 5]],
+            material_ids: Vec::new(),
         };
         let mut rng = ChaCha8Rng::seed_from_u64(9);
         let points = sample_surface(&mesh, 40_000, &mut rng);

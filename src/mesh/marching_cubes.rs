@@ -251,6 +251,7 @@ pub fn marching_cubes(grid: &ScalarGrid) -> TriangleMesh {
         vertices,
         normals: Vec::new(),
         triangles,
+        material_ids: Vec::new(),
     }
 }
 

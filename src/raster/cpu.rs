@@ -23,8 +23,8 @@ use tracing::info_span;
 
 use super::project::{self, Projected, ProjectedGrad, ProjectionCamera, NUM_FEATURES};
 use super::{
-    check_same_scene, depth_normals, depth_normals_backward, validate_inputs, Backend,
-    GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized,
+    begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
+    GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
 };
 use crate::camera::Camera;
 use crate::surfels::{SurfelGrads, Surfels};
@@ -47,6 +47,13 @@ struct Saved {
     /// up to and including the last one composited.
     final_transmittance: Vec<f64>,
     contributors: Vec<u32>,
+}
+
+impl SavedForward for Saved {
+    const NOT_THIS_BACKEND: &'static str = "not a cpu forward result";
+    fn scene(&self) -> (usize, &Camera, &RasterSettings) {
+        (self.num_surfels, &self.camera, &self.settings)
+    }
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -457,20 +464,8 @@ impl Backend for CpuBackend {
         forward: &Rasterized,
         upstream: &GBufferGrads,
     ) -> Result<RasterGrads, RasterError> {
-        validate_inputs(surfels, camera, settings)?;
-        let saved = forward
-            .saved
-            .downcast_ref::<Saved>()
-            .ok_or(RasterError::ForwardMismatch("not a cpu forward result"))?;
-        check_same_scene(
-            (saved.num_surfels, &saved.camera, &saved.settings),
-            surfels,
-            camera,
-            settings,
-        )?;
+        let saved: &Saved = begin_backward(surfels, camera, settings, forward, upstream)?;
         let gb = &forward.gbuffers;
-        let (w, h) = (gb.width, gb.height);
-        upstream.check_size(w, h)?;
         let _span = info_span!("raster_backward", backend = "cpu").entered();
         let eps = settings.normalize_alpha_min;
 

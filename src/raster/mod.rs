@@ -263,8 +263,38 @@ pub trait Backend: Send + Sync {
     ) -> Result<RasterGrads, RasterError>;
 }
 
+/// What a backend keeps from its forward pass for the backward pass (the `saved` of
+/// [`Rasterized`]): at least the scene it was computed for.
+pub trait SavedForward: Any {
+    /// The error message when `backward` is given another backend's forward result.
+    const NOT_THIS_BACKEND: &'static str;
+    /// The surfel count, camera and settings of the forward pass.
+    fn scene(&self) -> (usize, &Camera, &RasterSettings);
+}
+
+/// The checks every backend's `backward` starts with, in order: the inputs are valid
+/// ([`validate_inputs`]), `forward` was computed by this backend (its saved state is an `S`, else
+/// `ForwardMismatch(S::NOT_THIS_BACKEND)`) for the same scene ([`check_same_scene`]), and `upstream`
+/// has the size of the forward G-buffers. Returns the backend's saved state.
+pub fn begin_backward<'a, S: SavedForward>(
+    surfels: &Surfels,
+    camera: &Camera,
+    settings: &RasterSettings,
+    forward: &'a Rasterized,
+    upstream: &GBufferGrads,
+) -> Result<&'a S, RasterError> {
+    validate_inputs(surfels, camera, settings)?;
+    let saved = forward
+        .saved
+        .downcast_ref::<S>()
+        .ok_or(RasterError::ForwardMismatch(S::NOT_THIS_BACKEND))?;
+    check_same_scene(saved.scene(), surfels, camera, settings)?;
+    upstream.check_size(forward.gbuffers.width, forward.gbuffers.height)?;
+    Ok(saved)
+}
+
 /// Checks that a saved forward pass — its surfel count, camera and settings — belongs to this
-/// backward call; every backend's `backward` starts with it.
+/// backward call; [`begin_backward`] runs it for every backend.
 pub fn check_same_scene(
     saved: (usize, &Camera, &RasterSettings),
     surfels: &Surfels,
@@ -492,6 +522,58 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn backward_starts_by_checking_backend_scene_and_upstream_size() {
+        struct Ours(usize, Camera, RasterSettings);
+        impl SavedForward for Ours {
+            const NOT_THIS_BACKEND: &'static str = "not ours";
+            fn scene(&self) -> (usize, &Camera, &RasterSettings) {
+                (self.0, &self.1, &self.2)
+            }
+        }
+        struct Theirs;
+        let camera = Camera::look_at(8, 6, 0.7, DVec3::new(0.0, -3.0, 0.0), DVec3::ZERO, DVec3::Z);
+        let settings = RasterSettings::default();
+        let surfels = Surfels::zeros(2);
+        let forward = |saved: Box<dyn Any + Send + Sync>| Rasterized {
+            gbuffers: GBuffers::zeros(8, 6),
+            stats: RasterStats::default(),
+            saved,
+        };
+        let ours = forward(Box::new(Ours(2, camera, settings)));
+        let upstream = GBuffers::zeros(8, 6);
+        let begin = |forward: &Rasterized, upstream: &GBufferGrads, settings: &RasterSettings| {
+            begin_backward::<Ours>(&surfels, &camera, settings, forward, upstream)
+                .map(|saved| saved.0)
+        };
+        assert_eq!(begin(&ours, &upstream, &settings).unwrap(), 2);
+        assert!(matches!(
+            begin(&forward(Box::new(Theirs)), &upstream, &settings),
+            Err(RasterError::ForwardMismatch("not ours"))
+        ));
+        assert!(matches!(
+            begin(
+                &forward(Box::new(Ours(3, camera, settings))),
+                &upstream,
+                &settings
+            ),
+            Err(RasterError::ForwardMismatch("surfel count differs"))
+        ));
+        assert!(matches!(
+            begin(&ours, &GBuffers::zeros(6, 8), &settings),
+            Err(RasterError::GradSizeMismatch { .. })
+        ));
+        let invalid = RasterSettings {
+            alpha_max: 1.5,
+            ..settings
+        };
+        assert!(matches!(
+            begin(&ours, &upstream, &invalid),
+            Err(RasterError::InvalidSetting(_))
+        ));
+    }
+
     use crate::gradcheck::assert_gradient;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;

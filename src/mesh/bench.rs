@@ -11,9 +11,8 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
-use super::{
-    cameras_around, extract_mesh, sphere_depth_maps, DepthView, MeshError, TriangleMesh, TsdfParams,
-};
+use super::tsdf::AnalyticSphere;
+use super::{extract_mesh, MeshError, TriangleMesh, TsdfParams};
 use crate::bvh::Bvh;
 
 /// Result of one extraction benchmark.
@@ -35,29 +34,15 @@ pub fn time_extraction(
     views: usize,
     image_size: u32,
 ) -> Result<ExtractionTiming, MeshError> {
-    let radius = 0.9;
-    let cameras = cameras_around(views, 3.4, image_size, 40f64.to_radians());
-    let depths = sphere_depth_maps(&cameras, DVec3::ZERO, radius);
-    let depth_views: Vec<DepthView> = cameras
-        .iter()
-        .zip(&depths)
-        .map(|(camera, depth)| DepthView {
-            camera,
-            depth,
-            alpha: None,
-        })
-        .collect();
+    let sphere = AnalyticSphere::new(0.9, views, 3.4, image_size);
+    let depth_views = sphere.views(None);
     let bounds = (DVec3::splat(-1.0), DVec3::splat(1.0));
     let params = TsdfParams::automatic(resolution, &depth_views, bounds);
     let start = Instant::now();
     let mesh = extract_mesh(&depth_views, bounds, &params)?;
     let seconds = start.elapsed().as_secs_f64();
     let voxel = 2.0 / resolution as f64;
-    let worst = mesh
-        .vertices
-        .iter()
-        .map(|v| (DVec3::from_array(*v).length() - radius).abs())
-        .fold(0.0, f64::max);
+    let worst = sphere.worst_radial_error(&mesh);
     Ok(ExtractionTiming {
         resolution,
         views,

@@ -633,6 +633,57 @@ pub fn sphere_depth_maps(cameras: &[Camera], centre: DVec3, radius: f64) -> Vec<
         .collect()
 }
 
+/// One [`DepthView`] per camera with the depth map of the same index, every view with `alpha`.
+pub(crate) fn depth_views<'a>(
+    cameras: &'a [Camera],
+    depths: &'a [Vec<f64>],
+    alpha: Option<&'a [f64]>,
+) -> Vec<DepthView<'a>> {
+    cameras
+        .iter()
+        .zip(depths)
+        .map(|(camera, depth)| DepthView {
+            camera,
+            depth,
+            alpha,
+        })
+        .collect()
+}
+
+/// A sphere of `radius` at the origin seen by cameras around it (40° field of view), with its exact
+/// depth maps: the ground truth of the fusion tests and the extraction benchmark.
+pub(crate) struct AnalyticSphere {
+    pub radius: f64,
+    pub cameras: Vec<Camera>,
+    pub depths: Vec<Vec<f64>>,
+}
+
+impl AnalyticSphere {
+    /// `views` cameras of `image_size`² pixels on a Fibonacci sphere of radius `distance`.
+    pub fn new(radius: f64, views: usize, distance: f64, image_size: u32) -> Self {
+        let cameras = cameras_around(views, distance, image_size, 40f64.to_radians());
+        let depths = sphere_depth_maps(&cameras, DVec3::ZERO, radius);
+        AnalyticSphere {
+            radius,
+            cameras,
+            depths,
+        }
+    }
+
+    /// The depth views to fuse, every one with `alpha`.
+    pub fn views<'a>(&'a self, alpha: Option<&'a [f64]>) -> Vec<DepthView<'a>> {
+        depth_views(&self.cameras, &self.depths, alpha)
+    }
+
+    /// Largest |‖v‖ − radius| over the vertices of `mesh`.
+    pub fn worst_radial_error(&self, mesh: &TriangleMesh) -> f64 {
+        mesh.vertices
+            .iter()
+            .map(|v| (DVec3::from_array(*v).length() - self.radius).abs())
+            .fold(0.0, f64::max)
+    }
+}
+
 /// `count` cameras on a Fibonacci sphere of radius `distance` around the origin, looking at it.
 pub fn cameras_around(count: usize, distance: f64, size: u32, fov_x_rad: f64) -> Vec<Camera> {
     let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
@@ -653,34 +704,15 @@ mod tests {
     use super::*;
     use std::collections::HashMap;
 
-    fn sphere_views(count: usize, size: u32, radius: f64) -> (Vec<Camera>, Vec<Vec<f64>>) {
-        let cameras = cameras_around(count, 3.0, size, 40f64.to_radians());
-        let depths = sphere_depth_maps(&cameras, DVec3::ZERO, radius);
-        (cameras, depths)
-    }
-
     #[test]
     fn analytic_sphere_depth_fuses_into_a_closed_accurate_sphere() {
-        let radius = 0.8;
-        let (cameras, depths) = sphere_views(20, 128, radius);
-        let views: Vec<DepthView> = cameras
-            .iter()
-            .zip(&depths)
-            .map(|(camera, depth)| DepthView {
-                camera,
-                depth,
-                alpha: None,
-            })
-            .collect();
+        let sphere = AnalyticSphere::new(0.8, 20, 3.0, 128);
+        let views = sphere.views(None);
         let bounds = (DVec3::splat(-1.0), DVec3::splat(1.0));
         let params = TsdfParams::automatic(64, &views, bounds);
         let mesh = extract_mesh(&views, bounds, &params).unwrap();
         let voxel = 2.0 / 64.0;
-        let worst = mesh
-            .vertices
-            .iter()
-            .map(|v| (DVec3::from_array(*v).length() - radius).abs())
-            .fold(0.0, f64::max);
+        let worst = sphere.worst_radial_error(&mesh);
         assert!(
             worst < 0.5 * voxel,
             "worst radial error {worst} (voxel {voxel})"
@@ -710,21 +742,11 @@ mod tests {
     #[test]
     fn background_alpha_carves_and_far_depth_is_ignored() {
         // A view whose alpha says "background everywhere" removes the surface its depth shows.
-        let radius = 0.5;
-        let (cameras, depths) = sphere_views(12, 64, radius);
-        let transparent = vec![0.0; cameras[0].num_pixels()];
+        let sphere = AnalyticSphere::new(0.5, 12, 3.0, 64);
+        let transparent = vec![0.0; sphere.cameras[0].num_pixels()];
         let bounds = (DVec3::splat(-1.0), DVec3::splat(1.0));
         let fused = |alpha: Option<&[f64]>| {
-            let views: Vec<DepthView> = cameras
-                .iter()
-                .zip(&depths)
-                .map(|(camera, depth)| DepthView {
-                    camera,
-                    depth,
-                    alpha,
-                })
-                .collect();
-            fuse_tsdf(&views, bounds, &TsdfParams::new(32)).unwrap()
+            fuse_tsdf(&sphere.views(alpha), bounds, &TsdfParams::new(32)).unwrap()
         };
         let solid = fused(None);
         // The voxel centre nearest (0.4, 0, 0) lies 0.09 inside the surface, within truncation.
@@ -742,15 +764,7 @@ mod tests {
             .iter()
             .zip(&carved.known)
             .all(|(v, k)| !k || *v == 1.0));
-        let views: Vec<DepthView> = cameras
-            .iter()
-            .zip(&depths)
-            .map(|(camera, depth)| DepthView {
-                camera,
-                depth,
-                alpha: None,
-            })
-            .collect();
+        let views = sphere.views(None);
         let mut params = TsdfParams::new(32);
         params.depth_max = 1.0; // every sphere depth (≈ 2.5) is beyond it
         assert!(matches!(
@@ -996,15 +1010,7 @@ mod tests {
                     .collect::<Vec<f64>>(),
             );
         }
-        let views: Vec<DepthView> = cameras
-            .iter()
-            .zip(&depths)
-            .map(|(camera, depth)| DepthView {
-                camera,
-                depth,
-                alpha: None,
-            })
-            .collect();
+        let views = depth_views(&cameras, &depths, None);
         let bounds = (DVec3::splat(-1.1), DVec3::splat(1.1));
         let params = TsdfParams::automatic(128, &views, bounds);
         let mesh = extract_mesh(&views, bounds, &params).unwrap();

@@ -18,6 +18,14 @@ fn load(capture_dir: &Path) -> Result<phygap::capture::Capture, PipelineError> {
     phygap::capture::load(capture_dir).map_err(|e| PipelineError::InvalidCapture(e.to_string()))
 }
 
+/// The error of a core `stage` that failed while running.
+fn failed(stage: &'static str, error: impl std::fmt::Display) -> PipelineError {
+    PipelineError::Failed {
+        stage,
+        message: error.to_string(),
+    }
+}
+
 impl Pipeline for CorePipeline {
     fn inspect(&self, capture_dir: &Path) -> Result<CaptureInfo, PipelineError> {
         let summary = load(capture_dir)?.summary();
@@ -43,18 +51,12 @@ impl Pipeline for CorePipeline {
             Ok(phygap::train::TrainOutcome::Interrupted { iteration }) => {
                 Ok(RunOutcome::Interrupted { iteration })
             }
-            Err(e) => Err(PipelineError::Failed {
-                stage: "training",
-                message: e.to_string(),
-            }),
+            Err(e) => Err(failed("training", e)),
         }
     }
 
     fn export(&self, model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
-        phygap::export::export(model_dir, out_dir).map_err(|e| PipelineError::Failed {
-            stage: "export",
-            message: e.to_string(),
-        })
+        phygap::export::export(model_dir, out_dir).map_err(|e| failed("export", e))
     }
 
     fn relight(
@@ -65,11 +67,7 @@ impl Pipeline for CorePipeline {
         out_dir: &Path,
         rotate_deg: f64,
     ) -> Result<Vec<PathBuf>, PipelineError> {
-        phygap::relight::relight(model_dir, envmap, cameras, out_dir, rotate_deg).map_err(|e| {
-            PipelineError::Failed {
-                stage: "relighting",
-                message: e.to_string(),
-            }
-        })
+        phygap::relight::relight(model_dir, envmap, cameras, out_dir, rotate_deg)
+            .map_err(|e| failed("relighting", e))
     }
 }

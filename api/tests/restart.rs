@@ -11,7 +11,6 @@ use std::time::{Duration, Instant};
 use common::*;
 use phygap_api::store::{JobState, SqliteStore, Store};
 
-const LONG: Duration = Duration::from_secs(240);
 const CHILD_DIR_VAR: &str = "PHYGAP_API_TEST_CHILD_DATA_DIR";
 
 fn stored_state(data_dir: &Path, id: &str) -> (JobState, u32) {
@@ -22,19 +21,13 @@ fn stored_state(data_dir: &Path, id: &str) -> (JobState, u32) {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn queued_job_runs_after_restart() {
-    let dir = tempfile::tempdir().unwrap();
-    let mut config = test_config(dir.path());
-    config.workers = 0;
-    let t = TestServer::start(config).await;
-    let capture_id = t.upload_capture().await;
-    let (_, job) = t.submit(&capture_id, train_config(20, 10)).await;
-    let id = job["id"].as_str().unwrap().to_string();
+    let (dir, t) = TestServer::start_fresh_with(|config| config.workers = 0).await;
+    let id = t.start_training(20, 10).await;
     t.server.shutdown().await;
     assert_eq!(stored_state(dir.path(), &id).0, JobState::Queued);
 
-    let t = TestServer::start(test_config(dir.path())).await;
-    let done = t.wait_state(&id, "succeeded", LONG).await;
-    assert_eq!(done["state"], "succeeded", "{done}");
+    let t = TestServer::start_on(dir.path()).await;
+    let done = t.wait_succeeded(&id).await;
     assert_eq!(
         (done["attempts"].as_u64(), done["resumed_from"].as_u64()),
         (Some(1), None)
@@ -44,21 +37,16 @@ async fn queued_job_runs_after_restart() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn graceful_shutdown_requeues_a_running_job_which_then_resumes() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
-    let capture_id = t.upload_capture().await;
-    let (_, job) = t.submit(&capture_id, train_config(300, 1000)).await;
-    let id = job["id"].as_str().unwrap().to_string();
-    t.wait_job(&id, LONG, |j| j["iteration"].as_u64().unwrap_or(0) >= 30)
-        .await;
+    let (dir, t) = TestServer::start_fresh().await;
+    let id = t.start_training(300, 1000).await;
+    t.wait_iteration(&id, 30).await;
     t.server.shutdown().await;
     let (state, iteration) = stored_state(dir.path(), &id);
     assert_eq!(state, JobState::Queued, "a shutdown is not a cancel");
     assert!((30..300).contains(&iteration), "{iteration}");
 
-    let t = TestServer::start(test_config(dir.path())).await;
-    let done = t.wait_state(&id, "succeeded", LONG).await;
-    assert_eq!(done["state"], "succeeded", "{done}");
+    let t = TestServer::start_on(dir.path()).await;
+    let done = t.wait_succeeded(&id).await;
     assert_eq!(done["attempts"], 2);
     // It resumed from the checkpoint written at the shutdown (no periodic one before 1000).
     assert_eq!(
@@ -80,7 +68,7 @@ fn child_server_process() {
     };
     let runtime = tokio::runtime::Runtime::new().unwrap();
     runtime.block_on(async {
-        let t = TestServer::start(test_config(Path::new(&data_dir))).await;
+        let t = TestServer::start_on(Path::new(&data_dir)).await;
         let addr_file = Path::new(&data_dir).join("child_addr.txt");
         std::fs::write(addr_file.with_extension("tmp"), &t.base).unwrap();
         std::fs::rename(addr_file.with_extension("tmp"), &addr_file).unwrap();
@@ -109,52 +97,16 @@ async fn killed_server_job_resumes_on_the_next_server() {
         assert!(Instant::now() < deadline, "child server did not start");
         tokio::time::sleep(Duration::from_millis(50)).await;
     }
-    let base = std::fs::read_to_string(&addr_file).unwrap();
-    let client = reqwest::Client::new();
-    let capture = client
-        .post(format!("{base}/v1/captures"))
-        .body(capture_zip())
-        .send()
-        .await
-        .unwrap();
-    assert_eq!(capture.status(), 201);
-    let capture: serde_json::Value = capture.json().await.unwrap();
-    let job: serde_json::Value = client
-        .post(format!("{base}/v1/jobs"))
-        .json(&serde_json::json!({ "capture_id": capture["id"], "config": train_config(400, 25) }))
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
-    let id = job["id"].as_str().unwrap().to_string();
-    loop {
-        let job: serde_json::Value = client
-            .get(format!("{base}/v1/jobs/{id}"))
-            .send()
-            .await
-            .unwrap()
-            .json()
-            .await
-            .unwrap();
-        if job["iteration"].as_u64().unwrap_or(0) >= 60 {
-            break;
-        }
-        assert!(
-            Instant::now() < deadline,
-            "child job made no progress: {job}"
-        );
-        tokio::time::sleep(Duration::from_millis(20)).await;
-    }
+    let child_api = ApiClient::new(std::fs::read_to_string(&addr_file).unwrap());
+    let id = child_api.start_training(400, 25).await;
+    child_api.wait_iteration(&id, 60).await;
     child.kill().unwrap(); // SIGKILL: no shutdown, no checkpoint at the interruption
     child.wait().unwrap();
     let (state, killed_at) = stored_state(dir.path(), &id);
     assert_eq!(state, JobState::Running, "the dead process left it running");
 
-    let t = TestServer::start(test_config(dir.path())).await;
-    let done = t.wait_state(&id, "succeeded", LONG).await;
-    assert_eq!(done["state"], "succeeded", "{done}");
+    let t = TestServer::start_on(dir.path()).await;
+    let done = t.wait_succeeded(&id).await;
     assert_eq!(done["attempts"], 2, "{done}");
     assert_eq!(done["iteration"], 400);
     let resumed = done["resumed_from"].as_u64().unwrap();
@@ -166,15 +118,12 @@ async fn killed_server_job_resumes_on_the_next_server() {
         resumed < 400 && killed_at >= 60,
         "resumed at {resumed}, killed at {killed_at}"
     );
-    let (_, list) = t.get_json(&format!("/v1/jobs/{id}/artifacts")).await;
-    let names: Vec<&str> = list["artifacts"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|a| a["name"].as_str().unwrap())
-        .collect();
+    let names = t.artifact_names(&id).await;
     for expected in ["surfels.ply", "envmap.exr", "metrics.json"] {
-        assert!(names.contains(&expected), "{expected} in {names:?}");
+        assert!(
+            names.iter().any(|name| name == expected),
+            "{expected} in {names:?}"
+        );
     }
     t.server.shutdown().await;
 }

@@ -7,14 +7,12 @@ mod common;
 use std::time::{Duration, Instant};
 
 use common::*;
+use reqwest::Method;
 use serde_json::{json, Value};
-
-const LONG: Duration = Duration::from_secs(240);
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn upload_train_and_download_every_artifact() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
+    let (dir, t) = TestServer::start_fresh().await;
     let (status, capture) = t.upload(capture_zip()).await;
     assert_eq!(status, 201, "{capture}");
     assert_eq!(capture["views"], 10);
@@ -33,8 +31,7 @@ async fn upload_train_and_download_every_artifact() {
     assert_eq!(job["state"], "queued");
     assert_eq!(job["iterations"], 40);
     let id = job["id"].as_str().unwrap().to_string();
-    let done = t.wait_state(&id, "succeeded", LONG).await;
-    assert_eq!(done["state"], "succeeded", "{done}");
+    let done = t.wait_succeeded(&id).await;
     assert_eq!(done["iteration"], 40);
     assert_eq!(done["stage"], "done");
     let psnr = done["test_psnr"].as_f64().unwrap();
@@ -45,9 +42,7 @@ async fn upload_train_and_download_every_artifact() {
         assert!(done[key].as_str().unwrap().ends_with('Z'), "{key}: {done}");
     }
 
-    let (status, list) = t.get_json(&format!("/v1/jobs/{id}/artifacts")).await;
-    assert_eq!(status, 200);
-    let artifacts = list["artifacts"].as_array().unwrap();
+    let artifacts = t.artifacts(&id).await;
     let names: Vec<&str> = artifacts
         .iter()
         .map(|a| a["name"].as_str().unwrap())
@@ -65,14 +60,10 @@ async fn upload_train_and_download_every_artifact() {
     ] {
         assert!(names.contains(&expected), "{expected} in {names:?}");
     }
-    for artifact in artifacts {
+    for artifact in &artifacts {
         let name = artifact["name"].as_str().unwrap();
-        let response = t
-            .client
-            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
-            .send()
-            .await
-            .unwrap();
+        let path = format!("/v1/jobs/{id}/artifacts/{name}");
+        let response = t.send(Method::GET, &path).await;
         assert_eq!(response.status(), 200, "{name}");
         let content_type = response.headers()["content-type"]
             .to_str()
@@ -105,34 +96,16 @@ async fn upload_train_and_download_every_artifact() {
         }
         // The same file by ranges: a middle slice, a suffix and an unsatisfiable one.
         let len = bytes.len();
-        let part = t
-            .client
-            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
-            .header("range", "bytes=2-5")
-            .send()
-            .await
-            .unwrap();
+        let part = t.get_range(&path, "bytes=2-5").await;
         assert_eq!(part.status(), 206);
         assert_eq!(
             part.headers()["content-range"],
             format!("bytes 2-5/{len}").as_str()
         );
         assert_eq!(part.bytes().await.unwrap(), bytes.slice(2..6));
-        let suffix = t
-            .client
-            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
-            .header("range", "bytes=-3")
-            .send()
-            .await
-            .unwrap();
+        let suffix = t.get_range(&path, "bytes=-3").await;
         assert_eq!(suffix.bytes().await.unwrap(), bytes.slice(len - 3..));
-        let beyond = t
-            .client
-            .get(t.url(&format!("/v1/jobs/{id}/artifacts/{name}")))
-            .header("range", format!("bytes={len}-"))
-            .send()
-            .await
-            .unwrap();
+        let beyond = t.get_range(&path, &format!("bytes={len}-")).await;
         assert_eq!(beyond.status(), 416);
     }
     let (status, body) = t
@@ -145,27 +118,14 @@ async fn upload_train_and_download_every_artifact() {
     assert_eq!((status, error_code(&body).0), (404, "not_found"));
 
     // A capture still used by no live job can be deleted; its files go too.
-    let response = t
-        .client
-        .delete(t.url(&format!("/v1/captures/{capture_id}")))
-        .send()
-        .await
-        .unwrap();
+    let response = t.delete_capture(capture_id).await;
     assert_eq!(response.status(), 204);
     assert!(!dir.path().join("captures").join(capture_id).exists());
     let (status, _) = t.get_json(&format!("/v1/captures/{capture_id}")).await;
     assert_eq!(status, 404);
 
     // Metrics saw the job and the requests.
-    let text = t
-        .client
-        .get(t.url("/metrics"))
-        .send()
-        .await
-        .unwrap()
-        .text()
-        .await
-        .unwrap();
+    let text = t.send(Method::GET, "/metrics").await.text().await.unwrap();
     assert!(text.contains("phygap_queue_depth 0\n"), "{text}");
     assert!(
         text.contains("phygap_job_duration_seconds_count{kind=\"train\",outcome=\"succeeded\"} 1"),
@@ -180,20 +140,13 @@ async fn upload_train_and_download_every_artifact() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn tar_uploads_and_event_stream_follow_a_job_to_its_end() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
+    let (_dir, t) = TestServer::start_fresh().await;
     let (status, capture) = t.upload(capture_tar()).await;
     assert_eq!(status, 201, "{capture}");
-    let (_, job) = t
-        .submit(capture["id"].as_str().unwrap(), train_config(60, 20))
+    let id = t
+        .submit_job(capture["id"].as_str().unwrap(), train_config(60, 20))
         .await;
-    let id = job["id"].as_str().unwrap();
-    let mut response = t
-        .client
-        .get(t.url(&format!("/v1/jobs/{id}/events")))
-        .send()
-        .await
-        .unwrap();
+    let mut response = t.send(Method::GET, &format!("/v1/jobs/{id}/events")).await;
     assert_eq!(response.status(), 200);
     assert!(response.headers()["content-type"]
         .to_str()
@@ -242,10 +195,7 @@ async fn tar_uploads_and_event_stream_follow_a_job_to_its_end() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn idempotent_submit_returns_the_same_job() {
-    let dir = tempfile::tempdir().unwrap();
-    let mut config = test_config(dir.path());
-    config.workers = 0;
-    let t = TestServer::start(config).await;
+    let (_dir, t) = TestServer::start_fresh_with(|config| config.workers = 0).await;
     let capture_id = t.upload_capture().await;
     let body = json!({ "capture_id": capture_id, "config": train_config(10, 5) });
     let mut ids = Vec::new();
@@ -276,11 +226,7 @@ async fn idempotent_submit_returns_the_same_job() {
         .send()
         .await
         .unwrap();
-    assert_eq!(response.status(), 422);
-    assert_eq!(
-        error_code(&response.json().await.unwrap()).0,
-        "idempotency_key_reused"
-    );
+    expect_error(response, 422, "idempotency_key_reused").await;
     let (_, list) = t.get_json("/v1/jobs").await;
     assert_eq!(list["jobs"].as_array().unwrap().len(), 1);
     // Without a key, each submit is a new job.
@@ -292,8 +238,7 @@ async fn idempotent_submit_returns_the_same_job() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn invalid_job_requests_are_rejected_with_reasons() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
+    let (_dir, t) = TestServer::start_fresh().await;
     let capture_id = t.upload_capture().await;
     let cases = [
         (
@@ -329,11 +274,8 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
             .send()
             .await
             .unwrap();
-        assert_eq!(response.status(), status, "{body}");
-        let body: Value = response.json().await.unwrap();
-        let (got_code, message) = error_code(&body);
-        assert_eq!(got_code, code);
-        assert!(message.contains(needle), "{message}");
+        let message = expect_error(response, status, code).await;
+        assert!(message.contains(needle), "{body}: {message}");
     }
     let response = t
         .client
@@ -342,11 +284,7 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
         .send()
         .await
         .unwrap();
-    assert_eq!(response.status(), 400);
-    assert_eq!(
-        error_code(&response.json().await.unwrap()).0,
-        "invalid_json"
-    );
+    expect_error(response, 400, "invalid_json").await;
     // Garbage to every POST route and unknown routes/methods: JSON errors, never a crash.
     for path in [
         "/v1/captures",
@@ -371,12 +309,8 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
     }
     let (status, body) = t.get_json("/v1/nope").await;
     assert_eq!((status, error_code(&body).0), (404, "not_found"));
-    let response = t.client.put(t.url("/v1/jobs")).send().await.unwrap();
-    assert_eq!(response.status(), 405);
-    assert_eq!(
-        error_code(&response.json().await.unwrap()).0,
-        "method_not_allowed"
-    );
+    let response = t.send(Method::PUT, "/v1/jobs").await;
+    expect_error(response, 405, "method_not_allowed").await;
     let (status, _) = t.get_json("/healthz").await;
     assert_eq!(status, 200);
     t.server.shutdown().await;
@@ -384,72 +318,43 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn cancel_stops_running_and_queued_jobs() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
+    let (_dir, t) = TestServer::start_fresh().await;
     let capture_id = t.upload_capture().await;
-    let (_, running) = t.submit(&capture_id, train_config(100_000, 1000)).await;
-    let (_, queued) = t.submit(&capture_id, train_config(10, 5)).await;
-    let running_id = running["id"].as_str().unwrap();
-    let queued_id = queued["id"].as_str().unwrap();
-    t.wait_job(running_id, LONG, |j| {
-        j["iteration"].as_u64().unwrap_or(0) >= 5
-    })
-    .await;
+    let running_id = t.submit_job(&capture_id, train_config(100_000, 1000)).await;
+    let queued_id = t.submit_job(&capture_id, train_config(10, 5)).await;
+    t.wait_iteration(&running_id, 5).await;
     // The capture is in use meanwhile.
-    let response = t
-        .client
-        .delete(t.url(&format!("/v1/captures/{capture_id}")))
-        .send()
-        .await
-        .unwrap();
+    let response = t.delete_capture(&capture_id).await;
     assert_eq!(response.status(), 409);
 
-    let response = t
-        .client
-        .post(t.url(&format!("/v1/jobs/{queued_id}/cancel")))
-        .send()
-        .await
-        .unwrap();
+    let response = t.cancel(&queued_id).await;
     assert_eq!(response.status(), 200);
     assert_eq!(
         response.json::<Value>().await.unwrap()["state"],
         "cancelled"
     );
-    let response = t
-        .client
-        .post(t.url(&format!("/v1/jobs/{running_id}/cancel")))
-        .send()
-        .await
-        .unwrap();
+    let response = t.cancel(&running_id).await;
     assert_eq!(response.status(), 200);
     assert_eq!(
         response.json::<Value>().await.unwrap()["cancel_requested"],
         true
     );
-    let cancelled = t.wait_state(running_id, "cancelled", LONG).await;
+    let cancelled = t.wait_state(&running_id, "cancelled", LONG).await;
     assert_eq!(cancelled["state"], "cancelled", "{cancelled}");
     assert!(cancelled["iteration"].as_u64().unwrap() < 100_000);
     assert!(cancelled["finished_at"].is_string());
-    let response = t
-        .client
-        .post(t.url(&format!("/v1/jobs/{running_id}/cancel")))
-        .send()
-        .await
-        .unwrap();
+    let response = t.cancel(&running_id).await;
     assert_eq!(response.status(), 409);
     let (status, _) = t.get_json(&format!("/v1/jobs/{queued_id}")).await;
     assert_eq!(status, 200);
-    let (_, list) = t.get_json(&format!("/v1/jobs/{queued_id}/artifacts")).await;
-    assert_eq!(list["artifacts"], json!([]));
+    assert!(t.artifacts(&queued_id).await.is_empty());
     t.server.shutdown().await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn bearer_token_guards_v1_but_not_healthz() {
-    let dir = tempfile::tempdir().unwrap();
-    let mut config = test_config(dir.path());
-    config.token = Some("s3cret".into());
-    let t = TestServer::start(config).await;
+    let (dir, t) =
+        TestServer::start_fresh_with(|config| config.token = Some("s3cret".into())).await;
     let (status, _) = t.get_json("/healthz").await;
     assert_eq!(status, 200);
     let (status, body) = t.get_json("/v1/jobs").await;
@@ -482,8 +387,7 @@ async fn bearer_token_guards_v1_but_not_healthz() {
     assert_eq!(right.status(), 200);
     t.server.shutdown().await;
 
-    let open_dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(open_dir.path())).await;
+    let (_open_dir, t) = TestServer::start_fresh().await;
     let (status, _) = t.get_json("/v1/jobs").await;
     assert_eq!(status, 200);
     t.server.shutdown().await;
@@ -492,10 +396,7 @@ async fn bearer_token_guards_v1_but_not_healthz() {
 /// Each bad upload: its status, its error code, a word of its message; and nothing left behind.
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn bad_uploads_are_rejected_and_leave_no_state() {
-    let dir = tempfile::tempdir().unwrap();
-    let mut config = test_config(dir.path());
-    config.max_upload_bytes = 256 << 10;
-    let t = TestServer::start(config).await;
+    let (dir, t) = TestServer::start_fresh_with(|config| config.max_upload_bytes = 256 << 10).await;
     let file = |name: &str, data: &[u8]| (name.to_string(), data.to_vec());
     let mut corrupt = capture_zip();
     corrupt.truncate(corrupt.len() / 2);
@@ -642,40 +543,17 @@ fn tar_with_symlink() -> Vec<u8> {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn relight_runs_as_its_own_job() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
-    let capture_id = t.upload_capture().await;
-    let (_, job) = t.submit(&capture_id, train_config(10, 5)).await;
-    let train_id = job["id"].as_str().unwrap().to_string();
+    let (dir, t) = TestServer::start_fresh().await;
+    let train_id = t.start_training(10, 5).await;
     // Not trained yet (or still running): refused.
     let envmap_path = dir.path().join("sky.exr");
     phygap::image_io::write_exr(&envmap_path, &phygap::image_io::Image::filled(8, 4, 3, 2.0))
         .unwrap();
     let envmap = std::fs::read(&envmap_path).unwrap();
-    let form = |bytes: Vec<u8>| {
-        reqwest::multipart::Form::new()
-            .part(
-                "envmap",
-                reqwest::multipart::Part::bytes(bytes).file_name("sky.exr"),
-            )
-            .text("rotate_deg", "90")
-    };
     t.wait_state(&train_id, "succeeded", LONG).await;
-    let response = t
-        .client
-        .post(t.url(&format!("/v1/jobs/{train_id}/relight")))
-        .multipart(form(b"not an image".to_vec()))
-        .send()
-        .await
-        .unwrap();
+    let response = t.relight(&train_id, b"not an image".to_vec(), "90").await;
     assert_eq!(response.status(), 415);
-    let response = t
-        .client
-        .post(t.url(&format!("/v1/jobs/{train_id}/relight")))
-        .multipart(form(envmap.clone()))
-        .send()
-        .await
-        .unwrap();
+    let response = t.relight(&train_id, envmap.clone(), "90").await;
     assert_eq!(response.status(), 201);
     let relight: Value = response.json().await.unwrap();
     assert_eq!(
@@ -683,28 +561,19 @@ async fn relight_runs_as_its_own_job() {
         (Some("relight"), Some(train_id.as_str()))
     );
     let relight_id = relight["id"].as_str().unwrap();
-    let done = t.wait_state(relight_id, "succeeded", LONG).await;
-    assert_eq!(done["state"], "succeeded", "{done}");
-    let (_, list) = t
-        .get_json(&format!("/v1/jobs/{relight_id}/artifacts"))
-        .await;
-    let names: Vec<&str> = list["artifacts"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|a| a["name"].as_str().unwrap())
-        .collect();
+    t.wait_succeeded(relight_id).await;
+    let names = t.artifact_names(relight_id).await;
     let expected: Vec<String> = ["s0", "s1", "s2"]
         .iter()
         .flat_map(|k| ["000.exr", "000.png", "001.exr", "001.png"].map(|f| format!("{k}/{f}")))
         .collect();
     assert_eq!(names, expected, "the model's two test cameras, relit");
     let relit = t
-        .client
-        .get(t.url(&format!("/v1/jobs/{relight_id}/artifacts/s0/000.exr")))
-        .send()
+        .send(
+            Method::GET,
+            &format!("/v1/jobs/{relight_id}/artifacts/s0/000.exr"),
+        )
         .await
-        .unwrap()
         .bytes()
         .await
         .unwrap();
@@ -717,24 +586,15 @@ async fn relight_runs_as_its_own_job() {
         "the object is lit by the uniform map: mean {mean}"
     );
     // Relighting a relight job is refused.
-    let response = t
-        .client
-        .post(t.url(&format!("/v1/jobs/{relight_id}/relight")))
-        .multipart(form(envmap))
-        .send()
-        .await
-        .unwrap();
+    let response = t.relight(relight_id, envmap, "90").await;
     assert_eq!(response.status(), 409);
     t.server.shutdown().await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn fifty_concurrent_pollers_are_all_answered() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
-    let capture_id = t.upload_capture().await;
-    let (_, job) = t.submit(&capture_id, train_config(200, 50)).await;
-    let id = job["id"].as_str().unwrap().to_string();
+    let (_dir, t) = TestServer::start_fresh().await;
+    let id = t.start_training(200, 50).await;
     let url = t.url(&format!("/v1/jobs/{id}"));
     let mut tasks = Vec::new();
     for _ in 0..50 {
@@ -766,8 +626,7 @@ async fn fifty_concurrent_pollers_are_all_answered() {
         all.extend(latencies);
         running_seen += saw_running as usize;
     }
-    let done = t.wait_state(&id, "succeeded", LONG).await;
-    assert_eq!(done["state"], "succeeded");
+    t.wait_succeeded(&id).await;
     assert!(running_seen > 0, "pollers overlapped the running job");
     all.sort();
     let pct = |p: f64| all[((all.len() - 1) as f64 * p).round() as usize];
@@ -783,8 +642,7 @@ async fn fifty_concurrent_pollers_are_all_answered() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn openapi_document_and_router_list_the_same_routes() {
-    let dir = tempfile::tempdir().unwrap();
-    let t = TestServer::start(test_config(dir.path())).await;
+    let (_dir, t) = TestServer::start_fresh().await;
     let (status, served) = t.get_json("/v1/openapi.json").await;
     assert_eq!(status, 200);
     let spec = phygap_api::openapi::spec_json().unwrap();
@@ -804,14 +662,8 @@ async fn openapi_document_and_router_list_the_same_routes() {
     // Every route answers (no 404 from the router for any documented path).
     for (method, path) in &routes {
         let concrete = path.replace("{id}", "job_none").replace("{name}", "x.json");
-        let response = t
-            .client
-            .request(method.parse().unwrap(), t.url(&concrete))
-            .send()
-            .await
-            .unwrap();
-        let status = response.status().as_u16();
-        let body: Value = response.json().await.unwrap_or(Value::Null);
+        let (status, body) =
+            status_and_json(t.send(method.parse().unwrap(), &concrete).await).await;
         assert!(
             !(status == 404 && error_code(&body).1.starts_with("no route")),
             "{method} {path}"

@@ -14,6 +14,7 @@ use phygap_api::core_pipeline::CorePipeline;
 use phygap_api::pipeline::Pipeline;
 use phygap_api::{Server, ServiceConfig};
 use serde_json::{json, Value};
+use tempfile::TempDir;
 
 /// The pipeline every integration test runs on: the real core.
 pub fn test_pipeline() -> Arc<dyn Pipeline> {
@@ -115,11 +116,27 @@ pub fn test_config(data_dir: &Path) -> ServiceConfig {
     config
 }
 
-/// A server plus a client pointed at it.
-pub struct TestServer {
-    pub server: Server,
+/// How long a test waits for a job to reach a state.
+pub const LONG: Duration = Duration::from_secs(240);
+
+/// A reqwest client pointed at one server's base URL, with the API's calls as methods.
+pub struct ApiClient {
     pub base: String,
     pub client: reqwest::Client,
+}
+
+/// A server plus a client pointed at it (the client's methods are the server's: `t.upload(..)`).
+pub struct TestServer {
+    pub server: Server,
+    pub api: ApiClient,
+}
+
+impl std::ops::Deref for TestServer {
+    type Target = ApiClient;
+
+    fn deref(&self) -> &ApiClient {
+        &self.api
+    }
 }
 
 impl TestServer {
@@ -131,9 +148,49 @@ impl TestServer {
         let server = Server::start(config, pipeline)
             .await
             .expect("server starts");
-        let base = format!("http://{}", server.local_addr());
-        TestServer {
-            server,
+        let api = ApiClient::new(format!("http://{}", server.local_addr()));
+        TestServer { server, api }
+    }
+
+    /// A server with the test config on `data_dir` (a fresh one or a restart on old state).
+    pub async fn start_on(data_dir: &Path) -> TestServer {
+        Self::start(test_config(data_dir)).await
+    }
+
+    /// A fresh data folder and a server with the test config on it.
+    pub async fn start_fresh() -> (TempDir, TestServer) {
+        Self::start_fresh_with(|_| {}).await
+    }
+
+    /// A fresh data folder and a server on it with the test config changed by `configure`.
+    pub async fn start_fresh_with(
+        configure: impl FnOnce(&mut ServiceConfig),
+    ) -> (TempDir, TestServer) {
+        let dir = tempfile::tempdir().unwrap();
+        let mut config = test_config(dir.path());
+        configure(&mut config);
+        let server = Self::start(config).await;
+        (dir, server)
+    }
+}
+
+/// A request's answer as (status, JSON body or `null`).
+pub async fn status_and_json(response: reqwest::Response) -> (u16, Value) {
+    let status = response.status().as_u16();
+    (status, response.json().await.unwrap_or(Value::Null))
+}
+
+/// Asserts that `response` is an error with `status` and `code`; returns its message.
+pub async fn expect_error(response: reqwest::Response, status: u16, code: &str) -> String {
+    let (got_status, body) = status_and_json(response).await;
+    let (got_code, message) = error_code(&body);
+    assert_eq!((got_status, got_code), (status, code), "{body}");
+    message.to_string()
+}
+
+impl ApiClient {
+    pub fn new(base: String) -> ApiClient {
+        ApiClient {
             base,
             client: reqwest::Client::builder()
                 .timeout(Duration::from_secs(30))
@@ -146,10 +203,55 @@ impl TestServer {
         format!("{}{path}", self.base)
     }
 
+    /// Sends `method` to `path` with nothing more and returns the answer.
+    pub async fn send(&self, method: reqwest::Method, path: &str) -> reqwest::Response {
+        self.client
+            .request(method, self.url(path))
+            .send()
+            .await
+            .unwrap()
+    }
+
+    /// GETs `path` with a `Range` header.
+    pub async fn get_range(&self, path: &str, range: &str) -> reqwest::Response {
+        self.client
+            .get(self.url(path))
+            .header("range", range)
+            .send()
+            .await
+            .unwrap()
+    }
+
+    /// DELETE /v1/captures/{id}.
+    pub async fn delete_capture(&self, id: &str) -> reqwest::Response {
+        self.send(reqwest::Method::DELETE, &format!("/v1/captures/{id}"))
+            .await
+    }
+
+    /// POST /v1/jobs/{id}/cancel.
+    pub async fn cancel(&self, id: &str) -> reqwest::Response {
+        self.send(reqwest::Method::POST, &format!("/v1/jobs/{id}/cancel"))
+            .await
+    }
+
+    /// POST /v1/jobs/{id}/relight with `envmap` as `sky.exr` and a rotation in degrees.
+    pub async fn relight(&self, id: &str, envmap: Vec<u8>, rotate_deg: &str) -> reqwest::Response {
+        let form = reqwest::multipart::Form::new()
+            .part(
+                "envmap",
+                reqwest::multipart::Part::bytes(envmap).file_name("sky.exr"),
+            )
+            .text("rotate_deg", rotate_deg.to_string());
+        self.client
+            .post(self.url(&format!("/v1/jobs/{id}/relight")))
+            .multipart(form)
+            .send()
+            .await
+            .unwrap()
+    }
+
     pub async fn get_json(&self, path: &str) -> (u16, Value) {
-        let response = self.client.get(self.url(path)).send().await.unwrap();
-        let status = response.status().as_u16();
-        (status, response.json().await.unwrap_or(Value::Null))
+        status_and_json(self.send(reqwest::Method::GET, path).await).await
     }
 
     /// POSTs an archive to /v1/captures.
@@ -162,8 +264,7 @@ impl TestServer {
             .send()
             .await
             .unwrap();
-        let status = response.status().as_u16();
-        (status, response.json().await.unwrap_or(Value::Null))
+        status_and_json(response).await
     }
 
     /// Uploads the test capture and returns its id.
@@ -181,8 +282,22 @@ impl TestServer {
             .send()
             .await
             .unwrap();
-        let status = response.status().as_u16();
-        (status, response.json().await.unwrap_or(Value::Null))
+        status_and_json(response).await
+    }
+
+    /// Submits a job (which must be created: 201) and returns its id.
+    pub async fn submit_job(&self, capture_id: &str, config: Value) -> String {
+        let (status, job) = self.submit(capture_id, config).await;
+        assert_eq!(status, 201, "{job}");
+        job["id"].as_str().unwrap().to_string()
+    }
+
+    /// Uploads the test capture and submits a training job of `train_config(iterations,
+    /// checkpoint_interval)` on it; returns the job id.
+    pub async fn start_training(&self, iterations: u32, checkpoint_interval: u32) -> String {
+        let capture_id = self.upload_capture().await;
+        self.submit_job(&capture_id, train_config(iterations, checkpoint_interval))
+            .await
     }
 
     /// Polls the job until `done(job)` or `timeout` (panics then).
@@ -213,6 +328,37 @@ impl TestServer {
             s == state || (state != "failed" && s == "failed")
         })
         .await
+    }
+
+    /// Waits (up to [`LONG`]) for the job to end and asserts that it succeeded; returns it.
+    pub async fn wait_succeeded(&self, id: &str) -> Value {
+        let done = self.wait_state(id, "succeeded", LONG).await;
+        assert_eq!(done["state"], "succeeded", "{done}");
+        done
+    }
+
+    /// Waits (up to [`LONG`]) until the job has done `iterations` steps; returns it.
+    pub async fn wait_iteration(&self, id: &str, iterations: u64) -> Value {
+        self.wait_job(id, LONG, |job| {
+            job["iteration"].as_u64().unwrap_or(0) >= iterations
+        })
+        .await
+    }
+
+    /// The job's artifact list (asserting it is answered).
+    pub async fn artifacts(&self, id: &str) -> Vec<Value> {
+        let (status, list) = self.get_json(&format!("/v1/jobs/{id}/artifacts")).await;
+        assert_eq!(status, 200, "{list}");
+        list["artifacts"].as_array().unwrap().clone()
+    }
+
+    /// The names in the job's artifact list, in its order.
+    pub async fn artifact_names(&self, id: &str) -> Vec<String> {
+        self.artifacts(id)
+            .await
+            .iter()
+            .map(|a| a["name"].as_str().unwrap().to_string())
+            .collect()
     }
 }
 

@@ -14,7 +14,9 @@ use thiserror::Error;
 
 use crate::backend::{self, BackendError};
 use crate::camera::Camera;
-use crate::mesh::{extract_mesh, DepthView, MeshError, TriangleMesh, TsdfParams};
+use crate::mesh::{
+    cameras_around_point, extract_mesh, DepthView, MeshError, TriangleMesh, TsdfParams,
+};
 use crate::model::Model;
 use crate::raster::{Backend, RasterError, RasterSettings};
 use crate::surfels::{sigmoid, Surfels};
@@ -94,17 +96,13 @@ pub fn orbit_cameras(surfels: &Surfels) -> Vec<Camera> {
     };
     let centre = 0.5 * (lo + hi);
     let radius = 0.5 * (hi - lo).length();
-    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    (0..ORBIT_VIEWS)
-        .map(|n| {
-            let z = 1.0 - 2.0 * (n as f64 + 0.5) / ORBIT_VIEWS as f64;
-            let r = (1.0 - z * z).sqrt();
-            let phi = golden * n as f64;
-            let eye = centre + 3.0 * radius * DVec3::new(r * phi.cos(), r * phi.sin(), z);
-            let up = if z.abs() > 0.9 { DVec3::Y } else { DVec3::Z };
-            Camera::look_at(ORBIT_SIZE, ORBIT_SIZE, 40f64.to_radians(), eye, centre, up)
-        })
-        .collect()
+    cameras_around_point(
+        ORBIT_VIEWS,
+        centre,
+        3.0 * radius,
+        ORBIT_SIZE,
+        40f64.to_radians(),
+    )
 }
 
 /// Renders depth and opacity of `surfels` from every camera and extracts the surface at a TSDF

@@ -686,15 +686,27 @@ impl AnalyticSphere {
 
 /// `count` cameras on a Fibonacci sphere of radius `distance` around the origin, looking at it.
 pub fn cameras_around(count: usize, distance: f64, size: u32, fov_x_rad: f64) -> Vec<Camera> {
+    cameras_around_point(count, DVec3::ZERO, distance, size, fov_x_rad)
+}
+
+/// `count` square cameras of `size`² pixels on a Fibonacci sphere of radius `distance` around
+/// `centre`, looking at it.
+pub fn cameras_around_point(
+    count: usize,
+    centre: DVec3,
+    distance: f64,
+    size: u32,
+    fov_x_rad: f64,
+) -> Vec<Camera> {
     let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
     (0..count)
         .map(|n| {
             let z = 1.0 - 2.0 * (n as f64 + 0.5) / count as f64;
             let r = (1.0 - z * z).sqrt();
             let phi = golden * n as f64;
-            let eye = distance * DVec3::new(r * phi.cos(), r * phi.sin(), z);
+            let eye = centre + distance * DVec3::new(r * phi.cos(), r * phi.sin(), z);
             let up = if z.abs() > 0.9 { DVec3::Y } else { DVec3::Z };
-            Camera::look_at(size, size, fov_x_rad, eye, DVec3::ZERO, up)
+            Camera::look_at(size, size, fov_x_rad, eye, centre, up)
         })
         .collect()
 }

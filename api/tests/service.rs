@@ -200,14 +200,7 @@ async fn idempotent_submit_returns_the_same_job() {
     let body = json!({ "capture_id": capture_id, "config": train_config(10, 5) });
     let mut ids = Vec::new();
     for expected in [201, 200, 200] {
-        let response = t
-            .client
-            .post(t.url("/v1/jobs"))
-            .header("idempotency-key", "retry-1")
-            .json(&body)
-            .send()
-            .await
-            .unwrap();
+        let response = t.post_job(&body, Some("retry-1")).await;
         assert_eq!(response.status(), expected);
         ids.push(
             response.json::<Value>().await.unwrap()["id"]
@@ -218,14 +211,7 @@ async fn idempotent_submit_returns_the_same_job() {
     }
     assert!(ids.iter().all(|id| id == &ids[0]), "{ids:?}");
     let other = json!({ "capture_id": capture_id, "config": train_config(11, 5) });
-    let response = t
-        .client
-        .post(t.url("/v1/jobs"))
-        .header("idempotency-key", "retry-1")
-        .json(&other)
-        .send()
-        .await
-        .unwrap();
+    let response = t.post_job(&other, Some("retry-1")).await;
     expect_error(response, 422, "idempotency_key_reused").await;
     let (_, list) = t.get_json("/v1/jobs").await;
     assert_eq!(list["jobs"].as_array().unwrap().len(), 1);
@@ -267,23 +253,11 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
         ),
     ];
     for (body, status, code, needle) in cases {
-        let response = t
-            .client
-            .post(t.url("/v1/jobs"))
-            .json(&body)
-            .send()
-            .await
-            .unwrap();
+        let response = t.post_job(&body, None).await;
         let message = expect_error(response, status, code).await;
         assert!(message.contains(needle), "{body}: {message}");
     }
-    let response = t
-        .client
-        .post(t.url("/v1/jobs"))
-        .body("{not json")
-        .send()
-        .await
-        .unwrap();
+    let response = t.post_body("/v1/jobs", "{not json").await;
     expect_error(response, 400, "invalid_json").await;
     // Garbage to every POST route and unknown routes/methods: JSON errors, never a crash.
     for path in [
@@ -292,13 +266,7 @@ async fn invalid_job_requests_are_rejected_with_reasons() {
         "/v1/jobs/job_x/cancel",
         "/v1/jobs/job_x/relight",
     ] {
-        let response = t
-            .client
-            .post(t.url(path))
-            .body(vec![0xffu8; 1000])
-            .send()
-            .await
-            .unwrap();
+        let response = t.post_body(path, vec![0xffu8; 1000]).await;
         assert!(
             response.status().is_client_error(),
             "{path}: {}",
@@ -359,31 +327,18 @@ async fn bearer_token_guards_v1_but_not_healthz() {
     assert_eq!(status, 200);
     let (status, body) = t.get_json("/v1/jobs").await;
     assert_eq!((status, error_code(&body).0), (401, "unauthorized"));
-    let wrong = t
-        .client
-        .get(t.url("/v1/jobs"))
-        .bearer_auth("s3creT")
-        .send()
-        .await
-        .unwrap();
+    let wrong = t.get_with_token("/v1/jobs", "s3creT").await;
     assert_eq!(wrong.status(), 401);
     assert_eq!(wrong.headers()["www-authenticate"], "Bearer");
     let upload = t
-        .client
-        .post(t.url("/v1/captures"))
-        .body(b"an archive is never read before the token is checked".to_vec())
-        .send()
-        .await
-        .unwrap();
+        .post_body(
+            "/v1/captures",
+            b"an archive is never read before the token is checked".to_vec(),
+        )
+        .await;
     assert_eq!(upload.status(), 401);
     assert_eq!(count_files(&dir.path().join("captures")), 0);
-    let right = t
-        .client
-        .get(t.url("/v1/jobs"))
-        .bearer_auth("s3cret")
-        .send()
-        .await
-        .unwrap();
+    let right = t.get_with_token("/v1/jobs", "s3cret").await;
     assert_eq!(right.status(), 200);
     t.server.shutdown().await;
 
@@ -492,15 +447,8 @@ async fn bad_uploads_are_rejected_and_leave_no_state() {
     // Too large without a Content-Length (chunked): stopped while streaming.
     let chunks: Vec<Result<Vec<u8>, std::io::Error>> =
         (0..40).map(|_| Ok(vec![1u8; 16 << 10])).collect();
-    let response = t
-        .client
-        .post(t.url("/v1/captures"))
-        .body(reqwest::Body::wrap_stream(futures_util::stream::iter(
-            chunks,
-        )))
-        .send()
-        .await
-        .unwrap();
+    let stream = reqwest::Body::wrap_stream(futures_util::stream::iter(chunks));
+    let response = t.post_body("/v1/captures", stream).await;
     assert_eq!(response.status(), 413);
     assert_eq!(count_files(&dir.path().join("tmp")), 0);
     // And a good upload still works afterwards.

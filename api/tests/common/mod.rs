@@ -212,6 +212,26 @@ impl ApiClient {
             .unwrap()
     }
 
+    /// POSTs a raw request body to `path` (no content type).
+    pub async fn post_body(&self, path: &str, body: impl Into<reqwest::Body>) -> reqwest::Response {
+        self.client
+            .post(self.url(path))
+            .body(body)
+            .send()
+            .await
+            .unwrap()
+    }
+
+    /// GETs `path` with `Authorization: Bearer {token}`.
+    pub async fn get_with_token(&self, path: &str, token: &str) -> reqwest::Response {
+        self.client
+            .get(self.url(path))
+            .bearer_auth(token)
+            .send()
+            .await
+            .unwrap()
+    }
+
     /// GETs `path` with a `Range` header.
     pub async fn get_range(&self, path: &str, range: &str) -> reqwest::Response {
         self.client
@@ -274,15 +294,20 @@ impl ApiClient {
         body["id"].as_str().unwrap().to_string()
     }
 
+    /// POSTs `body` (any JSON, valid or not as a job request) to /v1/jobs, with an
+    /// `Idempotency-Key` header when given.
+    pub async fn post_job(&self, body: &Value, idempotency_key: Option<&str>) -> reqwest::Response {
+        let mut request = self.client.post(self.url("/v1/jobs")).json(body);
+        if let Some(key) = idempotency_key {
+            request = request.header("idempotency-key", key);
+        }
+        request.send().await.unwrap()
+    }
+
+    /// Submits a job of `config` on the capture.
     pub async fn submit(&self, capture_id: &str, config: Value) -> (u16, Value) {
-        let response = self
-            .client
-            .post(self.url("/v1/jobs"))
-            .json(&json!({ "capture_id": capture_id, "config": config }))
-            .send()
-            .await
-            .unwrap();
-        status_and_json(response).await
+        let body = json!({ "capture_id": capture_id, "config": config });
+        status_and_json(self.post_job(&body, None).await).await
     }
 
     /// Submits a job (which must be created: 201) and returns its id.

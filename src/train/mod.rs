@@ -345,10 +345,6 @@ impl Run<'_> {
                 .densify
                 .add_view(&result.mean2d_grad_norm, result.width, result.height);
             state.iteration += 1;
-            self.refine(&mut state, stage, &mut rng)?;
-            if !state.surfels.is_finite() {
-                return Err(TrainError::Diverged(state.iteration));
-            }
 
             let done = state.iteration;
             if done.is_multiple_of(report_every) || done == iterations {
@@ -376,6 +372,12 @@ impl Run<'_> {
                         test_psnr: psnr,
                     });
                 }
+            }
+            // Densification and opacity resets come after the report and the test evaluation,
+            // so those show the model the step produced, not one whose opacities were just reset.
+            self.refine(&mut state, stage, &mut rng)?;
+            if !state.surfels.is_finite() {
+                return Err(TrainError::Diverged(state.iteration));
             }
             if self.config.checkpoint_interval > 0
                 && done.is_multiple_of(self.config.checkpoint_interval)

@@ -19,9 +19,10 @@ use crate::envmap::{EnvMapError, PreparedEnv};
 use crate::gridmap::{GridMap, GridMapError};
 use crate::meshing::{self, MeshingError, GRIDMAP_MESH_RESOLUTION};
 use crate::model::Model;
-use crate::raster::{Backend, GBuffers, RasterError, RasterSettings};
+use crate::raster::{Backend, RasterError, RasterSettings};
 use crate::reconstruction::prefilter_plan;
 use crate::surfels::{logit, Surfels};
+use crate::testing::random_upstream;
 
 /// One benchmark measurement.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -117,17 +118,7 @@ pub fn bench_raster(
         let _span = info_span!("bench_raster", surfels = n, backend = backend.name()).entered();
         let surfels = shell_surfels(n, 7);
         let mut rng = ChaCha8Rng::seed_from_u64(9);
-        let (w, h) = (width as usize, height as usize);
-        let mut upstream = GBuffers::zeros(w, h);
-        for k in 0..w * h {
-            upstream.alpha[k] = rng.random_range(-1.0..1.0);
-            upstream.depth[k] = rng.random_range(-1.0..1.0);
-            upstream.normal[k] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
-            upstream.albedo[k] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
-            upstream.roughness[k] = rng.random_range(-1.0..1.0);
-            upstream.ior[k] = rng.random_range(-1.0..1.0);
-            upstream.depth_normal[k] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
-        }
+        let upstream = random_upstream(&mut rng, width as usize, height as usize);
         // Warm-up.
         let fwd = backend.forward(&surfels, &camera, &settings)?;
         backend.backward(&surfels, &camera, &settings, &fwd, &upstream)?;

@@ -867,11 +867,9 @@ mod tests {
 
     #[test]
     fn knot_mesh_rays_and_closest_points_agree_with_brute_force() {
-        let data = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data"));
-        if !data.is_dir() {
-            println!("skipping: ../shared/data not found");
+        let Some(data) = crate::testing::shared_data_dir() else {
             return;
-        }
+        };
         let mesh = TriangleMesh::read_ply(&data.join("knot/mesh.ply")).unwrap();
         let hits = check_rays_against_brute_force(&mesh, 300, 5);
         assert!(hits > 50, "only {hits} rays hit the knot");

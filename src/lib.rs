@@ -37,4 +37,5 @@ pub mod render;
 pub mod shading;
 pub mod surfels;
 pub mod synth;
+pub mod testing;
 pub mod train;

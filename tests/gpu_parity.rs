@@ -11,8 +11,9 @@ use glam::{DMat3, DQuat, DVec3};
 use phygap::camera::Camera;
 use phygap::gpu::{AdapterRequirement, AtomicsMode, GpuBackend, GpuContext, GpuOptions};
 use phygap::raster::cpu::CpuBackend;
-use phygap::raster::{Backend, GBufferGrads, GBuffers, RasterSettings};
+use phygap::raster::{Backend, GBuffers, RasterSettings};
 use phygap::surfels::{logit, SurfelGrads, Surfels};
+use phygap::testing::random_upstream;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -108,21 +109,6 @@ fn shell(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
         s.log_scale[i] = [scale, scale];
     }
     s
-}
-
-fn random_upstream(rng: &mut ChaCha8Rng, w: usize, h: usize) -> GBufferGrads {
-    let mut g = GBuffers::zeros(w, h);
-    let mut r = || rng.random_range(-1.0..1.0);
-    for k in 0..w * h {
-        g.alpha[k] = r();
-        g.depth[k] = r();
-        g.normal[k] = [r(), r(), r()];
-        g.albedo[k] = [r(), r(), r()];
-        g.roughness[k] = r();
-        g.ior[k] = r();
-        g.depth_normal[k] = [r(), r(), r()];
-    }
-    g
 }
 
 /// Largest `|gpu − cpu| / (|cpu| + floor)` over a buffer, with its index.

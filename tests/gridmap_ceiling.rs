@@ -4,7 +4,7 @@
 //! renders visibility and inter-reflections, so on the self-occluding knot GridMap must bring S0
 //! closer to the ground truth; the convex sphere shows its cost where nothing is occluded.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use glam::DVec3;
 use phygap::brdf_lut::BrdfLut;
@@ -16,16 +16,7 @@ use phygap::mesh::TriangleMesh;
 use phygap::metrics;
 use phygap::shading::{shade, PixelInput};
 use phygap::surfels::{Surfel, Surfels};
-
-fn data_root() -> Option<PathBuf> {
-    let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data"));
-    if root.exists() {
-        Some(root.to_owned())
-    } else {
-        println!("skipping: ../shared/data not found");
-        None
-    }
-}
+use phygap::testing::shared_data_dir;
 
 fn image(path: &Option<PathBuf>) -> Image {
     read_image(path.as_ref().expect("ground truth present"))
@@ -152,7 +143,7 @@ struct Ceiling {
 
 /// Ceilings over test views 0–2 of a shared capture: (under the training light, relit).
 fn compare(scene: &str) -> Option<(Ceiling, Ceiling)> {
-    let root = data_root()?.join(scene);
+    let root = shared_data_dir()?.join(scene);
     let capture = capture::load(&root).unwrap();
     let spec = MipChainSpec::default();
     let scene_json: serde_json::Value =

@@ -2,7 +2,7 @@
 //! materials and environment fed straight into PolarDR (METHOD.md §4 "measured ceiling"), and the
 //! proof that the Stokes sign conventions are the ones the data pins down.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use glam::DMat4;
 use phygap::brdf_lut::BrdfLut;
@@ -10,16 +10,7 @@ use phygap::camera::{Camera, CameraConvention, Intrinsics};
 use phygap::envmap::{CubeMap, MipChainSpec, PrefilterPlan, PreparedEnv, WorldUp};
 use phygap::image_io::{read_image, Image};
 use phygap::shading::{physics_check, GroundTruthView, ShadingCheck};
-
-fn data_root() -> Option<PathBuf> {
-    let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data"));
-    if root.exists() {
-        Some(root.to_owned())
-    } else {
-        println!("skipping: ../shared/data not found");
-        None
-    }
-}
+use phygap::testing::shared_data_dir;
 
 /// One test view read minimally from `transforms_test.json` (the capture loader lives elsewhere).
 struct View {
@@ -126,7 +117,9 @@ fn report(name: &str, index: usize, c: &ShadingCheck) {
 
 #[test]
 fn sphere_polarization_agrees_with_mitsuba_and_wrong_signs_do_not() {
-    let Some(root) = data_root() else { return };
+    let Some(root) = shared_data_dir() else {
+        return;
+    };
     let scene = root.join("sphere");
     let env = prepared(&scene, "sky.exr", MipChainSpec::default());
     // Two roughness levels per resolution resolve the sun highlight (see the S0 note below).
@@ -184,7 +177,9 @@ fn sphere_polarization_agrees_with_mitsuba_and_wrong_signs_do_not() {
 
 #[test]
 fn knot_figures_are_within_the_known_ceiling() {
-    let Some(root) = data_root() else { return };
+    let Some(root) = shared_data_dir() else {
+        return;
+    };
     let scene = root.join("knot");
     let env = prepared(&scene, "indoor.exr", MipChainSpec::default());
     for index in 0..3 {
@@ -213,7 +208,9 @@ fn knot_figures_are_within_the_known_ceiling() {
 #[test]
 #[ignore]
 fn figures_for_other_chains() {
-    let Some(root) = data_root() else { return };
+    let Some(root) = shared_data_dir() else {
+        return;
+    };
     for (scene, env_name) in [("sphere", "sky.exr"), ("knot", "indoor.exr")] {
         let scene_dir = root.join(scene);
         for (base, per_size, fresnel) in [

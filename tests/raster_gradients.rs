@@ -16,6 +16,7 @@ use phygap::gradcheck::{numerical_gradient, worst_mismatch};
 use phygap::raster::cpu::CpuBackend;
 use phygap::raster::{Backend, GBufferGrads, GBuffers, RasterError, RasterSettings};
 use phygap::surfels::{sigmoid, Surfels};
+use phygap::testing::random_upstream;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -102,21 +103,6 @@ fn scene(rng: &mut ChaCha8Rng, cam: &Camera, opts: &SceneOptions) -> Surfels {
         s.ior[i] = rng.random_range(-2.0..2.0);
     }
     s
-}
-
-fn random_upstream(rng: &mut ChaCha8Rng, w: usize, h: usize) -> GBufferGrads {
-    let mut g = GBuffers::zeros(w, h);
-    let mut r = || rng.random_range(-1.0..1.0);
-    for k in 0..w * h {
-        g.alpha[k] = r();
-        g.depth[k] = r();
-        g.normal[k] = [r(), r(), r()];
-        g.albedo[k] = [r(), r(), r()];
-        g.roughness[k] = r();
-        g.ior[k] = r();
-        g.depth_normal[k] = [r(), r(), r()];
-    }
-    g
 }
 
 /// Zeroes the upstream gradient of the α-normalized buffers where α ≤ 1e-3 and of the depth

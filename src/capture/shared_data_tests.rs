@@ -2,7 +2,7 @@
 //! the GT surface through our cameras, the GT normals predict the measured AoLP in our per-pixel
 //! Stokes frame, and Stokes from the four polarizer images match the Stokes files.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -10,16 +10,6 @@ use rayon::prelude::*;
 use super::*;
 use crate::image_io::read_image;
 use crate::mesh::TriangleMesh;
-
-fn data_dir() -> Option<PathBuf> {
-    let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data"));
-    if dir.exists() {
-        Some(dir)
-    } else {
-        eprintln!("skipping: ../shared/data not found");
-        None
-    }
-}
 
 fn median(mut values: Vec<f64>) -> f64 {
     values.sort_by(|a, b| a.total_cmp(b));
@@ -44,7 +34,9 @@ fn backprojected_depth(view: &View) -> Vec<DVec3> {
 
 #[test]
 fn both_scenes_load_with_their_counts_and_bounds() {
-    let Some(data) = data_dir() else { return };
+    let Some(data) = crate::testing::shared_data_dir() else {
+        return;
+    };
     for scene in ["sphere", "knot"] {
         let capture = load(&data.join(scene)).unwrap();
         let summary = capture.summary();
@@ -78,7 +70,9 @@ fn both_scenes_load_with_their_counts_and_bounds() {
 
 #[test]
 fn gt_depth_backprojects_onto_the_unit_sphere() {
-    let Some(data) = data_dir() else { return };
+    let Some(data) = crate::testing::shared_data_dir() else {
+        return;
+    };
     let capture = load(&data.join("sphere")).unwrap();
     for view in capture.views.iter().step_by(9) {
         let points = backprojected_depth(view);
@@ -138,7 +132,9 @@ fn point_triangle_distance_cases() {
 
 #[test]
 fn gt_depth_backprojects_onto_the_knot_mesh() {
-    let Some(data) = data_dir() else { return };
+    let Some(data) = crate::testing::shared_data_dir() else {
+        return;
+    };
     let capture = load(&data.join("knot")).unwrap();
     let mesh = TriangleMesh::read_ply(&data.join("knot/mesh.ply")).unwrap();
     let triangles: Vec<([DVec3; 3], DVec3, f64)> = (0..mesh.triangles.len())
@@ -232,7 +228,9 @@ fn specular_aolp_agreement(
 
 #[test]
 fn sphere_specular_aolp_is_perpendicular_to_the_gt_normal_azimuth() {
-    let Some(data) = data_dir() else { return };
+    let Some(data) = crate::testing::shared_data_dir() else {
+        return;
+    };
     let capture = load(&data.join("sphere")).unwrap();
     let (fraction, flipped, total) = specular_aolp_agreement(&capture, 0.2, 10.0);
     eprintln!(
@@ -250,7 +248,9 @@ fn sphere_specular_aolp_is_perpendicular_to_the_gt_normal_azimuth() {
 
 #[test]
 fn sphere_polarizer_images_give_the_stokes_files() {
-    let Some(data) = data_dir() else { return };
+    let Some(data) = crate::testing::shared_data_dir() else {
+        return;
+    };
     let scene = data.join("sphere");
     let dir = tempfile::tempdir().unwrap();
     // The JSON lives in its own folder; the image folders are linked into it.

@@ -296,12 +296,9 @@ mod tests {
 
     #[test]
     fn the_sky_sun_lands_on_the_brightest_texel() {
-        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data");
-        let root = Path::new(root);
-        if !root.exists() {
-            println!("skipping: ../shared/data not found");
+        let Some(root) = crate::testing::shared_data_dir() else {
             return;
-        }
+        };
         let scene: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(root.join("sphere/scene.json")).unwrap())
                 .unwrap();

@@ -166,16 +166,6 @@ mod tests {
     use super::*;
     use glam::DVec3;
 
-    fn shared_data() -> Option<std::path::PathBuf> {
-        let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data"));
-        if dir.is_dir() {
-            Some(dir.to_path_buf())
-        } else {
-            println!("skipping: ../shared/data not found");
-            None
-        }
-    }
-
     /// The mesh of PLY bytes.
     fn parse(bytes: &[u8]) -> Result<TriangleMesh, PlyError> {
         mesh_from_ply(&parse_ply(bytes)?)
@@ -385,7 +375,9 @@ mod tests {
 
     #[test]
     fn reads_the_shared_ground_truth_meshes() {
-        let Some(data) = shared_data() else { return };
+        let Some(data) = crate::testing::shared_data_dir() else {
+            return;
+        };
         for (scene, vertices, faces) in [("knot", 16384, 32768), ("sphere", 10242, 20480)] {
             let mesh = TriangleMesh::read_ply(&data.join(scene).join("mesh.ply")).unwrap();
             assert_eq!(mesh.vertices.len(), vertices, "{scene}");

@@ -14,7 +14,7 @@ use crate::backend::{self, BackendError};
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::capture::Capture;
-use crate::envmap::{CubeMap, EnvMapError, LightProbe, MipChainSpec, PrefilterPlan, PreparedEnv};
+use crate::envmap::{EnvMapError, LightProbe, MipChainSpec, PrefilterPlan, PreparedEnv};
 use crate::evaluate::{self, EvalError, EvalReport};
 use crate::gridmap::GridMap;
 use crate::image_io::{self, Image, ImageError};
@@ -116,15 +116,6 @@ impl Reconstruction {
             .inspect_err(|e| tracing::warn!("GridMap build failed, rendering without it: {e}"))
             .ok()
         });
-    }
-
-    /// Replaces the environment light (relighting) and rebuilds its prefilters and GridMap's probes.
-    pub fn set_envmap(&mut self, cube: CubeMap) -> Result<(), ReconstructionError> {
-        let plan = prefilter_plan(cube.size, self.model.config.fresnel_irradiance)?;
-        self.env = PreparedEnv::new(&cube, plan)?;
-        self.model.envmap = cube;
-        self.rebuild_gridmap();
-        Ok(())
     }
 
     /// The mesh GridMap traces against, when the model renders with GridMap.

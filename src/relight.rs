@@ -32,7 +32,7 @@ pub const RELIGHT_KINDS: [&str; 3] = ["s0", "s1", "s2"];
 
 /// A model lit by the map at `envmap` (rotated by `rotate_deg` about the up axis).
 pub fn relit_reconstruction(
-    model: Model,
+    mut model: Model,
     envmap: &Path,
     rotate_deg: f64,
 ) -> Result<Reconstruction, RelightError> {
@@ -46,9 +46,10 @@ pub fn relit_reconstruction(
     } else {
         cube.rotated_about_up(rotate_deg, up)
     };
-    let mut reconstruction = Reconstruction::new(model)?;
-    reconstruction.set_envmap(cube)?;
-    Ok(reconstruction)
+    // Swapped in before the reconstruction is built, so the new map is prefiltered and GridMap's
+    // probes are rendered once, under the new light only.
+    model.envmap = cube;
+    Ok(Reconstruction::new(model)?)
 }
 
 /// Relights the model in `model_dir` and renders `cameras` (a transforms file; default: the

@@ -1,9 +1,9 @@
-// Tile binning around the sort: `emit` writes one (tile, depth, surfel) entry per tile that a
-// projected surfel's pixel box touches, at the surfel's offset from the host's exclusive scan of the
-// tile counts; `pad` fills the entries beyond the real ones up to the power-of-two size of the
-// bitonic sort with keys that sort last; after the sort, `tile_ranges` marks where each tile's run
-// of entries starts and ends (the ranges buffer is cleared to zero first, so empty tiles are 0..0).
-// Threading: one thread per surfel (`emit`) or per entry (`pad`, `tile_ranges`), 256-thread
+// Tile binning around the sort (radix_sort.wgsl): `emit` writes one (tile, depth, surfel) entry per
+// tile that a projected surfel's pixel box touches, at the surfel's offset from the host's exclusive
+// scan of the tile counts (so entries come in surfel order); after the sort, `tile_ranges` marks
+// where each tile's run of entries starts and ends (the ranges buffer is cleared to zero first, so
+// empty tiles are 0..0).
+// Threading: one thread per surfel (`emit`) or per entry (`tile_ranges`), 256-thread
 // workgroups on a 2-D grid. Entries are vec4<u32>(tile, depth bits, surfel, 0): the centre depth is
 // positive, so its f32 bit pattern orders like its value.
 
@@ -33,15 +33,6 @@ fn emit(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
             o++;
         }
     }
-}
-
-@compute @workgroup_size(256)
-fn pad(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
-    let i = linear_index(gid, nwg) + params.counts.y;
-    if i >= params.counts.z {
-        return;
-    }
-    entries[i] = vec4<u32>(0xffffffffu, 0xffffffffu, 0xffffffffu, 0u);
 }
 
 @compute @workgroup_size(256)

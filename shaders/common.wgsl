@@ -3,8 +3,8 @@
 // No bindings and no entry points: every kernel file is compiled as `common.wgsl` + itself, so the
 // forward and backward passes evaluate (and skip) exactly the same (pixel, surfel) pairs.
 
-// Tile edge in pixels; the rasterization kernels run one 16×16 workgroup per tile.
-const TILE: u32 = 16u;
+// Tile edge in pixels; the rasterization kernels run one 8×8 workgroup per tile.
+const TILE: u32 = 8u;
 // Per-surfel gradient accumulators: Q (9), det, mean (2), opacity, features (8), view depth.
 const NUM_ACC: u32 = 22u;
 // Per-pixel values of the forward output: α, depth, normal (3), albedo (3), roughness, IoR.
@@ -24,7 +24,7 @@ struct Params {
     intr: vec4<f32>,
     // width, height, tiles along x, tiles along y.
     dims: vec4<u32>,
-    // surfels, tile entries, padded entries (power of two), low-pass filter on (1) or off (0).
+    // surfels, tile entries, unused, low-pass filter on (1) or off (0).
     counts: vec4<u32>,
     // near, alpha_min, alpha_max, transmittance_min.
     thr0: vec4<f32>,

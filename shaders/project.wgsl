@@ -1,6 +1,6 @@
 // Per-surfel projection and culling (a port of `project` in src/raster/project.rs, in f32).
 // Threading: one thread per surfel, 256-thread workgroups on a 2-D grid (see `linear_index`).
-// Writes the surfel's `Proj` (rect empty when culled) and the number of 16×16 tiles its pixel box
+// Writes the surfel's `Proj` (rect empty when culled) and the number of 8×8 tiles its pixel box
 // touches (0 when culled), which the host scans into the offsets of the binning pass.
 // The box is the exact α-cut box of the cpu backend widened by one pixel on each side, so f32
 // rounding of the conic extents cannot drop a pixel the cpu backend would draw.

@@ -1,7 +1,7 @@
 // Forward rasterization: front-to-back compositing of each tile's sorted surfels into the
 // α-normalized G-buffers (α, depth, normal, albedo, roughness, IoR), as `forward_tile` of
 // src/raster/cpu.rs does in f64.
-// Threading: one workgroup of 256 threads per 16×16 tile, one thread per pixel; each thread walks
+// Threading: one workgroup of 64 threads per 8×8 tile, one thread per pixel; each thread walks
 // its tile's list on its own (reading the projected surfels from global memory, no workgroup
 // memory, no barriers) and stops at the surfel that would bring its transmittance below
 // transmittance_min. Per pixel it also writes the final transmittance and the number of list
@@ -17,7 +17,7 @@
 @group(0) @binding(6) var<storage, read_write> contrib: array<u32>;
 @group(0) @binding(7) var<storage, read_write> evals: array<u32>;
 
-@compute @workgroup_size(16, 16)
+@compute @workgroup_size(8, 8)
 fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;
     let x = wg.x * TILE + lid.x;

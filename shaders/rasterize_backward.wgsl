@@ -5,7 +5,7 @@
 // otherwise (appended from atomic_float.wgsl or atomic_cas.wgsl). The upstream gradient arrives
 // per pixel as (α, depth, normal, albedo, roughness, IoR) on the normalized buffers; the depth
 // entry already includes the depth-normal chain computed on the host.
-// Threading: one workgroup of 256 threads per 16×16 tile, one thread per pixel, each walking its
+// Threading: one workgroup of 64 threads per 8×8 tile, one thread per pixel, each walking its
 // tile's list from its last composited entry back to the first; no workgroup memory, no barriers.
 // Per pixel only T and B = Σ_{j>i} w_j (dL/dα + Σ_c dL/dS_c v_{j,c}) are carried.
 
@@ -18,7 +18,7 @@
 @group(0) @binding(6) var<storage, read> final_t: array<f32>;
 @group(0) @binding(7) var<storage, read> contrib: array<u32>;
 
-@compute @workgroup_size(16, 16)
+@compute @workgroup_size(8, 8)
 fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;
     let x = wg.x * TILE + lid.x;

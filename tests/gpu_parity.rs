@@ -375,6 +375,38 @@ fn forward_and_backward_match_cpu_on_an_opaque_shell() {
     }
 }
 
+/// Enough (tile, surfel) entries for the radix sort to span several workgroup blocks (2048
+/// entries each) and the tile index two 4-bit digits. The scene is many layers deep, so the
+/// depth-derived normals (a host-side f64 function of the f32 depth, which amplifies its rounding
+/// by depth over pixel footprint) are left out; the depth itself is held to 1e-4.
+#[test]
+fn many_entries_sort_across_radix_blocks() {
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(31);
+    let camera = random_camera(&mut rng, 96, 72);
+    let surfels = random_surfels(&mut rng, 3000);
+    let settings = smooth_settings();
+    let cpu_fwd = CpuBackend.forward(&surfels, &camera, &settings).unwrap();
+    let mut gpu_fwd = gpu.forward(&surfels, &camera, &settings).unwrap();
+    assert!(
+        gpu_fwd.stats.tile_entries > 4 * 2048,
+        "only {} entries",
+        gpu_fwd.stats.tile_entries
+    );
+    gpu_fwd.gbuffers.depth_normal = cpu_fwd.gbuffers.depth_normal.clone();
+    assert_forward_parity(&gpu_fwd.gbuffers, &cpu_fwd.gbuffers, "many entries");
+    let upstream = random_upstream(&mut rng, 96, 72);
+    let cpu_grad = CpuBackend
+        .backward(&surfels, &camera, &settings, &cpu_fwd, &upstream)
+        .unwrap();
+    let gpu_grad = gpu
+        .backward(&surfels, &camera, &settings, &gpu_fwd, &upstream)
+        .unwrap();
+    assert_backward_parity(&gpu_grad, &cpu_grad, 1e-3, "many entries");
+}
+
 #[test]
 fn compare_exchange_atomics_match_cpu() {
     let Some(gpu) = gpu(GpuOptions {

@@ -4,8 +4,8 @@
 //! [`GpuContext`] opens an adapter (Vulkan, Metal or DX12, including software Vulkan such as
 //! Mesa's lavapipe) and [`GpuBackend`] implements [`crate::raster::Backend`] with it:
 //! projection and culling (one thread per surfel), a host exclusive scan of the per-surfel tile
-//! counts, emission of (tile, depth, surfel) entries and a bitonic sort of them on the device,
-//! per-tile ranges, forward compositing (one 16×16 workgroup per tile, one thread per pixel),
+//! counts, emission of (tile, depth, surfel) entries and a radix sort of them on the device,
+//! per-tile ranges, forward compositing (one 8×8 workgroup per tile, one thread per pixel),
 //! and the backward pass (per-pixel back-to-front replay with float atomics or a compare-and-swap
 //! loop, then the per-surfel chain to raw parameters). The depth-derived normals and their
 //! backward are the host-side f64 helpers of [`crate::raster`], computed from the downloaded depth.

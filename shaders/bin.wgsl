@@ -1,5 +1,6 @@
 // Tile binning around the sort (radix_sort.wgsl): `emit` writes one (tile, depth, surfel) entry per
-// tile that a projected surfel's pixel box touches, at the surfel's offset from the host's exclusive
+// tile of the band that a projected surfel's pixel box touches (tiles numbered from the band's first
+// row), at the surfel's offset from the host's exclusive
 // scan of the tile counts (so entries come in surfel order); after the sort, `tile_ranges` marks
 // where each tile's run of entries starts and ends (the ranges buffer is cleared to zero first, so
 // empty tiles are 0..0).
@@ -26,10 +27,11 @@ fn emit(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
     }
     let depth_bits = bitcast<u32>(p.q1.w);
     let tiles_x = params.dims.z;
+    let rows = band_tile_rows(r, params);
     var o = offsets[i];
-    for (var ty = r.y / TILE; ty <= (r.w - 1u) / TILE; ty++) {
+    for (var ty = rows.x; ty < rows.y; ty++) {
         for (var tx = r.x / TILE; tx <= (r.z - 1u) / TILE; tx++) {
-            entries[o] = vec4<u32>(ty * tiles_x + tx, depth_bits, i, 0u);
+            entries[o] = vec4<u32>((ty - params.band.x) * tiles_x + tx, depth_bits, i, 0u);
             o++;
         }
     }

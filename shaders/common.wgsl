@@ -30,6 +30,10 @@ struct Params {
     thr0: vec4<f32>,
     // lowpass_sigma_px, 1/σ², α-normalization ε, unused.
     thr1: vec4<f32>,
+    // The band of tile rows being rasterized (large images are split into bands): first tile
+    // row, end tile row (exclusive), first pixel row, pixel rows. Per-pixel buffers and tile
+    // ranges hold the band only, indexed from its first row.
+    band: vec4<u32>,
 }
 
 // Raw (unactivated) surfel parameters.
@@ -77,6 +81,13 @@ struct Hit {
     z: f32,
     dx: f32,
     dy: f32,
+}
+
+// The tile rows [lo, hi) of pixel box `r` inside the band (lo == hi when it misses the band).
+fn band_tile_rows(r: vec4<u32>, prm: Params) -> vec2<u32> {
+    let lo = max(r.y / TILE, prm.band.x);
+    let hi = min((r.w - 1u) / TILE + 1u, prm.band.y);
+    return vec2<u32>(lo, max(lo, hi));
 }
 
 fn rect_contains(r: vec4<u32>, x: u32, y: u32) -> bool {

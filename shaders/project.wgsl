@@ -119,6 +119,6 @@ fn project(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
     }
     out.rect = vec4<u32>(sx.x, sy.x, sx.y, sy.y);
     proj[i] = out;
-    let tiles = ((sx.y - 1u) / TILE + 1u - sx.x / TILE) * ((sy.y - 1u) / TILE + 1u - sy.x / TILE);
-    tile_counts[i] = tiles;
+    let rows = band_tile_rows(out.rect, prm);
+    tile_counts[i] = ((sx.y - 1u) / TILE + 1u - sx.x / TILE) * (rows.y - rows.x);
 }

@@ -21,11 +21,12 @@
 fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;
     let x = wg.x * TILE + lid.x;
-    let y = wg.y * TILE + lid.y;
+    let y = (prm.band.x + wg.y) * TILE + lid.y;
     if x >= prm.dims.x || y >= prm.dims.y {
         return;
     }
-    let pix = y * prm.dims.x + x;
+    // Per-pixel buffers hold the band only.
+    let pix = (y - prm.band.z) * prm.dims.x + x;
     let range = ranges[wg.y * prm.dims.z + wg.x];
     let xf = f32(x) + 0.5;
     let yf = f32(y) + 0.5;

@@ -22,11 +22,12 @@
 fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;
     let x = wg.x * TILE + lid.x;
-    let y = wg.y * TILE + lid.y;
+    let y = (prm.band.x + wg.y) * TILE + lid.y;
     if x >= prm.dims.x || y >= prm.dims.y {
         return;
     }
-    let pix = y * prm.dims.x + x;
+    // Per-pixel buffers hold the band only.
+    let pix = (y - prm.band.z) * prm.dims.x + x;
     let n = contrib[pix];
     if n == 0u {
         return;

@@ -411,6 +411,7 @@ fn many_entries_sort_across_radix_blocks() {
 fn compare_exchange_atomics_match_cpu() {
     let Some(gpu) = gpu(GpuOptions {
         force_compare_exchange: true,
+        ..GpuOptions::default()
     }) else {
         return;
     };
@@ -550,34 +551,85 @@ fn empty_and_fully_culled_scenes() {
     }
 }
 
-/// A render whose G-buffer exceeds the device's storage-binding limit fails with an error that
-/// names the buffer (instead of a device error or a crash).
+/// `n` large surfels around the origin, each covering most of a `random_camera` view: many
+/// entries per tile.
+fn deep_stack(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
+    let mut s = random_surfels(rng, n);
+    for i in 0..n {
+        s.position[i] = std::array::from_fn(|_| rng.random_range(-0.3..0.3));
+        s.log_scale[i] = [
+            rng.random_range(0.6f64..1.0).ln(),
+            rng.random_range(0.6f64..1.0).ln(),
+        ];
+    }
+    s
+}
+
+/// Renders whose buffers exceed the binding limit are split into bands of tile rows (by the
+/// G-buffer size, then by the entries of each band) and still match the cpu backend.
 #[test]
-fn too_large_render_fails_with_a_clear_error() {
-    let Some(gpu) = gpu(GpuOptions::default()) else {
+fn large_renders_are_split_into_bands() {
+    let mut rng = ChaCha8Rng::seed_from_u64(41);
+    let camera = random_camera(&mut rng, 61, 45);
+    // 61 × 8 pixels × 10 f32 = 19,520 bytes of G-buffer per tile row.
+    let shallow = random_surfels(&mut rng, 300);
+    // ~300 entries per tile: ~40 kB of entries per tile row.
+    let deep = deep_stack(&mut rng, 300);
+    for (surfels, limit, what) in [
+        (&shallow, 40_000, "3 bands of 2 tile rows (G-buffer)"),
+        (&deep, 48_000, "bands split again by their entries"),
+    ] {
+        let Some(gpu) = gpu(GpuOptions {
+            max_binding_bytes: Some(limit),
+            ..GpuOptions::default()
+        }) else {
+            return;
+        };
+        // Every buffer is checked against the limit as it is created, so these renders
+        // succeed only if they were split.
+        let stats = gpu
+            .forward(surfels, &camera, &RasterSettings::default())
+            .unwrap()
+            .stats;
+        let gbuffer_bytes = 61 * 45 * 10 * 4;
+        let entry_bytes = stats.tile_entries as u64 * 16;
+        assert!(
+            gbuffer_bytes > limit || entry_bytes > limit,
+            "{what}: no split needed"
+        );
+        if surfels == &deep {
+            // The G-buffer allows bands of 2 tile rows (3 bands); with more than 3 × limit of
+            // entries at least one of them must be split again.
+            assert!(
+                entry_bytes > 3 * limit,
+                "{what}: {entry_bytes} bytes of entries"
+            );
+        }
+        check_scene(&gpu, surfels, &camera, 41, what);
+    }
+}
+
+/// A render that cannot be split small enough (here: one tile row's entries exceed the limit)
+/// fails with an error that names the buffer, instead of a device error or a crash.
+#[test]
+fn unsplittable_render_fails_with_a_clear_error() {
+    let mut rng = ChaCha8Rng::seed_from_u64(42);
+    let camera = random_camera(&mut rng, 61, 45);
+    let surfels = deep_stack(&mut rng, 300);
+    // Room for the 300 projected surfels (112 bytes each), not for a tile row of entries.
+    let Some(gpu) = gpu(GpuOptions {
+        max_binding_bytes: Some(300 * 112 + 1000),
+        ..GpuOptions::default()
+    }) else {
         return;
     };
-    let limits = gpu.context().device.limits();
-    let limit = u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
-    // 10 f32 per pixel: a square image just over the limit.
-    let side = ((limit / 40) as f64).sqrt().ceil() as u32 + 1;
-    let camera = Camera::look_at(
-        side,
-        side,
-        0.8,
-        DVec3::new(0.0, -4.0, 0.0),
-        DVec3::ZERO,
-        DVec3::Z,
-    );
-    let mut rng = ChaCha8Rng::seed_from_u64(6);
-    let surfels = random_surfels(&mut rng, 3);
     let err = gpu
         .forward(&surfels, &camera, &RasterSettings::default())
         .err()
-        .expect("a render beyond the device limits must fail");
+        .expect("a render beyond the binding limit must fail");
     let msg = err.to_string();
     assert!(
-        msg.contains("g-buffers") && msg.contains("max_storage_buffer_binding_size"),
+        msg.contains("tile entries") && msg.contains("max_storage_buffer_binding_size"),
         "{msg}"
     );
 }

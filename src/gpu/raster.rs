@@ -18,8 +18,13 @@
 //! transmittance, contributor counts) stay on the device in the forward result.
 //!
 //! Limits: every buffer is checked against the device's `max_storage_buffer_binding_size` and
-//! `max_buffer_size` before it is created, and a scene that does not fit fails with
-//! [`RasterError::Gpu`] naming the buffer. The kernels use no workgroup memory.
+//! `max_buffer_size` (or [`GpuOptions::max_binding_bytes`]) as it is created. An image whose
+//! per-pixel buffers or tile entries would exceed them is rasterized in bands of tile rows: as
+//! many rows as the G-buffer allows, and a band whose entries do not fit is halved until they do.
+//! The projection is the same for every band (only the tile counts and entries are the band's),
+//! so the backward passes of all bands add into one set of per-surfel sums. What cannot be split
+//! (the per-surfel buffers, or one tile row's entries) fails with [`RasterError::Gpu`] naming the
+//! buffer. Workgroup memory: only the radix sort's (8 KiB per workgroup).
 //!
 //! Threading: calls on one [`GpuBackend`] are serialized (a mutex); the host-side conversions
 //! are single-threaded.
@@ -71,6 +76,9 @@ pub enum AtomicsMode {
 pub struct GpuOptions {
     /// Use the compare-and-swap path even where float atomics exist (to test it).
     pub force_compare_exchange: bool,
+    /// Treat buffers above this many bytes as beyond the device's binding limit (to test the
+    /// splitting of large renders into bands on small scenes).
+    pub max_binding_bytes: Option<u64>,
 }
 
 #[repr(C)]
@@ -84,10 +92,11 @@ struct ParamsGpu {
     counts: [u32; 4],
     thr0: [f32; 4],
     thr1: [f32; 4],
+    band: [u32; 4],
 }
 
 impl ParamsGpu {
-    fn new(camera: &Camera, settings: &RasterSettings, surfels: u32) -> Self {
+    fn new(camera: &Camera, settings: &RasterSettings, surfels: u32, band: Band) -> Self {
         let (rot, trans) = camera.world_to_camera_opencv();
         let v4 = |v: glam::DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
         let sigma = settings.lowpass_sigma_px;
@@ -125,7 +134,52 @@ impl ParamsGpu {
                 settings.normalize_alpha_min as f32,
                 0.0,
             ],
+            band: [
+                band.first,
+                band.end,
+                band.first * TILE,
+                band.pixel_rows(camera.height),
+            ],
         }
+    }
+}
+
+/// A band of tile rows `[first, end)`: a large image is rasterized one band at a time so that
+/// no per-pixel buffer or entry list exceeds the device's binding limit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Band {
+    first: u32,
+    end: u32,
+}
+
+impl Band {
+    fn tile_rows(self) -> u32 {
+        self.end - self.first
+    }
+
+    /// Pixel rows of the band in an image of `height` rows.
+    fn pixel_rows(self, height: u32) -> u32 {
+        (self.end * TILE).min(height) - self.first * TILE
+    }
+
+    /// The band's rows of a row-major per-pixel array with `per_row` values per image row.
+    fn rows_of<T>(self, values: &[T], height: u32, per_row: usize) -> &[T] {
+        let start = (self.first * TILE) as usize * per_row;
+        &values[start..start + self.pixel_rows(height) as usize * per_row]
+    }
+
+    fn halves(self) -> (Band, Band) {
+        let mid = self.first + self.tile_rows() / 2;
+        (
+            Band {
+                first: self.first,
+                end: mid,
+            },
+            Band {
+                first: mid,
+                end: self.end,
+            },
+        )
     }
 }
 
@@ -181,6 +235,8 @@ pub struct GpuBackend {
     ctx: GpuContext,
     pipelines: Pipelines,
     atomics: AtomicsMode,
+    /// The largest buffer a binding may hold: the device's limit, or less ([`GpuOptions`]).
+    binding_limit: u64,
     /// Serializes forward and backward calls: wgpu's error scopes are one stack per device, so
     /// two threads inside [`GpuBackend::scoped`] at once would pop each other's scopes.
     exclusive: std::sync::Mutex<()>,
@@ -191,14 +247,36 @@ struct Saved {
     num_surfels: usize,
     camera: Camera,
     settings: RasterSettings,
-    params: wgpu::Buffer,
     raw: wgpu::Buffer,
     proj: wgpu::Buffer,
+    /// One per band, top to bottom.
+    bands: Vec<BandSaved>,
+}
+
+/// The forward state of one band: its parameters, sorted entries, tile ranges and per-pixel
+/// buffers (G-buffers, final transmittance, contributor counts), all for the band's rows only.
+struct BandSaved {
+    band: Band,
+    params: wgpu::Buffer,
     entries: wgpu::Buffer,
     ranges: wgpu::Buffer,
     gbuf: wgpu::Buffer,
     final_t: wgpu::Buffer,
     contrib: wgpu::Buffer,
+}
+
+/// What the forward pass of one band brings back.
+struct BandResult {
+    saved: BandSaved,
+    gbuf: Vec<f32>,
+    evals: Vec<u32>,
+    tile_counts: Vec<u32>,
+}
+
+/// The forward pass of one band: done, or its entries exceed the binding limit.
+enum BandOutcome {
+    Done(Box<BandResult>),
+    TooManyEntries(u64),
 }
 
 impl SavedForward for Saved {
@@ -269,7 +347,13 @@ impl GpuBackend {
                 message: e.to_string(),
             });
         }
+        let limits = ctx.device.limits();
+        let device_limit =
+            u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
         Ok(GpuBackend {
+            binding_limit: options
+                .max_binding_bytes
+                .map_or(device_limit, |m| m.min(device_limit)),
             ctx,
             pipelines,
             atomics,
@@ -291,8 +375,7 @@ impl GpuBackend {
 
     /// Fails with a message naming the buffer when `bytes` exceeds the device's limits.
     fn check_size(&self, name: &str, bytes: u64) -> Result<(), RasterError> {
-        let limits = self.device().limits();
-        let limit = u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
+        let limit = self.binding_limit;
         if bytes > limit {
             return Err(RasterError::Gpu(format!(
                 "buffer `{name}` needs {bytes} bytes, more than the device allows \
@@ -303,16 +386,25 @@ impl GpuBackend {
         Ok(())
     }
 
-    fn storage(&self, name: &str, bytes: u64, extra: wgpu::BufferUsages) -> wgpu::Buffer {
-        self.device().create_buffer(&wgpu::BufferDescriptor {
+    /// A zeroed storage buffer of `bytes` (checked against the binding limit).
+    fn storage(
+        &self,
+        name: &str,
+        bytes: u64,
+        extra: wgpu::BufferUsages,
+    ) -> Result<wgpu::Buffer, RasterError> {
+        self.check_size(name, bytes)?;
+        Ok(self.device().create_buffer(&wgpu::BufferDescriptor {
             label: Some(name),
             size: bytes.max(MIN_BINDING_BYTES).next_multiple_of(4),
             usage: wgpu::BufferUsages::STORAGE | extra,
             mapped_at_creation: false,
-        })
+        }))
     }
 
-    fn storage_init(&self, name: &str, contents: &[u8]) -> wgpu::Buffer {
+    /// A storage buffer holding `contents` (checked against the binding limit).
+    fn storage_init(&self, name: &str, contents: &[u8]) -> Result<wgpu::Buffer, RasterError> {
+        self.check_size(name, contents.len() as u64)?;
         let mut padded;
         let data = if (contents.len() as u64) < MIN_BINDING_BYTES {
             padded = contents.to_vec();
@@ -321,12 +413,13 @@ impl GpuBackend {
         } else {
             contents
         };
-        self.device()
+        Ok(self
+            .device()
             .create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some(name),
                 contents: data,
                 usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-            })
+            }))
     }
 
     fn bind(
@@ -388,12 +481,14 @@ impl GpuBackend {
         Ok(())
     }
 
+    /// One workgroup per tile of `band`.
     fn dispatch_tiles(
         encoder: &mut wgpu::CommandEncoder,
         label: &str,
         pipeline: &wgpu::ComputePipeline,
         group: &wgpu::BindGroup,
         camera: &Camera,
+        band: Band,
     ) {
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some(label),
@@ -401,7 +496,7 @@ impl GpuBackend {
         });
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, group, &[]);
-        pass.dispatch_workgroups(camera.width.div_ceil(TILE), camera.height.div_ceil(TILE), 1);
+        pass.dispatch_workgroups(camera.width.div_ceil(TILE), band.tile_rows(), 1);
     }
 
     /// Copies each `(buffer, bytes)` into a mappable buffer after `encoder`'s work, submits, waits
@@ -479,30 +574,28 @@ impl GpuBackend {
         camera: &Camera,
         settings: &RasterSettings,
     ) -> Result<Rasterized, RasterError> {
-        let device = self.device();
-        let queue = &self.ctx.queue;
         let n = surfels.len();
         let n32 = u32::try_from(n)
             .map_err(|_| RasterError::Gpu(format!("{n} surfels exceed the u32 index range")))?;
         let (w, h) = (camera.width as usize, camera.height as usize);
-        let pixels = (w * h) as u64;
-        let tiles =
-            u64::from(camera.width.div_ceil(TILE)) * u64::from(camera.height.div_ceil(TILE));
-        for (name, bytes) in [
-            ("raw surfels", n as u64 * 64),
-            ("projected surfels", n as u64 * PROJ_BYTES),
-            ("g-buffers", pixels * NUM_OUT as u64 * 4),
-            ("gradient sums", n as u64 * NUM_ACC * 4),
-        ] {
-            self.check_size(name, bytes)?;
-        }
+        // Every buffer is checked as it is created; the backward pass's per-surfel sums are
+        // checked now so that a render the backward pass could not handle fails at once.
+        self.check_size("gradient sums", n as u64 * NUM_ACC * 4)?;
+        // The largest per-pixel buffers (G-buffers forward, upstream gradient backward) decide
+        // how many tile rows a band may have.
+        let tile_row_bytes = u64::from(camera.width) * u64::from(TILE) * NUM_OUT as u64 * 4;
+        self.check_size("g-buffers (one tile row)", tile_row_bytes)?;
+        let rows_per_band = (self.binding_limit / tile_row_bytes).min(u64::from(u32::MAX)) as u32;
+        let tile_rows = camera.height.div_ceil(TILE);
+        let mut pending: Vec<Band> = (0..tile_rows)
+            .step_by(rows_per_band as usize)
+            .map(|first| Band {
+                first,
+                end: (first + rows_per_band).min(tile_rows),
+            })
+            .rev()
+            .collect();
 
-        let mut params = ParamsGpu::new(camera, settings, n32);
-        let params_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("params"),
-            contents: bytemuck::bytes_of(&params),
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        });
         let raw_buf = {
             let _span = info_span!("upload", surfels = n).entered();
             let f = |v: f64| v as f32;
@@ -525,16 +618,109 @@ impl GpuBackend {
                     }
                 })
                 .collect();
-            self.storage_init("raw surfels", bytemuck::cast_slice(&raw))
+            self.storage_init("raw surfels", bytemuck::cast_slice(&raw))?
         };
-
-        // Projection and tile counts.
         let proj_buf = self.storage(
             "projected surfels",
             n as u64 * PROJ_BYTES,
             wgpu::BufferUsages::empty(),
-        );
-        let counts_buf = self.storage("tile counts", n as u64 * 4, wgpu::BufferUsages::COPY_SRC);
+        )?;
+
+        // Bands top to bottom; one whose entries exceed the limit is split in two.
+        let mut done: Vec<BandResult> = Vec::new();
+        while let Some(band) = pending.pop() {
+            let _span = info_span!("band", first = band.first, end = band.end).entered();
+            match self.forward_band(surfels, camera, settings, n32, band, &raw_buf, &proj_buf)? {
+                BandOutcome::Done(result) => done.push(*result),
+                BandOutcome::TooManyEntries(total) if band.tile_rows() == 1 => {
+                    self.check_size("tile entries (one tile row)", total * ENTRY_BYTES)?;
+                }
+                BandOutcome::TooManyEntries(_) => {
+                    let (top, bottom) = band.halves();
+                    pending.push(bottom);
+                    pending.push(top);
+                }
+            }
+        }
+
+        let _span = info_span!("readback").entered();
+        let mut gb = GBuffers::zeros(w, h);
+        let mut visible = vec![false; n];
+        let mut tile_entries = 0usize;
+        let mut pixel_evaluations = 0u64;
+        for result in &done {
+            let first_pixel = (result.saved.band.first * TILE) as usize * w;
+            for (j, px) in result.gbuf.chunks_exact(NUM_OUT).enumerate() {
+                let k = first_pixel + j;
+                let v = |c: usize| f64::from(px[c]);
+                gb.alpha[k] = v(0);
+                gb.depth[k] = v(1);
+                gb.normal[k] = [v(2), v(3), v(4)];
+                gb.albedo[k] = [v(5), v(6), v(7)];
+                gb.roughness[k] = v(8);
+                gb.ior[k] = v(9);
+            }
+            for (seen, &c) in visible.iter_mut().zip(&result.tile_counts) {
+                *seen |= c > 0;
+            }
+            tile_entries += result
+                .tile_counts
+                .iter()
+                .map(|&c| c as usize)
+                .sum::<usize>();
+            pixel_evaluations += result.evals.iter().map(|&e| u64::from(e)).sum::<u64>();
+        }
+        drop(_span);
+        {
+            let _span = info_span!("depth_normal").entered();
+            gb.depth_normal =
+                depth_normals(camera, &gb.depth, &gb.alpha, settings.normalize_alpha_min);
+        }
+        Ok(Rasterized {
+            gbuffers: gb,
+            stats: RasterStats {
+                visible_surfels: visible.iter().filter(|&&v| v).count(),
+                tile_entries,
+                pixel_evaluations,
+            },
+            saved: Box::new(Saved {
+                num_surfels: n,
+                camera: *camera,
+                settings: *settings,
+                raw: raw_buf,
+                proj: proj_buf,
+                bands: done.into_iter().map(|r| r.saved).collect(),
+            }),
+        })
+    }
+
+    /// Projects the surfels for `band` (the projection is the same for every band; the tile
+    /// counts are the band's), bins and sorts the band's entries and rasterizes its tiles.
+    #[allow(clippy::too_many_arguments)]
+    fn forward_band(
+        &self,
+        surfels: &Surfels,
+        camera: &Camera,
+        settings: &RasterSettings,
+        n32: u32,
+        band: Band,
+        raw_buf: &wgpu::Buffer,
+        proj_buf: &wgpu::Buffer,
+    ) -> Result<BandOutcome, RasterError> {
+        let device = self.device();
+        let queue = &self.ctx.queue;
+        let n = surfels.len();
+        let pixels = u64::from(camera.width) * u64::from(band.pixel_rows(camera.height));
+        let tiles = camera.width.div_ceil(TILE) * band.tile_rows();
+        let mut params = ParamsGpu::new(camera, settings, n32, band);
+        let params_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("params"),
+            contents: bytemuck::bytes_of(&params),
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        });
+
+        // Projection and the band's tile counts.
+        let counts_buf = self.storage("tile counts", n as u64 * 4, wgpu::BufferUsages::COPY_SRC)?;
         let counts: Vec<u32> = {
             let _span = info_span!("project", surfels = n).entered();
             let mut encoder = device.create_command_encoder(&Default::default());
@@ -542,8 +728,8 @@ impl GpuBackend {
                 &self.pipelines.project,
                 &[
                     (0, &params_buf),
-                    (1, &raw_buf),
-                    (2, &proj_buf),
+                    (1, raw_buf),
+                    (2, proj_buf),
                     (3, &counts_buf),
                 ],
             );
@@ -559,53 +745,54 @@ impl GpuBackend {
         };
 
         // Host exclusive scan of the tile counts.
-        let (offsets, total, visible) = {
+        let (offsets, total) = {
             let _span = info_span!("scan").entered();
             let mut offsets = Vec::with_capacity(n);
             let mut total = 0u64;
-            let mut visible = 0usize;
             for &c in &counts {
                 offsets.push(total as u32);
                 total += u64::from(c);
-                visible += (c > 0) as usize;
                 if total > u64::from(u32::MAX / 2) {
-                    return Err(RasterError::Gpu(format!(
-                        "more than {} (tile, surfel) entries",
-                        u32::MAX / 2
-                    )));
+                    return Ok(BandOutcome::TooManyEntries(total));
                 }
             }
-            (offsets, total, visible)
+            (offsets, total)
         };
-        self.check_size("tile entries", total * ENTRY_BYTES)?;
+        if total * ENTRY_BYTES > self.binding_limit {
+            return Ok(BandOutcome::TooManyEntries(total));
+        }
         params.counts[1] = total as u32;
         queue.write_buffer(&params_buf, 0, bytemuck::bytes_of(&params));
 
-        let offsets_buf = self.storage_init("entry offsets", bytemuck::cast_slice(&offsets));
+        let offsets_buf = self.storage_init("entry offsets", bytemuck::cast_slice(&offsets))?;
         let entries_buf = self.storage(
             "tile entries",
             total * ENTRY_BYTES,
             wgpu::BufferUsages::empty(),
-        );
+        )?;
         // The radix sort's other half: each pass reads one and writes the other.
         let sorted_alt_buf = self.storage(
             "tile entries (sort)",
             total * ENTRY_BYTES,
             wgpu::BufferUsages::empty(),
-        );
-        let ranges_buf = self.storage("tile ranges", tiles * 8, wgpu::BufferUsages::COPY_DST);
+        )?;
+        let ranges_buf = self.storage(
+            "tile ranges",
+            u64::from(tiles) * 8,
+            wgpu::BufferUsages::COPY_DST,
+        )?;
         let gbuf_buf = self.storage(
             "g-buffers",
             pixels * NUM_OUT as u64 * 4,
             wgpu::BufferUsages::COPY_SRC,
-        );
+        )?;
         let final_t_buf = self.storage(
             "final transmittance",
             pixels * 4,
             wgpu::BufferUsages::empty(),
-        );
-        let contrib_buf = self.storage("contributors", pixels * 4, wgpu::BufferUsages::empty());
-        let evals_buf = self.storage("evaluations", pixels * 4, wgpu::BufferUsages::COPY_SRC);
+        )?;
+        let contrib_buf = self.storage("contributors", pixels * 4, wgpu::BufferUsages::empty())?;
+        let evals_buf = self.storage("evaluations", pixels * 4, wgpu::BufferUsages::COPY_SRC)?;
 
         let mut encoder = device.create_command_encoder(&Default::default());
         let entries_buf = {
@@ -614,13 +801,12 @@ impl GpuBackend {
                 &self.pipelines.emit,
                 &[
                     (0, &params_buf),
-                    (1, &proj_buf),
+                    (1, proj_buf),
                     (2, &offsets_buf),
                     (3, &entries_buf),
                 ],
             );
             self.dispatch_1d(&mut encoder, "emit", &self.pipelines.emit, &group, n as u64)?;
-            let tiles = camera.width.div_ceil(TILE) * camera.height.div_ceil(TILE);
             let entries_buf =
                 self.encode_sort(&mut encoder, [entries_buf, sorted_alt_buf], total, tiles)?;
             encoder.clear_buffer(&ranges_buf, 0, None);
@@ -645,7 +831,7 @@ impl GpuBackend {
                     (0, &params_buf),
                     (1, &entries_buf),
                     (2, &ranges_buf),
-                    (3, &proj_buf),
+                    (3, proj_buf),
                     (4, &gbuf_buf),
                     (5, &final_t_buf),
                     (6, &contrib_buf),
@@ -658,6 +844,7 @@ impl GpuBackend {
                 &self.pipelines.rasterize,
                 &group,
                 camera,
+                band,
             );
             self.submit_and_read(
                 encoder,
@@ -667,48 +854,20 @@ impl GpuBackend {
                 ],
             )?
         };
-
-        let _span = info_span!("readback").entered();
-        let g: Vec<f32> = bytemuck::pod_collect_to_vec(&out[0]);
-        let evals: Vec<u32> = bytemuck::pod_collect_to_vec(&out[1]);
-        let mut gb = GBuffers::zeros(w, h);
-        for (k, px) in g.chunks_exact(NUM_OUT).enumerate() {
-            let v = |c: usize| f64::from(px[c]);
-            gb.alpha[k] = v(0);
-            gb.depth[k] = v(1);
-            gb.normal[k] = [v(2), v(3), v(4)];
-            gb.albedo[k] = [v(5), v(6), v(7)];
-            gb.roughness[k] = v(8);
-            gb.ior[k] = v(9);
-        }
-        drop(_span);
-        {
-            let _span = info_span!("depth_normal").entered();
-            gb.depth_normal =
-                depth_normals(camera, &gb.depth, &gb.alpha, settings.normalize_alpha_min);
-        }
-        let stats = RasterStats {
-            visible_surfels: visible,
-            tile_entries: total as usize,
-            pixel_evaluations: evals.iter().map(|&e| u64::from(e)).sum(),
-        };
-        Ok(Rasterized {
-            gbuffers: gb,
-            stats,
-            saved: Box::new(Saved {
-                num_surfels: n,
-                camera: *camera,
-                settings: *settings,
+        Ok(BandOutcome::Done(Box::new(BandResult {
+            gbuf: bytemuck::pod_collect_to_vec(&out[0]),
+            evals: bytemuck::pod_collect_to_vec(&out[1]),
+            tile_counts: counts,
+            saved: BandSaved {
+                band,
                 params: params_buf,
-                raw: raw_buf,
-                proj: proj_buf,
                 entries: entries_buf,
                 ranges: ranges_buf,
                 gbuf: gbuf_buf,
                 final_t: final_t_buf,
                 contrib: contrib_buf,
-            }),
-        })
+            },
+        })))
     }
 
     /// Encodes the radix sort of the first `total` entries of `buffers[0]` by (tile, depth) and
@@ -752,8 +911,7 @@ impl GpuBackend {
                 usage: wgpu::BufferUsages::UNIFORM,
             });
         let hist_bytes = blocks * (1u64 << RADIX_BITS) * 4;
-        self.check_size("radix histogram", hist_bytes)?;
-        let hist = self.storage("radix histogram", hist_bytes, wgpu::BufferUsages::empty());
+        let hist = self.storage("radix histogram", hist_bytes, wgpu::BufferUsages::empty())?;
         let (x, y) = self.workgroup_grid(blocks)?;
         let mut compute = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some("radix sort"),
@@ -849,34 +1007,36 @@ impl GpuBackend {
                 .map(|v| v as f32)
             })
             .collect();
-        let up_buf = self.storage_init("upstream gradient", bytemuck::cast_slice(&up));
         // Newly created buffers are zero-initialized.
         let acc_buf = self.storage(
             "gradient sums",
             n as u64 * NUM_ACC * 4,
             wgpu::BufferUsages::empty(),
-        );
+        )?;
         let raw_grad_bytes = n as u64 * NUM_RAW_GRAD as u64 * 4;
         let out_buf = self.storage(
             "raw gradients",
             raw_grad_bytes,
             wgpu::BufferUsages::COPY_SRC,
-        );
+        )?;
 
         let mut encoder = self.device().create_command_encoder(&Default::default());
-        {
-            let _span = info_span!("rasterize_backward").entered();
+        // Every band adds into the same per-surfel sums: the projection is the same in all.
+        for band in &saved.bands {
+            let _span = info_span!("rasterize_backward", first = band.band.first).entered();
+            let band_up = band.band.rows_of(&up, camera.height, w * NUM_OUT);
+            let up_buf = self.storage_init("upstream gradient", bytemuck::cast_slice(band_up))?;
             let group = self.bind(
                 &self.pipelines.rasterize_backward,
                 &[
-                    (0, &saved.params),
-                    (1, &saved.entries),
-                    (2, &saved.ranges),
+                    (0, &band.params),
+                    (1, &band.entries),
+                    (2, &band.ranges),
                     (3, &saved.proj),
-                    (4, &saved.gbuf),
+                    (4, &band.gbuf),
                     (5, &up_buf),
-                    (6, &saved.final_t),
-                    (7, &saved.contrib),
+                    (6, &band.final_t),
+                    (7, &band.contrib),
                     (8, &acc_buf),
                 ],
             );
@@ -886,14 +1046,17 @@ impl GpuBackend {
                 &self.pipelines.rasterize_backward,
                 &group,
                 camera,
+                band.band,
             );
         }
         let out = {
             let _span = info_span!("project_backward").entered();
+            // The band parts of the parameters do not enter the projection's backward pass.
+            let params = &saved.bands[0].params;
             let group = self.bind(
                 &self.pipelines.project_backward,
                 &[
-                    (0, &saved.params),
+                    (0, params),
                     (1, &saved.raw),
                     (2, &saved.proj),
                     (3, &acc_buf),

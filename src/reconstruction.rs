@@ -14,7 +14,7 @@ use crate::backend::{self, BackendError};
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::capture::Capture;
-use crate::envmap::{EnvMapError, LightProbe, MipChainSpec, PrefilterPlan, PreparedEnv};
+use crate::envmap::{CubeMap, EnvMapError, LightProbe, MipChainSpec, PrefilterPlan, PreparedEnv};
 use crate::evaluate::{self, EvalError, EvalReport};
 use crate::gridmap::GridMap;
 use crate::image_io::{self, Image, ImageError};
@@ -70,17 +70,7 @@ pub fn prefilter_plan(
 
 impl Reconstruction {
     pub fn new(model: Model) -> Result<Self, ReconstructionError> {
-        let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
-        let env = PreparedEnv::new(&model.envmap, plan)?;
-        let backend = backend::select(model.config.backend)?;
-        let mut reconstruction = Reconstruction {
-            model,
-            env,
-            mesh: None,
-            gridmap: None,
-            backend,
-            lut: BrdfLut::shared(),
-        };
+        let mut reconstruction = Self::without_gridmap(model)?;
         if reconstruction.trained_with_gridmap() {
             let model = &reconstruction.model;
             reconstruction.mesh = meshing::mesh_from_surfels(
@@ -97,6 +87,33 @@ impl Reconstruction {
             reconstruction.rebuild_gridmap();
         }
         Ok(reconstruction)
+    }
+
+    /// The same model under another environment map (already in the model's frame and face
+    /// size): the prefilters and GridMap's probes are rebuilt under it, GridMap's mesh (which
+    /// depends on the surfels alone) is reused.
+    pub fn relit(&self, envmap: CubeMap) -> Result<Self, ReconstructionError> {
+        let mut model = self.model.clone();
+        model.envmap = envmap;
+        let mut relit = Self::without_gridmap(model)?;
+        relit.mesh = self.mesh.clone();
+        relit.rebuild_gridmap();
+        Ok(relit)
+    }
+
+    /// The model with its prefiltered environment and a backend, GridMap not built.
+    fn without_gridmap(model: Model) -> Result<Self, ReconstructionError> {
+        let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
+        let env = PreparedEnv::new(&model.envmap, plan)?;
+        let backend = backend::select(model.config.backend)?;
+        Ok(Reconstruction {
+            model,
+            env,
+            mesh: None,
+            gridmap: None,
+            backend,
+            lut: BrdfLut::shared(),
+        })
     }
 
     /// Whether the model's PolarDR stage ran with GridMap (then it renders with it too).

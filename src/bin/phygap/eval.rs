@@ -42,7 +42,8 @@ pub fn run(args: &EvalArgs) -> Result<()> {
     let mut report = reconstruction.evaluate(&capture)?;
     report.train_seconds = Some(reconstruction.model.info.train_seconds);
     if let Some(envmap) = &args.relight_envmap {
-        let relit = relight::relit_reconstruction(model.clone(), envmap, 0.0)?;
+        // GridMap's mesh depends on the surfels alone: the relit copy reuses it.
+        let relit = reconstruction.relit(relight::relight_cube(&model, envmap, 0.0)?)?;
         (report.relight_psnr, report.relight_ssim) =
             evaluate::relight_metrics(&relit.scene(), &capture)?;
     }

@@ -5,8 +5,8 @@
 // index like the cpu backend.
 // One pass is three kernels over blocks of RADIX_BLOCK entries (the host ping-pongs `keys_in` and
 // `keys_out` between passes):
-//   `radix_count`   per block, how many entries have each digit (workgroup atomics), into
-//                   `hist` (digit-major: hist[digit * blocks + block]);
+//   `radix_count`   per block, how many entries have each digit (per-thread counts summed with
+//                   workgroup atomics), into `hist` (digit-major: hist[digit * blocks + block]);
 //   `radix_scan`    one workgroup: exclusive scan of `hist`, so hist[d * blocks + b] becomes where
 //                   block b's first entry with digit d goes;
 //   `radix_scatter` per block, each thread ranks its own RADIX_ITEMS consecutive entries against
@@ -50,6 +50,22 @@ fn block_index(wg: vec3<u32>, nwg: vec3<u32>) -> u32 {
     return wg.x + wg.y * nwg.x;
 }
 
+// How many of thread t's own RADIX_ITEMS consecutive entries of `block` have each digit.
+fn own_digit_counts(block: u32, t: u32) -> array<u32, RADIX_BINS> {
+    var counts: array<u32, RADIX_BINS>;
+    for (var d = 0u; d < RADIX_BINS; d++) {
+        counts[d] = 0u;
+    }
+    let start = block * RADIX_BLOCK + t * RADIX_ITEMS;
+    for (var k = 0u; k < RADIX_ITEMS; k++) {
+        let i = start + k;
+        if i < pass_.total {
+            counts[digit(keys_in[i])] += 1u;
+        }
+    }
+    return counts;
+}
+
 @compute @workgroup_size(RADIX_THREADS)
 fn radix_count(
     @builtin(workgroup_id) wg: vec3<u32>,
@@ -61,11 +77,10 @@ fn radix_count(
         atomicStore(&block_bins[t], 0u);
     }
     workgroupBarrier();
-    let start = block * RADIX_BLOCK + t * RADIX_ITEMS;
-    for (var k = 0u; k < RADIX_ITEMS; k++) {
-        let i = start + k;
-        if i < pass_.total {
-            atomicAdd(&block_bins[digit(keys_in[i])], 1u);
+    let mine = own_digit_counts(block, t);
+    for (var d = 0u; d < RADIX_BINS; d++) {
+        if mine[d] != 0u {
+            atomicAdd(&block_bins[d], mine[d]);
         }
     }
     workgroupBarrier();
@@ -121,17 +136,7 @@ fn radix_scatter(
     @builtin(local_invocation_index) t: u32,
 ) {
     let block = block_index(wg, nwg);
-    let start = block * RADIX_BLOCK + t * RADIX_ITEMS;
-    var mine: array<u32, RADIX_BINS>;
-    for (var d = 0u; d < RADIX_BINS; d++) {
-        mine[d] = 0u;
-    }
-    for (var k = 0u; k < RADIX_ITEMS; k++) {
-        let i = start + k;
-        if i < pass_.total {
-            mine[digit(keys_in[i])] += 1u;
-        }
-    }
+    let mine = own_digit_counts(block, t);
     for (var d = 0u; d < RADIX_BINS; d++) {
         thread_counts[d * RADIX_THREADS + t] = mine[d];
     }
@@ -161,6 +166,7 @@ fn radix_scatter(
         let first = d * RADIX_THREADS;
         cursor[d] = hist[d * pass_.blocks + block] + thread_counts[first + t] - thread_counts[first];
     }
+    let start = block * RADIX_BLOCK + t * RADIX_ITEMS;
     for (var k = 0u; k < RADIX_ITEMS; k++) {
         let i = start + k;
         if i < pass_.total {

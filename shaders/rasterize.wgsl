@@ -8,10 +8,6 @@
 // entries up to the last one composited (for the backward pass), and how many surfel boxes it was
 // evaluated in (the `pixel_evaluations` statistic).
 
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> entries: array<vec4<u32>>;
-@group(0) @binding(2) var<storage, read> ranges: array<vec2<u32>>;
-@group(0) @binding(3) var<storage, read> proj: array<Proj>;
 @group(0) @binding(4) var<storage, read_write> gbuf: array<f32>;
 @group(0) @binding(5) var<storage, read_write> final_t: array<f32>;
 @group(0) @binding(6) var<storage, read_write> contrib: array<u32>;
@@ -20,16 +16,16 @@
 @compute @workgroup_size(8, 8)
 fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;
-    let x = wg.x * TILE + lid.x;
-    let y = (prm.band.x + wg.y) * TILE + lid.y;
-    if x >= prm.dims.x || y >= prm.dims.y {
+    let tp = tile_pixel(wg, lid, prm);
+    if !tp.inside {
         return;
     }
-    // Per-pixel buffers hold the band only.
-    let pix = (y - prm.band.z) * prm.dims.x + x;
-    let range = ranges[wg.y * prm.dims.z + wg.x];
-    let xf = f32(x) + 0.5;
-    let yf = f32(y) + 0.5;
+    let x = tp.x;
+    let y = tp.y;
+    let pix = tp.pix;
+    let range = tp.range;
+    let xf = tp.centre.x;
+    let yf = tp.centre.y;
     var trans = 1.0;
     var alpha_sum = 0.0;
     var depth_sum = 0.0;

@@ -9,10 +9,6 @@
 // tile's list from its last composited entry back to the first; no workgroup memory, no barriers.
 // Per pixel only T and B = Σ_{j>i} w_j (dL/dα + Σ_c dL/dS_c v_{j,c}) are carried.
 
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> entries: array<vec4<u32>>;
-@group(0) @binding(2) var<storage, read> ranges: array<vec2<u32>>;
-@group(0) @binding(3) var<storage, read> proj: array<Proj>;
 @group(0) @binding(4) var<storage, read> gbuf: array<f32>;
 @group(0) @binding(5) var<storage, read> upstream: array<f32>;
 @group(0) @binding(6) var<storage, read> final_t: array<f32>;
@@ -21,18 +17,18 @@
 @compute @workgroup_size(8, 8)
 fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;
-    let x = wg.x * TILE + lid.x;
-    let y = (prm.band.x + wg.y) * TILE + lid.y;
-    if x >= prm.dims.x || y >= prm.dims.y {
+    let tp = tile_pixel(wg, lid, prm);
+    if !tp.inside {
         return;
     }
-    // Per-pixel buffers hold the band only.
-    let pix = (y - prm.band.z) * prm.dims.x + x;
+    let x = tp.x;
+    let y = tp.y;
+    let pix = tp.pix;
     let n = contrib[pix];
     if n == 0u {
         return;
     }
-    let range = ranges[wg.y * prm.dims.z + wg.x];
+    let range = tp.range;
     let o = pix * NUM_OUT;
     let a = gbuf[o];
     // Undo the α-normalization: dL/dS = g / α, dL/dα −= Σ g · out / α.
@@ -51,8 +47,8 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
         g_feat0 = vec4<f32>(upstream[o + 2u], upstream[o + 3u], upstream[o + 4u], upstream[o + 5u]) * inv_a;
         g_feat1 = vec4<f32>(upstream[o + 6u], upstream[o + 7u], upstream[o + 8u], upstream[o + 9u]) * inv_a;
     }
-    let xf = f32(x) + 0.5;
-    let yf = f32(y) + 0.5;
+    let xf = tp.centre.x;
+    let yf = tp.centre.y;
     let inv_sigma2 = prm.thr1.y;
     var trans = final_t[pix];
     var b_acc = 0.0;

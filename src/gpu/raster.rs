@@ -56,6 +56,7 @@ const COMMON: &str = include_str!("../../shaders/common.wgsl");
 const PROJECT: &str = include_str!("../../shaders/project.wgsl");
 const BIN: &str = include_str!("../../shaders/bin.wgsl");
 const RADIX_SORT: &str = include_str!("../../shaders/radix_sort.wgsl");
+const TILE_LIST: &str = include_str!("../../shaders/tile_list.wgsl");
 const RASTERIZE: &str = include_str!("../../shaders/rasterize.wgsl");
 const RASTERIZE_BACKWARD: &str = include_str!("../../shaders/rasterize_backward.wgsl");
 const ATOMIC_FLOAT: &str = include_str!("../../shaders/atomic_float.wgsl");
@@ -329,10 +330,10 @@ impl GpuBackend {
             radix_count: pipeline("radix_count", &[RADIX_SORT], "radix_count"),
             radix_scan: pipeline("radix_scan", &[RADIX_SORT], "radix_scan"),
             radix_scatter: pipeline("radix_scatter", &[RADIX_SORT], "radix_scatter"),
-            rasterize: pipeline("rasterize", &[COMMON, RASTERIZE], "rasterize"),
+            rasterize: pipeline("rasterize", &[COMMON, TILE_LIST, RASTERIZE], "rasterize"),
             rasterize_backward: pipeline(
                 "rasterize_backward",
-                &[COMMON, RASTERIZE_BACKWARD, atomic_src],
+                &[COMMON, TILE_LIST, RASTERIZE_BACKWARD, atomic_src],
                 "rasterize_backward",
             ),
             project_backward: pipeline(

@@ -9,7 +9,7 @@ use thiserror::Error;
 use tracing::info;
 
 use crate::config::BackendChoice;
-use crate::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuError};
+use crate::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuError, GpuOptions};
 use crate::raster::cpu::CpuBackend;
 use crate::raster::Backend;
 
@@ -21,20 +21,25 @@ pub enum BackendError {
 
 /// The backend for a choice.
 pub fn select(choice: BackendChoice) -> Result<Box<dyn Backend>, BackendError> {
+    select_with(choice, GpuOptions::default())
+}
+
+/// The backend for a choice, with `options` for the gpu backend.
+pub fn select_with(
+    choice: BackendChoice,
+    options: GpuOptions,
+) -> Result<Box<dyn Backend>, BackendError> {
+    let gpu = |ctx| GpuBackend::with_options(ctx, options);
     match choice {
         BackendChoice::Cpu => Ok(Box::new(CpuBackend)),
-        BackendChoice::Gpu => Ok(Box::new(GpuBackend::new(GpuContext::new(
-            AdapterRequirement::Any,
-        )?)?)),
-        BackendChoice::Auto => {
-            match GpuContext::new(AdapterRequirement::Hardware).and_then(GpuBackend::new) {
-                Ok(gpu) => Ok(Box::new(gpu)),
-                Err(e) => {
-                    info!("backend auto: using cpu ({e})");
-                    Ok(Box::new(CpuBackend))
-                }
+        BackendChoice::Gpu => Ok(Box::new(gpu(GpuContext::new(AdapterRequirement::Any)?)?)),
+        BackendChoice::Auto => match GpuContext::new(AdapterRequirement::Hardware).and_then(gpu) {
+            Ok(gpu) => Ok(Box::new(gpu)),
+            Err(e) => {
+                info!("backend auto: using cpu ({e})");
+                Ok(Box::new(CpuBackend))
             }
-        }
+        },
     }
 }
 

@@ -19,7 +19,7 @@ use crate::envmap::{EnvMapError, PreparedEnv};
 use crate::gridmap::{GridMap, GridMapError};
 use crate::meshing::{self, MeshingError, GRIDMAP_MESH_RESOLUTION};
 use crate::model::Model;
-use crate::raster::{Backend, RasterError, RasterSettings};
+use crate::raster::{Backend, RasterError, RasterSettings, StageTime};
 use crate::reconstruction::prefilter_plan;
 use crate::surfels::{logit, Surfels};
 use crate::testing::random_upstream;
@@ -37,6 +37,9 @@ pub struct BenchRow {
     /// (pixel, surfel) pairs the forward pass evaluated (not serialized).
     #[serde(skip)]
     pub pixel_evaluations: u64,
+    /// Device time per stage over the timed runs, where the backend measures it.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stages: Vec<StageTime>,
 }
 
 impl BenchRow {
@@ -124,6 +127,7 @@ pub fn bench_raster(
         backend.backward(&surfels, &camera, &settings, &fwd, &upstream)?;
         let evaluations = fwd.stats.pixel_evaluations;
         drop(fwd);
+        backend.take_stage_times();
 
         let mut fwd_times = Vec::with_capacity(repeats);
         let mut both_times = Vec::with_capacity(repeats);
@@ -145,6 +149,7 @@ pub fn bench_raster(
             fwd_ms: median(fwd_times),
             fwd_bwd_ms: median(both_times),
             pixel_evaluations: evaluations,
+            stages: backend.take_stage_times(),
         });
     }
     Ok(rows)

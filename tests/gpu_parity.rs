@@ -634,6 +634,55 @@ fn unsplittable_render_fails_with_a_clear_error() {
     );
 }
 
+/// With `profile`, every compute pass of a forward and backward pass is timed (where the adapter
+/// has timestamp queries); `take_stage_times` drains the totals; without `profile` nothing is timed.
+#[test]
+fn profiling_times_every_stage() {
+    let Some(plain) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let Some(profiled) = gpu(GpuOptions {
+        profile: true,
+        ..GpuOptions::default()
+    }) else {
+        return;
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(51);
+    let camera = random_camera(&mut rng, 40, 30);
+    let surfels = random_surfels(&mut rng, 200);
+    let settings = RasterSettings::default();
+    let upstream = random_upstream(&mut rng, 40, 30);
+    for backend in [&plain, &profiled] {
+        let fwd = backend.forward(&surfels, &camera, &settings).unwrap();
+        backend
+            .backward(&surfels, &camera, &settings, &fwd, &upstream)
+            .unwrap();
+    }
+    assert!(plain.take_stage_times().is_empty());
+    let features = profiled.context().device.features();
+    if !features.contains(wgpu::Features::TIMESTAMP_QUERY) {
+        println!("skipping: the adapter has no timestamp queries");
+        return;
+    }
+    let stages = profiled.take_stage_times();
+    let names: Vec<&str> = stages.iter().map(|s| s.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "project",
+            "emit",
+            "radix sort",
+            "tile_ranges",
+            "rasterize",
+            "rasterize_backward",
+            "project_backward"
+        ]
+    );
+    assert!(stages.iter().all(|s| s.calls == 1 && s.total_ms >= 0.0));
+    assert!(stages.iter().any(|s| s.total_ms > 0.0));
+    assert!(profiled.take_stage_times().is_empty());
+}
+
 /// `auto` takes the gpu backend only on a hardware adapter; `gpu` takes any adapter.
 #[test]
 fn auto_prefers_hardware_and_gpu_takes_any_adapter() {

@@ -130,8 +130,8 @@ pub struct GpuContext {
 }
 
 impl GpuContext {
-    /// Opens the best adapter that meets `requirement`, with the adapter's own limits and
-    /// `SHADER_FLOAT32_ATOMIC` where it has it.
+    /// Opens the best adapter that meets `requirement`, with the adapter's own limits, and
+    /// `SHADER_FLOAT32_ATOMIC` and `TIMESTAMP_QUERY` where it has them.
     pub fn new(requirement: AdapterRequirement) -> Result<Self, GpuError> {
         let instance = instance();
         let adapters = sorted_adapters(&instance);
@@ -156,11 +156,9 @@ impl GpuContext {
             });
         };
         let summary = summary(&adapter);
-        let required_features = if summary.float_atomics {
-            wgpu::Features::SHADER_FLOAT32_ATOMIC
-        } else {
-            wgpu::Features::empty()
-        };
+        // Native float atomics for the backward pass; timestamps for `GpuOptions::profile`.
+        let required_features = adapter.features()
+            & (wgpu::Features::SHADER_FLOAT32_ATOMIC | wgpu::Features::TIMESTAMP_QUERY);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("phygap"),
             required_features,

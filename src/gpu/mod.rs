@@ -16,6 +16,7 @@
 //! the device between the two).
 
 mod context;
+mod profile;
 mod raster;
 
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};

@@ -33,11 +33,13 @@ use bytemuck::{Pod, Zeroable};
 use tracing::info_span;
 use wgpu::util::DeviceExt;
 
+use super::profile::PassProfiler;
 use super::{GpuContext, GpuError};
 use crate::camera::Camera;
 use crate::raster::{
     begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
+    StageTime,
 };
 use crate::surfels::{SurfelGrads, Surfels};
 
@@ -80,6 +82,9 @@ pub struct GpuOptions {
     /// Treat buffers above this many bytes as beyond the device's binding limit (to test the
     /// splitting of large renders into bands on small scenes).
     pub max_binding_bytes: Option<u64>,
+    /// Time every compute pass on the device (where the adapter has `TIMESTAMP_QUERY`), for
+    /// [`Backend::take_stage_times`].
+    pub profile: bool,
 }
 
 #[repr(C)]
@@ -238,6 +243,7 @@ pub struct GpuBackend {
     atomics: AtomicsMode,
     /// The largest buffer a binding may hold: the device's limit, or less ([`GpuOptions`]).
     binding_limit: u64,
+    profiler: Option<PassProfiler>,
     /// Serializes forward and backward calls: wgpu's error scopes are one stack per device, so
     /// two threads inside [`GpuBackend::scoped`] at once would pop each other's scopes.
     exclusive: std::sync::Mutex<()>,
@@ -351,10 +357,16 @@ impl GpuBackend {
         let limits = ctx.device.limits();
         let device_limit =
             u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
+        let profiler = if options.profile {
+            PassProfiler::new(&ctx.device, &ctx.queue)
+        } else {
+            None
+        };
         Ok(GpuBackend {
             binding_limit: options
                 .max_binding_bytes
                 .map_or(device_limit, |m| m.min(device_limit)),
+            profiler,
             ctx,
             pipelines,
             atomics,
@@ -460,10 +472,22 @@ impl GpuBackend {
         Ok((x as u32, y as u32))
     }
 
+    /// A compute pass labelled `label`, timed when profiling.
+    fn begin_pass<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        label: &'static str,
+    ) -> wgpu::ComputePass<'e> {
+        encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some(label),
+            timestamp_writes: self.profiler.as_ref().and_then(|p| p.writes(label)),
+        })
+    }
+
     fn dispatch_1d(
         &self,
         encoder: &mut wgpu::CommandEncoder,
-        label: &str,
+        label: &'static str,
         pipeline: &wgpu::ComputePipeline,
         group: &wgpu::BindGroup,
         threads: u64,
@@ -472,10 +496,7 @@ impl GpuBackend {
             return Ok(());
         }
         let (x, y) = self.grid(threads)?;
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some(label),
-            timestamp_writes: None,
-        });
+        let mut pass = self.begin_pass(encoder, label);
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, group, &[]);
         pass.dispatch_workgroups(x, y, 1);
@@ -484,17 +505,15 @@ impl GpuBackend {
 
     /// One workgroup per tile of `band`.
     fn dispatch_tiles(
+        &self,
         encoder: &mut wgpu::CommandEncoder,
-        label: &str,
+        label: &'static str,
         pipeline: &wgpu::ComputePipeline,
         group: &wgpu::BindGroup,
         camera: &Camera,
         band: Band,
     ) {
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some(label),
-            timestamp_writes: None,
-        });
+        let mut pass = self.begin_pass(encoder, label);
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, group, &[]);
         pass.dispatch_workgroups(camera.width.div_ceil(TILE), band.tile_rows(), 1);
@@ -502,13 +521,16 @@ impl GpuBackend {
 
     /// Copies each `(buffer, bytes)` into a mappable buffer after `encoder`'s work, submits, waits
     /// and returns the bytes.
+    /// The pass timestamps (when profiling) come back with them and go to the profiler.
     fn submit_and_read(
         &self,
         mut encoder: wgpu::CommandEncoder,
         sources: &[(&wgpu::Buffer, u64)],
     ) -> Result<Vec<Vec<u8>>, RasterError> {
+        let timestamps = self.profiler.as_ref().and_then(|p| p.resolve(&mut encoder));
         let staging: Vec<(wgpu::Buffer, u64)> = sources
             .iter()
+            .chain(&timestamps)
             .map(|&(src, bytes)| {
                 let size = bytes.max(4).next_multiple_of(4);
                 let dst = self.device().create_buffer(&wgpu::BufferDescriptor {
@@ -535,14 +557,18 @@ impl GpuBackend {
         for (_, r) in rx.iter() {
             r.map_err(|e| RasterError::Gpu(format!("reading back a buffer failed: {e}")))?;
         }
-        Ok(staging
+        let mut data: Vec<Vec<u8>> = staging
             .iter()
             .map(|(buf, bytes)| {
                 let data = buf.slice(..).get_mapped_range()[..*bytes as usize].to_vec();
                 buf.unmap();
                 data
             })
-            .collect())
+            .collect();
+        if let (Some(profiler), Some(_)) = (&self.profiler, timestamps) {
+            profiler.record(&data.pop().unwrap_or_default());
+        }
+        Ok(data)
     }
 
     /// Runs `f` inside out-of-memory and validation error scopes; a device error becomes a
@@ -839,7 +865,7 @@ impl GpuBackend {
                     (7, &evals_buf),
                 ],
             );
-            Self::dispatch_tiles(
+            self.dispatch_tiles(
                 &mut encoder,
                 "rasterize",
                 &self.pipelines.rasterize,
@@ -914,10 +940,7 @@ impl GpuBackend {
         let hist_bytes = blocks * (1u64 << RADIX_BITS) * 4;
         let hist = self.storage("radix histogram", hist_bytes, wgpu::BufferUsages::empty())?;
         let (x, y) = self.workgroup_grid(blocks)?;
-        let mut compute = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some("radix sort"),
-            timestamp_writes: None,
-        });
+        let mut compute = self.begin_pass(encoder, "radix sort");
         for i in 0..passes.len() {
             let pass_params = wgpu::BindingResource::Buffer(wgpu::BufferBinding {
                 buffer: &pass_buf,
@@ -1041,7 +1064,7 @@ impl GpuBackend {
                     (8, &acc_buf),
                 ],
             );
-            Self::dispatch_tiles(
+            self.dispatch_tiles(
                 &mut encoder,
                 "rasterize_backward",
                 &self.pipelines.rasterize_backward,
@@ -1132,5 +1155,11 @@ impl Backend for GpuBackend {
         self.scoped("backward", || {
             self.backward_impl(saved, camera, settings, gb, upstream)
         })
+    }
+
+    fn take_stage_times(&self) -> Vec<StageTime> {
+        self.profiler
+            .as_ref()
+            .map_or_else(Vec::new, PassProfiler::take)
     }
 }

@@ -240,6 +240,15 @@ pub struct RasterGrads {
     pub mean2d_grad_norm: Vec<f64>,
 }
 
+/// Device time spent in one kind of compute pass ([`Backend::take_stage_times`]).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StageTime {
+    pub name: String,
+    /// Passes run.
+    pub calls: usize,
+    pub total_ms: f64,
+}
+
 /// A rasterizer implementation.
 pub trait Backend: Send + Sync {
     fn name(&self) -> &'static str;
@@ -261,6 +270,11 @@ pub trait Backend: Send + Sync {
         forward: &Rasterized,
         upstream: &GBufferGrads,
     ) -> Result<RasterGrads, RasterError>;
+    /// Device time per stage since the last call, where the backend measures it (the gpu
+    /// backend with [`crate::gpu::GpuOptions::profile`]); empty otherwise.
+    fn take_stage_times(&self) -> Vec<StageTime> {
+        Vec::new()
+    }
 }
 
 /// What a backend keeps from its forward pass for the backward pass (the `saved` of

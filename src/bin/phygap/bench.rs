@@ -4,7 +4,8 @@
 use anyhow::Result;
 use clap::{Args, Subcommand};
 
-use phygap::backend::select;
+use phygap::backend::select_with;
+use phygap::gpu::GpuOptions;
 use std::path::PathBuf;
 
 use phygap::bench::{bench_gridmap, bench_raster};
@@ -55,12 +56,52 @@ struct RasterBenchArgs {
     /// Timed runs per count (the median is reported).
     #[arg(long, default_value_t = 7)]
     repeats: usize,
+    /// Also time each compute pass on the device (gpu backend, where the adapter has timestamp
+    /// queries): mean milliseconds per pass over the timed runs.
+    #[arg(long)]
+    stages: bool,
+}
+
+/// Mean device milliseconds per pass of each stage, one column per surfel count.
+fn print_stages(rows: &[phygap::bench::BenchRow]) {
+    if rows.iter().all(|r| r.stages.is_empty()) {
+        println!("no stage times: the backend does not measure them (gpu backend, adapter with timestamp queries)");
+        return;
+    }
+    println!();
+    print!("{:<20}", "device ms per pass");
+    for r in rows {
+        print!(" {:>10}", r.surfels);
+    }
+    println!();
+    let mut names: Vec<&str> = Vec::new();
+    for s in rows.iter().flat_map(|r| &r.stages) {
+        if !names.contains(&s.name.as_str()) {
+            names.push(&s.name);
+        }
+    }
+    for name in names {
+        print!("{name:<20}");
+        for r in rows {
+            match r.stages.iter().find(|s| s.name == name) {
+                Some(s) => print!(" {:>10.2}", s.total_ms / s.calls.max(1) as f64),
+                None => print!(" {:>10}", "-"),
+            }
+        }
+        println!();
+    }
 }
 
 pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.what {
         BenchWhat::Raster(a) => {
-            let backend = select(a.backend)?;
+            let backend = select_with(
+                a.backend,
+                GpuOptions {
+                    profile: a.stages,
+                    ..GpuOptions::default()
+                },
+            )?;
             let rows = bench_raster(backend.as_ref(), &a.surfels, a.width, a.height, a.repeats)?;
             if a.json {
                 println!("{}", serde_json::to_string_pretty(&rows)?);
@@ -83,6 +124,9 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                         r.fwd_bwd_ms,
                         r.evaluations_per_s()
                     );
+                }
+                if a.stages {
+                    print_stages(&rows);
                 }
             }
         }

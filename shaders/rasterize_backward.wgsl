@@ -6,7 +6,8 @@
 // per pixel as (α, depth, normal, albedo, roughness, IoR) on the normalized buffers; the depth
 // entry already includes the depth-normal chain computed on the host.
 // Threading: one workgroup of 64 threads per 8×8 tile, one thread per pixel, each walking its
-// tile's list from its last composited entry back to the first; no workgroup memory, no barriers.
+// tile's list back to the first entry from its last composited one, or with subgroups from the
+// last one any thread of its subgroup composited (`walk_length`); no workgroup memory, no barriers.
 // Per pixel only T and B = Σ_{j>i} w_j (dL/dα + Σ_c dL/dS_c v_{j,c}) are carried.
 
 @group(0) @binding(4) var<storage, read> gbuf: array<f32>;
@@ -14,17 +15,18 @@
 @group(0) @binding(6) var<storage, read> final_t: array<f32>;
 @group(0) @binding(7) var<storage, read> contrib: array<u32>;
 
+
 @compute @workgroup_size(8, 8)
 fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;
     let tp = tile_pixel(wg, lid, prm);
-    if !tp.inside {
-        return;
-    }
     let x = tp.x;
     let y = tp.y;
-    let pix = tp.pix;
-    let n = contrib[pix];
+    let pix = select(0u, tp.pix, tp.inside);
+    let n = select(0u, contrib[pix], tp.inside);
+    // How far back this thread walks (walk_own.wgsl or walk_subgroup.wgsl); every thread of the
+    // tile calls it, none has returned yet.
+    let walk = walk_length(n);
     if n == 0u {
         return;
     }
@@ -52,9 +54,9 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
     let inv_sigma2 = prm.thr1.y;
     var trans = final_t[pix];
     var b_acc = 0.0;
-    for (var kk = n; kk > 0u; kk--) {
+    for (var kk = walk; kk > 0u; kk--) {
         let e = entries[range.x + kk - 1u];
-        if !rect_contains(proj[e.z].rect, x, y) {
+        if kk > n || !rect_contains(proj[e.z].rect, x, y) {
             continue;
         }
         let p = proj[e.z];

@@ -9,7 +9,7 @@
 
 use glam::{DMat3, DQuat, DVec3};
 use phygap::camera::Camera;
-use phygap::gpu::{AdapterRequirement, AtomicsMode, GpuBackend, GpuContext, GpuOptions};
+use phygap::gpu::{AdapterRequirement, AtomicsMode, GpuBackend, GpuContext, GpuOptions, Walk};
 use phygap::raster::cpu::CpuBackend;
 use phygap::raster::{Backend, GBuffers, RasterSettings};
 use phygap::surfels::{logit, SurfelGrads, Surfels};
@@ -346,7 +346,10 @@ fn forward_and_backward_match_cpu_on_random_scenes() {
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
     };
-    println!("atomics: {:?}", gpu.atomics());
+    println!("{}", gpu.description());
+    if gpu.context().has_subgroups() {
+        assert_eq!(gpu.walk(), Walk::Subgroup);
+    }
     for seed in 0..4u64 {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         // Not multiples of 16: partial tiles on the right and bottom.
@@ -405,6 +408,21 @@ fn many_entries_sort_across_radix_blocks() {
         .backward(&surfels, &camera, &settings, &gpu_fwd, &upstream)
         .unwrap();
     assert_backward_parity(&gpu_grad, &cpu_grad, 1e-3, "many entries");
+}
+
+#[test]
+fn own_walk_matches_cpu() {
+    let Some(gpu) = gpu(GpuOptions {
+        force_own_walk: true,
+        ..GpuOptions::default()
+    }) else {
+        return;
+    };
+    assert_eq!(gpu.walk(), Walk::OwnEntries);
+    let mut rng = ChaCha8Rng::seed_from_u64(23);
+    let camera = random_camera(&mut rng, 53, 40);
+    let surfels = random_surfels(&mut rng, 250);
+    check_scene(&gpu, &surfels, &camera, 23, "own walk");
 }
 
 #[test]

@@ -33,6 +33,8 @@ pub struct AdapterSummary {
     pub software: bool,
     /// The adapter offers `SHADER_FLOAT32_ATOMIC` (native float atomics in the backward pass).
     pub float_atomics: bool,
+    /// The adapter offers `SUBGROUP` (subgroups walk their tile lists in step in the backward pass).
+    pub subgroups: bool,
 }
 
 impl fmt::Display for AdapterSummary {
@@ -104,6 +106,7 @@ fn summary(adapter: &wgpu::Adapter) -> AdapterSummary {
         float_atomics: adapter
             .features()
             .contains(wgpu::Features::SHADER_FLOAT32_ATOMIC),
+        subgroups: adapter.features().contains(wgpu::Features::SUBGROUP),
     }
 }
 
@@ -131,7 +134,7 @@ pub struct GpuContext {
 
 impl GpuContext {
     /// Opens the best adapter that meets `requirement`, with the adapter's own limits, and
-    /// `SHADER_FLOAT32_ATOMIC` and `TIMESTAMP_QUERY` where it has them.
+    /// `SHADER_FLOAT32_ATOMIC`, `SUBGROUP` and `TIMESTAMP_QUERY` where it has them.
     pub fn new(requirement: AdapterRequirement) -> Result<Self, GpuError> {
         let instance = instance();
         let adapters = sorted_adapters(&instance);
@@ -156,9 +159,12 @@ impl GpuContext {
             });
         };
         let summary = summary(&adapter);
-        // Native float atomics for the backward pass; timestamps for `GpuOptions::profile`.
+        // Native float atomics and subgroups for the backward pass; timestamps for
+        // `GpuOptions::profile`.
         let required_features = adapter.features()
-            & (wgpu::Features::SHADER_FLOAT32_ATOMIC | wgpu::Features::TIMESTAMP_QUERY);
+            & (wgpu::Features::SHADER_FLOAT32_ATOMIC
+                | wgpu::Features::SUBGROUP
+                | wgpu::Features::TIMESTAMP_QUERY);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("phygap"),
             required_features,
@@ -194,6 +200,11 @@ impl GpuContext {
         self.device
             .features()
             .contains(wgpu::Features::SHADER_FLOAT32_ATOMIC)
+    }
+
+    /// True when the device was opened with subgroup operations.
+    pub fn has_subgroups(&self) -> bool {
+        self.device.features().contains(wgpu::Features::SUBGROUP)
     }
 }
 

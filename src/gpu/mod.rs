@@ -20,7 +20,7 @@ mod profile;
 mod raster;
 
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};
-pub use raster::{AtomicsMode, GpuBackend, GpuOptions};
+pub use raster::{AtomicsMode, GpuBackend, GpuOptions, Walk};
 
 use thiserror::Error;
 

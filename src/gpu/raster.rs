@@ -63,6 +63,8 @@ const RASTERIZE: &str = include_str!("../../shaders/rasterize.wgsl");
 const RASTERIZE_BACKWARD: &str = include_str!("../../shaders/rasterize_backward.wgsl");
 const ATOMIC_FLOAT: &str = include_str!("../../shaders/atomic_float.wgsl");
 const ATOMIC_CAS: &str = include_str!("../../shaders/atomic_cas.wgsl");
+const WALK_OWN: &str = include_str!("../../shaders/walk_own.wgsl");
+const WALK_SUBGROUP: &str = include_str!("../../shaders/walk_subgroup.wgsl");
 const PROJECT_BACKWARD: &str = include_str!("../../shaders/project_backward.wgsl");
 
 /// How the backward pass adds into the per-surfel gradient sums.
@@ -74,11 +76,22 @@ pub enum AtomicsMode {
     CompareExchange,
 }
 
+/// How far back each thread of the backward pass walks its tile's list.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Walk {
+    /// From its own last composited entry.
+    OwnEntries,
+    /// From the last entry any thread of its subgroup composited, in step with them (`SUBGROUP`).
+    Subgroup,
+}
+
 /// Options of [`GpuBackend::with_options`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct GpuOptions {
     /// Use the compare-and-swap path even where float atomics exist (to test it).
     pub force_compare_exchange: bool,
+    /// Walk each pixel's own entries in the backward pass even where subgroups exist (to test it).
+    pub force_own_walk: bool,
     /// Treat buffers above this many bytes as beyond the device's binding limit (to test the
     /// splitting of large renders into bands on small scenes).
     pub max_binding_bytes: Option<u64>,
@@ -241,6 +254,7 @@ pub struct GpuBackend {
     ctx: GpuContext,
     pipelines: Pipelines,
     atomics: AtomicsMode,
+    walk: Walk,
     /// The largest buffer a binding may hold: the device's limit, or less ([`GpuOptions`]).
     binding_limit: u64,
     profiler: Option<PassProfiler>,
@@ -309,6 +323,11 @@ impl GpuBackend {
         } else {
             AtomicsMode::CompareExchange
         };
+        let walk = if ctx.has_subgroups() && !options.force_own_walk {
+            Walk::Subgroup
+        } else {
+            Walk::OwnEntries
+        };
         let device = &ctx.device;
         device.push_error_scope(wgpu::ErrorFilter::Validation);
         let pipeline = |label: &str, sources: &[&str], entry: &str| {
@@ -329,6 +348,10 @@ impl GpuBackend {
             AtomicsMode::Float => ATOMIC_FLOAT,
             AtomicsMode::CompareExchange => ATOMIC_CAS,
         };
+        let walk_src = match walk {
+            Walk::OwnEntries => WALK_OWN,
+            Walk::Subgroup => WALK_SUBGROUP,
+        };
         let pipelines = Pipelines {
             project: pipeline("project", &[COMMON, PROJECT], "project"),
             emit: pipeline("emit", &[COMMON, BIN], "emit"),
@@ -339,7 +362,7 @@ impl GpuBackend {
             rasterize: pipeline("rasterize", &[COMMON, TILE_LIST, RASTERIZE], "rasterize"),
             rasterize_backward: pipeline(
                 "rasterize_backward",
-                &[COMMON, TILE_LIST, RASTERIZE_BACKWARD, atomic_src],
+                &[COMMON, TILE_LIST, RASTERIZE_BACKWARD, atomic_src, walk_src],
                 "rasterize_backward",
             ),
             project_backward: pipeline(
@@ -370,6 +393,7 @@ impl GpuBackend {
             ctx,
             pipelines,
             atomics,
+            walk,
             exclusive: std::sync::Mutex::new(()),
         })
     }
@@ -380,6 +404,10 @@ impl GpuBackend {
 
     pub fn atomics(&self) -> AtomicsMode {
         self.atomics
+    }
+
+    pub fn walk(&self) -> Walk {
+        self.walk
     }
 
     fn device(&self) -> &wgpu::Device {
@@ -1124,9 +1152,10 @@ impl Backend for GpuBackend {
 
     fn description(&self) -> String {
         format!(
-            "gpu on {}, {:?} atomics",
+            "gpu on {}, {:?} atomics, {:?} walk",
             self.ctx.adapter_summary(),
-            self.atomics
+            self.atomics,
+            self.walk
         )
     }
 

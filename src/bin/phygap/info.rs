@@ -17,14 +17,15 @@ pub fn run() -> Result<()> {
     } else {
         println!("gpu adapters:");
         for a in &adapters {
-            println!(
-                "  {a}{}",
-                if a.float_atomics {
-                    ", float atomics"
-                } else {
-                    ""
-                }
-            );
+            let features: String = [
+                (a.float_atomics, ", float atomics"),
+                (a.subgroups, ", subgroups"),
+            ]
+            .iter()
+            .filter(|(has, _)| *has)
+            .map(|(_, name)| *name)
+            .collect();
+            println!("  {a}{features}");
         }
     }
     println!("backend choices:");

@@ -6,9 +6,12 @@
 //! projection and culling (one thread per surfel), a host exclusive scan of the per-surfel tile
 //! counts, emission of (tile, depth, surfel) entries and a radix sort of them on the device,
 //! per-tile ranges, forward compositing (one 8×8 workgroup per tile, one thread per pixel),
-//! and the backward pass (per-pixel back-to-front replay with float atomics or a compare-and-swap
-//! loop, then the per-surfel chain to raw parameters). The depth-derived normals and their
-//! backward are the host-side f64 helpers of [`crate::raster`], computed from the downloaded depth.
+//! and the backward pass (per-pixel back-to-front replay, a subgroup's threads in step where the
+//! adapter has subgroups, with float atomics or a compare-and-swap loop, then the per-surfel chain
+//! to raw parameters). Images too large for the adapter's binding limit are rasterized in bands of
+//! tile rows; [`GpuOptions::profile`] times every compute pass on the device. The depth-derived
+//! normals and their backward are the host-side f64 helpers of [`crate::raster`], computed from
+//! the downloaded depth.
 //!
 //! Not done on the device: the PolarDR shading and the loss (they stay on the cpu), and data does
 //! not stay on the device across iterations (surfels are uploaded on every forward pass and the

@@ -127,6 +127,14 @@ fn dockerfile_command_line_volume_and_healthcheck_are_real() {
     assert!(instruction(&all, "FROM").iter().any(|f| f.contains("slim")));
     assert!(instruction(&all, "USER").iter().all(|u| *u != "root"));
     assert!(all.iter().any(|i| i.contains("mesa-vulkan-drivers")));
+    // On NVIDIA hosts the container toolkit mounts the Vulkan driver only for `graphics`.
+    let capabilities = instruction(&all, "ENV")
+        .into_iter()
+        .find_map(|e| e.strip_prefix("NVIDIA_DRIVER_CAPABILITIES="))
+        .expect("NVIDIA_DRIVER_CAPABILITIES is set");
+    assert!(capabilities
+        .split(',')
+        .any(|c| c == "graphics" || c == "all"));
     // The build context excludes what must not be sent (build outputs, data).
     let ignore = read(".dockerignore");
     for entry in ["target", "shared", ".git"] {

@@ -1,9 +1,10 @@
 //! Triangle meshes: PLY/OBJ input and output, TSDF fusion of depth maps followed by marching cubes
 //! (METHOD.md §8), surface sampling and the unidirectional Chamfer-L1 metric.
 //!
-//! The submodules split the work: [`ply`] maps meshes to and from documents of the crate's one PLY
-//! parser ([`crate::ply`]), [`tsdf`] fuses depth maps into a truncated signed distance grid, [`marching_cubes`] turns that grid into a welded mesh, and
-//! [`chamfer`] measures the distance from one mesh to another. Long stages run inside `tracing` spans
+//! The submodules split the work: `ply` maps meshes to and from documents of the crate's one PLY
+//! parser ([`crate::ply`]), `tsdf` fuses depth maps into a truncated signed distance grid,
+//! `marching_cubes` turns that grid into a welded mesh, and `chamfer` measures the distance from
+//! one mesh to another. Long stages run inside `tracing` spans
 //! and use rayon over independent voxel slabs or sample chunks.
 
 use std::path::{Path, PathBuf};

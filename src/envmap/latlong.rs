@@ -1,7 +1,7 @@
 //! Lat-long (equirectangular) ⇄ cube conversion in the convention of CAPTURE_FORMAT.md §5 /
 //! DATA_FORMAT.md §6: texel (row i, column j) of an H × 2H map looks along
 //! `θ = π i/(H − 1)`, `φ = 2π (j + 0.5)/W`, `dir = sinθ sinφ · r + sinθ cosφ · f + cosθ · u`,
-//! bilinear, φ wrapping, θ clamping; for `world_up` [0,0,1]: u = +Z, f = +Y, r = +X; for [0,1,0]:
+//! bilinear, φ wrapping, θ clamping; for `world_up` (0, 0, 1): u = +Z, f = +Y, r = +X; for (0, 1, 0):
 //! u = +Y, f = −Z, r = +X. Import supersamples each cube texel (4 × 4 sub-directions) so small bright
 //! features (a sun disk) keep their energy. Work is split over cube rows / lat-long rows with rayon.
 

@@ -585,7 +585,7 @@ impl PreparedEnv {
 
     /// Prefilters many cube maps with one plan: the same result as [`Self::new`] on each, bit for
     /// bit, several times faster for many maps because every kernel weight is evaluated once per
-    /// group of [`BATCH_MAPS`] maps (GridMap's local probes). Parallel over output texels.
+    /// group of `BATCH_MAPS` maps (GridMap's local probes). Parallel over output texels.
     pub fn new_batch(
         cubes: &[CubeMap],
         plan: Arc<PrefilterPlan>,

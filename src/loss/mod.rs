@@ -5,7 +5,7 @@
 //! a mean, so its gradient scales as 1 / (number of terms); the trainer multiplies values and
 //! gradients by the weights of [`LossWeights`] and sums them.
 //!
-//! Threading: [`ssim`] (and so [`photometric`]) uses rayon over channels and rows; the other losses
+//! Threading: [`ssim()`] (and so [`photometric`]) uses rayon over channels and rows; the other losses
 //! are single-threaded linear passes.
 
 pub mod ssim;

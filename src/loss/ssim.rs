@@ -4,7 +4,7 @@
 //!
 //! The window is separable, so every local statistic is two 1D passes (rows, then columns). The
 //! backward pass is analytic: the SSIM map is differentiated with respect to the five local moments
-//! (μx, μy, E[x²], E[y²], E[xy]) and those adjoints are blurred back (the zero-padded "same"
+//! (μx, μy, E(x²), E(y²), E(xy)) and those adjoints are blurred back (the zero-padded "same"
 //! convolution with a symmetric kernel is its own adjoint).
 //!
 //! All five moments of all channels are blurred in one pass (three adjoints per channel on the way

@@ -1,5 +1,5 @@
 //! Physics check of the shading model: ground-truth geometry, materials and light are fed straight
-//! into [`shade`](super::shade) and the result is compared with independently rendered Stokes images
+//! into [`shade`] and the result is compared with independently rendered Stokes images
 //! (METHOD.md §4, "measured ceiling"). Metrics are computed inside the mask: S0 PSNR on linear
 //! radiance with peak 1 (and with the peak at the GT maximum), S1/S2 relative L1 (Σ|Ŝ − S| / Σ|S| over pixels and channels), and, on the
 //! channel-summed (grey) Stokes vector, the fraction of pixels with GT DoLP > 0.05 whose AoLP lies

@@ -286,6 +286,16 @@ struct BandSaved {
     contrib: wgpu::Buffer,
 }
 
+/// What every band of one forward pass shares: the view, and the surfels on the device (raw and
+/// projected; the projection is the same for every band).
+struct Frame<'a> {
+    camera: &'a Camera,
+    settings: &'a RasterSettings,
+    surfels: u32,
+    raw: &'a wgpu::Buffer,
+    proj: &'a wgpu::Buffer,
+}
+
 /// What the forward pass of one band brings back.
 struct BandResult {
     saved: BandSaved,
@@ -642,6 +652,7 @@ impl GpuBackend {
         self.check_size("g-buffers (one tile row)", tile_row_bytes)?;
         let rows_per_band = (self.binding_limit / tile_row_bytes).min(u64::from(u32::MAX)) as u32;
         let tile_rows = camera.height.div_ceil(TILE);
+        // A stack with the top band last, so bands are popped top to bottom.
         let mut pending: Vec<Band> = (0..tile_rows)
             .step_by(rows_per_band as usize)
             .map(|first| Band {
@@ -682,10 +693,17 @@ impl GpuBackend {
         )?;
 
         // Bands top to bottom; one whose entries exceed the limit is split in two.
+        let frame = Frame {
+            camera,
+            settings,
+            surfels: n32,
+            raw: &raw_buf,
+            proj: &proj_buf,
+        };
         let mut done: Vec<BandResult> = Vec::new();
         while let Some(band) = pending.pop() {
             let _span = info_span!("band", first = band.first, end = band.end).entered();
-            match self.forward_band(surfels, camera, settings, n32, band, &raw_buf, &proj_buf)? {
+            match self.forward_band(&frame, band)? {
                 BandOutcome::Done(result) => done.push(*result),
                 BandOutcome::TooManyEntries(total) if band.tile_rows() == 1 => {
                     self.check_size("tile entries (one tile row)", total * ENTRY_BYTES)?;
@@ -751,23 +769,15 @@ impl GpuBackend {
 
     /// Projects the surfels for `band` (the projection is the same for every band; the tile
     /// counts are the band's), bins and sorts the band's entries and rasterizes its tiles.
-    #[allow(clippy::too_many_arguments)]
-    fn forward_band(
-        &self,
-        surfels: &Surfels,
-        camera: &Camera,
-        settings: &RasterSettings,
-        n32: u32,
-        band: Band,
-        raw_buf: &wgpu::Buffer,
-        proj_buf: &wgpu::Buffer,
-    ) -> Result<BandOutcome, RasterError> {
+    fn forward_band(&self, frame: &Frame, band: Band) -> Result<BandOutcome, RasterError> {
         let device = self.device();
         let queue = &self.ctx.queue;
-        let n = surfels.len();
+        let (camera, settings) = (frame.camera, frame.settings);
+        let (raw_buf, proj_buf) = (frame.raw, frame.proj);
+        let n = frame.surfels as usize;
         let pixels = u64::from(camera.width) * u64::from(band.pixel_rows(camera.height));
         let tiles = camera.width.div_ceil(TILE) * band.tile_rows();
-        let mut params = ParamsGpu::new(camera, settings, n32, band);
+        let mut params = ParamsGpu::new(camera, settings, frame.surfels, band);
         let params_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("params"),
             contents: bytemuck::bytes_of(&params),

@@ -233,6 +233,43 @@ struct RadixPassGpu {
     blocks: u32,
 }
 
+/// How many low bits of each key word can differ between the entries of one sort: the radix sort
+/// runs passes over those only (the bits above are the same in every entry, so their passes would
+/// move nothing).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct KeyBits {
+    depth: u32,
+    tile: u32,
+}
+
+/// Bits below (and at) the highest bit in which `lo` and `hi` differ: every value between them
+/// shares the bits above.
+fn varying_bits(lo: u32, hi: u32) -> u32 {
+    u32::BITS - (lo ^ hi).leading_zeros()
+}
+
+/// The low bits of the f32 centre depth (the sort key, `Proj::q1.w`; a positive f32 orders like
+/// its bit pattern) that can differ between the surfels in front of the camera. Computed on the
+/// host in f64, with a relative margin of 1e-5 on the range and on `near` that covers the device's
+/// f32 rounding, so the range can only come out wider than the device's, never narrower.
+fn varying_depth_bits(surfels: &Surfels, camera: &Camera, near: f64) -> u32 {
+    let (rot, trans) = camera.world_to_camera_opencv();
+    let (lo, hi) = surfels
+        .position
+        .iter()
+        .map(|&p| (rot * glam::DVec3::from_array(p)).z + trans.z)
+        .filter(|&z| z > near * (1.0 - 1e-5))
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), z| {
+            (lo.min(z), hi.max(z))
+        });
+    if lo > hi {
+        return 0;
+    }
+    let lo = (lo * (1.0 - 1e-5)) as f32;
+    let hi = (hi * (1.0 + 1e-5)) as f32;
+    varying_bits(lo.to_bits(), hi.to_bits())
+}
+
 /// Key words of a binning entry, as `RadixPass::word` names them.
 const DEPTH_WORD: u32 = 0;
 const TILE_WORD: u32 = 1;
@@ -292,6 +329,8 @@ struct Frame<'a> {
     camera: &'a Camera,
     settings: &'a RasterSettings,
     surfels: u32,
+    /// [`varying_depth_bits`] of the surfels.
+    depth_bits: u32,
     raw: &'a wgpu::Buffer,
     proj: &'a wgpu::Buffer,
 }
@@ -697,6 +736,7 @@ impl GpuBackend {
             camera,
             settings,
             surfels: n32,
+            depth_bits: varying_depth_bits(surfels, camera, settings.near),
             raw: &raw_buf,
             proj: &proj_buf,
         };
@@ -872,8 +912,15 @@ impl GpuBackend {
                 ],
             );
             self.dispatch_1d(&mut encoder, "emit", &self.pipelines.emit, &group, n as u64)?;
-            let entries_buf =
-                self.encode_sort(&mut encoder, [entries_buf, sorted_alt_buf], total, tiles)?;
+            let entries_buf = self.encode_sort(
+                &mut encoder,
+                [entries_buf, sorted_alt_buf],
+                total,
+                KeyBits {
+                    depth: frame.depth_bits,
+                    tile: varying_bits(0, tiles - 1),
+                },
+            )?;
             encoder.clear_buffer(&ranges_buf, 0, None);
             let group = self.bind(
                 &self.pipelines.tile_ranges,
@@ -936,25 +983,24 @@ impl GpuBackend {
     }
 
     /// Encodes the radix sort of the first `total` entries of `buffers[0]` by (tile, depth) and
-    /// returns the buffer that holds the result (the passes alternate between the two). Eight
-    /// passes cover the depth bits and ⌈log2(tiles) / 4⌉ the tile index; each pass reads its
-    /// parameters from its own aligned slice of a uniform buffer.
+    /// returns the buffer that holds the result (the passes alternate between the two). The passes
+    /// cover the varying low bits of the depth, then of the tile index ([`KeyBits`]); each reads
+    /// its parameters from its own aligned slice of a uniform buffer.
     fn encode_sort(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         buffers: [wgpu::Buffer; 2],
         total: u64,
-        tiles: u32,
+        bits: KeyBits,
     ) -> Result<wgpu::Buffer, RasterError> {
         let [mut keys, mut other] = buffers;
         if total < 2 {
             return Ok(keys);
         }
         let blocks = total.div_ceil(RADIX_BLOCK);
-        let tile_bits = u32::BITS - (tiles - 1).leading_zeros();
-        let passes: Vec<RadixPassGpu> = (0..u32::BITS.div_ceil(RADIX_BITS))
+        let passes: Vec<RadixPassGpu> = (0..bits.depth.div_ceil(RADIX_BITS))
             .map(|p| (p * RADIX_BITS, DEPTH_WORD))
-            .chain((0..tile_bits.div_ceil(RADIX_BITS)).map(|p| (p * RADIX_BITS, TILE_WORD)))
+            .chain((0..bits.tile.div_ceil(RADIX_BITS)).map(|p| (p * RADIX_BITS, TILE_WORD)))
             .map(|(shift, word)| RadixPassGpu {
                 shift,
                 word,
@@ -1200,5 +1246,48 @@ impl Backend for GpuBackend {
         self.profiler
             .as_ref()
             .map_or_else(Vec::new, PassProfiler::take)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    #[test]
+    fn varying_bits_counts_up_to_the_highest_differing_bit() {
+        assert_eq!(varying_bits(0, 0), 0);
+        assert_eq!(varying_bits(0, 1), 1);
+        assert_eq!(varying_bits(0, 1023), 10);
+        assert_eq!(varying_bits(0, 1024), 11);
+        assert_eq!(varying_bits(0xF0F0, 0xF0F1), 1);
+        assert_eq!(varying_bits(0x8000_0000, 0), 32);
+    }
+
+    /// Surfels at view depths 3.1 and 3.5 share the f32 bits above bit 21 (3.1 = 0x40466666,
+    /// 3.5 = 0x40600000), margin included; surfels behind the camera do not count; none in front
+    /// needs no pass.
+    #[test]
+    fn depth_bits_cover_the_surfels_in_front_of_the_camera() {
+        let camera = Camera::look_at(
+            64,
+            48,
+            0.8,
+            DVec3::new(0.0, 0.0, 4.0),
+            DVec3::ZERO,
+            DVec3::Y,
+        );
+        let mut surfels = Surfels::zeros(3);
+        surfels.position = vec![[0.0, 0.0, 0.9], [0.1, 0.0, 0.5], [0.0, 0.0, 9.0]];
+        assert_eq!(varying_depth_bits(&surfels, &camera, 0.01), 22);
+        let f32_bits = |z: f64| (z as f32).to_bits();
+        assert_eq!(varying_bits(f32_bits(3.1), f32_bits(3.5)), 22);
+        surfels.position = vec![[0.0, 0.0, 9.0]];
+        assert_eq!(varying_depth_bits(&surfels, &camera, 0.01), 0);
+        // One surfel: only the low bits within the margin (±1e-5, ±130 ulps at 3.1) vary, far
+        // fewer than a full sort's 32.
+        surfels.position = vec![[0.0, 0.0, 0.9]];
+        let bits = varying_depth_bits(&surfels, &camera, 0.01);
+        assert!((8..16).contains(&bits), "{bits}");
     }
 }

@@ -23,6 +23,7 @@ pub enum TrainEvent {
     Started {
         iterations: u32,
         mode: String,
+        /// The compute backend and what it runs on (e.g. `cpu (16 threads)`, `gpu on NVIDIA …`).
         backend: String,
         train_views: usize,
         test_views: usize,

@@ -130,6 +130,9 @@ pub struct Progress {
     pub checkpoint_iteration: Option<u32>,
     /// Iteration the latest run resumed from (after a restart or crash).
     pub resumed_from: Option<u32>,
+    /// The compute backend the latest run trains on (absent in rows written before it existed).
+    #[serde(default)]
+    pub backend: Option<String>,
 }
 
 /// A job as stored.

@@ -30,10 +30,20 @@ async fn upload_train_and_download_every_artifact() {
     assert_eq!(status, 201, "{job}");
     assert_eq!(job["state"], "queued");
     assert_eq!(job["iterations"], 40);
+    assert!(
+        job["backend"].is_null(),
+        "no backend before training: {job}"
+    );
     let id = job["id"].as_str().unwrap().to_string();
     let done = t.wait_succeeded(&id).await;
     assert_eq!(done["iteration"], 40);
     assert_eq!(done["stage"], "done");
+    // The backend it trained on, as `--backend auto` resolved it on this machine.
+    let backend = done["backend"].as_str().unwrap_or_default();
+    assert!(
+        backend.starts_with("cpu (") || backend.starts_with("gpu on "),
+        "{done}"
+    );
     let psnr = done["test_psnr"].as_f64().unwrap();
     assert!(psnr > 10.0 && psnr < 100.0, "a real test PSNR: {done}");
     let loss = done["losses"]["total"].as_f64().unwrap();

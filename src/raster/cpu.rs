@@ -380,6 +380,10 @@ impl Backend for CpuBackend {
         "cpu"
     }
 
+    fn description(&self) -> String {
+        format!("cpu ({} threads)", rayon::current_num_threads())
+    }
+
     fn forward(
         &self,
         surfels: &Surfels,

@@ -280,7 +280,7 @@ impl Run<'_> {
         reporter.emit(TrainEvent::Started {
             iterations: self.config.iterations,
             mode: format!("{:?}", self.mode).to_lowercase(),
-            backend: self.backend.name().to_owned(),
+            backend: self.backend.description(),
             train_views: self.targets.len(),
             test_views: self.capture.test_views().count(),
             resumed_from,

@@ -121,11 +121,13 @@ pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
         TrainEvent::Started {
             iterations,
             resumed_from,
+            backend,
             ..
         } => {
             progress.iterations = *iterations;
             progress.iteration = resumed_from.unwrap_or(0);
             progress.resumed_from = *resumed_from;
+            progress.backend = Some(backend.clone());
         }
         TrainEvent::Step {
             iteration,
@@ -379,7 +381,7 @@ mod tests {
             &TrainEvent::Started {
                 iterations: 300,
                 mode: "full".into(),
-                backend: "cpu".into(),
+                backend: "cpu (2 threads)".into(),
                 train_views: 7,
                 test_views: 1,
                 resumed_from: Some(100),
@@ -389,6 +391,7 @@ mod tests {
             (p.iteration, p.iterations, p.resumed_from),
             (100, 300, Some(100))
         );
+        assert_eq!(p.backend.as_deref(), Some("cpu (2 threads)"));
         apply_event(
             &mut p,
             &TrainEvent::Step {

@@ -44,6 +44,7 @@ pub struct JobView {
     finished_at: Option<String>,
     attempts: u32,
     resumed_from: Option<u32>,
+    backend: Option<String>,
     cancel_requested: bool,
     #[serde(skip_serializing_if = "Option::is_none")]
     config: Option<TrainConfig>,
@@ -74,6 +75,7 @@ impl From<JobRecord> for JobView {
             finished_at: job.finished_at.map(rfc3339),
             attempts: job.attempts,
             resumed_from: job.progress.resumed_from,
+            backend: job.progress.backend,
             cancel_requested: job.cancel_requested,
             config,
         }

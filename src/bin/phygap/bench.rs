@@ -106,11 +106,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             if a.json {
                 println!("{}", serde_json::to_string_pretty(&rows)?);
             } else {
-                if backend.name() == "cpu" {
-                    println!("backend cpu ({} threads)", rayon::current_num_threads());
-                } else {
-                    println!("backend {}", backend.description());
-                }
+                println!("backend {}", backend.description());
                 println!(
                     "{:>9} {:>9} {:>10} {:>13} {:>16}",
                     "surfels", "size", "fwd ms", "fwd+bwd ms", "fwd evals/s"

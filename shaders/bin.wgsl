@@ -1,9 +1,8 @@
 // Tile binning around the sort (radix_sort.wgsl): `emit` writes one (tile, depth, surfel) entry per
-// tile of the band that a projected surfel's pixel box touches (tiles numbered from the band's first
-// row), at the surfel's offset from the host's exclusive
-// scan of the tile counts (so entries come in surfel order); after the sort, `tile_ranges` marks
-// where each tile's run of entries starts and ends (the ranges buffer is cleared to zero first, so
-// empty tiles are 0..0).
+// tile of the band that a projected surfel's pixel box touches (tiles numbered from the band's
+// first row), at the surfel's offset from the host's exclusive scan of the tile counts, so entries
+// come in surfel order; after the sort, `tile_ranges` marks where each tile's run of entries starts
+// and ends (the ranges buffer is cleared to zero first, so empty tiles are 0..0).
 // Threading: one thread per surfel (`emit`) or per entry (`tile_ranges`), 256-thread
 // workgroups on a 2-D grid. Entries are vec4<u32>(tile, depth bits, surfel, 0): the centre depth is
 // positive, so its f32 bit pattern orders like its value.

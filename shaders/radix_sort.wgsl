@@ -1,8 +1,8 @@
 // Stable least-significant-digit radix sort of the binning entries (vec4<u32>: tile, depth bits,
-// surfel) by (tile, depth), 4 bits per pass: eight passes over the depth bits, then as many over
-// the tile bits as the tile count needs. `emit` writes the entries in surfel order, and every pass
-// is stable, so ties keep surfel order: each tile's run ends up front to back, ties broken by surfel
-// index like the cpu backend.
+// surfel) by (tile, depth), 4 bits per pass: passes over the depth bits that vary between the
+// entries (the host skips digits that are the same in all), then over the tile bits the tile count
+// needs. `emit` writes the entries in surfel order, and every pass is stable, so ties keep surfel
+// order: each tile's run ends up front to back, ties broken by surfel index like the cpu backend.
 // One pass is three kernels over blocks of RADIX_BLOCK entries (the host ping-pongs `keys_in` and
 // `keys_out` between passes):
 //   `radix_count`   per block, how many entries have each digit (per-thread counts summed with

@@ -15,7 +15,6 @@
 @group(0) @binding(6) var<storage, read> final_t: array<f32>;
 @group(0) @binding(7) var<storage, read> contrib: array<u32>;
 
-
 @compute @workgroup_size(8, 8)
 fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>) {
     let prm = params;

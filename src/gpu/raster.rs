@@ -465,15 +465,20 @@ impl GpuBackend {
 
     /// Fails with a message naming the buffer when `bytes` exceeds the device's limits.
     fn check_size(&self, name: &str, bytes: u64) -> Result<(), RasterError> {
-        let limit = self.binding_limit;
-        if bytes > limit {
-            return Err(RasterError::Gpu(format!(
-                "buffer `{name}` needs {bytes} bytes, more than the device allows \
-                 ({limit} bytes, max_storage_buffer_binding_size); use fewer surfels, a smaller \
-                 image or `--backend cpu`"
-            )));
+        if bytes > self.binding_limit {
+            return Err(self.too_large(name, bytes));
         }
         Ok(())
+    }
+
+    /// The error of a buffer `name` of `bytes` that exceeds the binding limit.
+    fn too_large(&self, name: &str, bytes: u64) -> RasterError {
+        RasterError::Gpu(format!(
+            "buffer `{name}` needs {bytes} bytes, more than the device allows ({} bytes, \
+             max_storage_buffer_binding_size); use fewer surfels, a smaller image or \
+             `--backend cpu`",
+            self.binding_limit
+        ))
     }
 
     /// A zeroed storage buffer of `bytes` (checked against the binding limit).
@@ -746,7 +751,7 @@ impl GpuBackend {
             match self.forward_band(&frame, band)? {
                 BandOutcome::Done(result) => done.push(*result),
                 BandOutcome::TooManyEntries(total) if band.tile_rows() == 1 => {
-                    self.check_size("tile entries (one tile row)", total * ENTRY_BYTES)?;
+                    return Err(self.too_large("tile entries (one tile row)", total * ENTRY_BYTES));
                 }
                 BandOutcome::TooManyEntries(_) => {
                     let (top, bottom) = band.halves();
@@ -849,23 +854,23 @@ impl GpuBackend {
             bytemuck::pod_collect_to_vec(&out[0])
         };
 
-        // Host exclusive scan of the tile counts.
-        let (offsets, total) = {
-            let _span = info_span!("scan").entered();
-            let mut offsets = Vec::with_capacity(n);
-            let mut total = 0u64;
-            for &c in &counts {
-                offsets.push(total as u32);
-                total += u64::from(c);
-                if total > u64::from(u32::MAX / 2) {
-                    return Ok(BandOutcome::TooManyEntries(total));
-                }
-            }
-            (offsets, total)
-        };
+        // Host exclusive scan of the tile counts. Entries that fit the binding limit (a u32 of
+        // bytes) also fit the u32 offsets.
+        let total: u64 = counts.iter().map(|&c| u64::from(c)).sum();
         if total * ENTRY_BYTES > self.binding_limit {
             return Ok(BandOutcome::TooManyEntries(total));
         }
+        let offsets: Vec<u32> = {
+            let _span = info_span!("scan").entered();
+            counts
+                .iter()
+                .scan(0u32, |next, &c| {
+                    let offset = *next;
+                    *next += c;
+                    Some(offset)
+                })
+                .collect()
+        };
         params.counts[1] = total as u32;
         queue.write_buffer(&params_buf, 0, bytemuck::bytes_of(&params));
 

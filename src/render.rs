@@ -11,7 +11,7 @@ use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::envmap::LightProbe;
 use crate::raster::{Backend, GBuffers, RasterError, RasterSettings, Rasterized};
-use crate::shading::{self, ShadingBuffers, ShadingError, StokesImage};
+use crate::shading::{ShadingBuffers, ShadingError, StokesImage};
 use crate::surfels::Surfels;
 
 /// Pixels whose opacity is at most this are not shaded (they are background).
@@ -104,7 +104,7 @@ impl Scene<'_> {
     pub fn render(&self, camera: &Camera) -> Result<RenderedView, RenderError> {
         let raster = self.backend.forward(self.surfels, camera, &self.settings)?;
         let inputs = ShadingInputs::new(&raster.gbuffers, camera);
-        let shaded = shading::shade_image(
+        let shaded = self.backend.shade(
             camera,
             &inputs.buffers(&raster.gbuffers),
             self.light,

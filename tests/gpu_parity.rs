@@ -9,7 +9,7 @@
 
 use glam::{DMat3, DQuat, DVec3};
 use phygap::camera::Camera;
-use phygap::gpu::{AdapterRequirement, AtomicsMode, GpuBackend, GpuContext, GpuOptions, Walk};
+use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions, Walk};
 use phygap::raster::cpu::CpuBackend;
 use phygap::raster::{Backend, GBuffers, RasterSettings};
 use phygap::surfels::{logit, SurfelGrads, Surfels};
@@ -17,21 +17,8 @@ use phygap::testing::random_upstream;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-fn in_ci() -> bool {
-    std::env::var("CI").is_ok_and(|v| v == "true" || v == "1")
-}
-
-/// The gpu backend, or `None` (after printing why) where no adapter exists outside CI.
-fn gpu(options: GpuOptions) -> Option<GpuBackend> {
-    match GpuContext::new(AdapterRequirement::Any) {
-        Ok(ctx) => Some(GpuBackend::with_options(ctx, options).expect("gpu kernels compile")),
-        Err(e) => {
-            assert!(!in_ci(), "CI=true but no GPU adapter could be opened: {e}");
-            println!("skipping: no GPU adapter ({e})");
-            None
-        }
-    }
-}
+mod common;
+use common::{gpu, random_camera, worst};
 
 #[test]
 fn adapter_matches_wgpu_backend_env() {
@@ -51,16 +38,6 @@ fn adapter_matches_wgpu_backend_env() {
             assert_eq!(info.backend, wgpu::Backend::Vulkan);
         }
     }
-}
-
-fn random_camera(rng: &mut ChaCha8Rng, w: u32, h: u32) -> Camera {
-    let dir = DVec3::new(
-        rng.random_range(-1.0..1.0),
-        rng.random_range(-1.0..1.0),
-        rng.random_range(-0.6..0.6),
-    )
-    .normalize();
-    Camera::look_at(w, h, 0.8, 3.5 * dir, DVec3::ZERO, DVec3::Z)
 }
 
 /// `n` random surfels in the cube [-0.8, 0.8]³ with random orientations, sizes and materials.
@@ -109,16 +86,6 @@ fn shell(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
         s.log_scale[i] = [scale, scale];
     }
     s
-}
-
-/// Largest `|gpu − cpu| / (|cpu| + floor)` over a buffer, with its index.
-fn worst(gpu: &[f64], cpu: &[f64], floor: f64) -> (f64, usize) {
-    assert_eq!(gpu.len(), cpu.len());
-    gpu.iter()
-        .zip(cpu)
-        .map(|(g, c)| (g - c).abs() / (c.abs() + floor))
-        .enumerate()
-        .fold((0.0, 0), |acc, (i, e)| if e > acc.0 { (e, i) } else { acc })
 }
 
 /// Asserts the G-buffers agree to 1e-4 relative, `|gpu − cpu| ≤ 1e-4 (|cpu| + floor)`, with floor

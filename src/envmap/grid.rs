@@ -124,6 +124,13 @@ impl CubeGrid {
         self.dirs.len()
     }
 
+    /// The border table: for each face and padded coordinates (x, y) ∈ [−1, D]², at
+    /// `(face · (D + 2) + y + 1) · (D + 2) + x + 1`, the flat index of the texel there (across a
+    /// face edge, the nearest texel of the neighbouring face). The gpu shader's lookups read it.
+    pub fn border_table(&self) -> &[u32] {
+        &self.border
+    }
+
     fn padded_index(&self, face: usize, x: isize, y: isize) -> usize {
         let p = self.size + 2;
         self.border[(face * p + (y + 1) as usize) * p + (x + 1) as usize] as usize

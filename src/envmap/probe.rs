@@ -38,6 +38,12 @@ pub trait LightProbe: Sync {
 
     /// Zero accumulators for this light's gradient.
     fn zero_grad(&self) -> EnvGrad;
+
+    /// The global environment, where this light is nothing else (position-independent): a
+    /// backend may then shade on its own device. `None` for lights it must call per pixel.
+    fn as_global(&self) -> Option<&PreparedEnv> {
+        None
+    }
 }
 
 impl LightProbe for PreparedEnv {
@@ -73,5 +79,9 @@ impl LightProbe for PreparedEnv {
 
     fn zero_grad(&self) -> EnvGrad {
         PreparedEnv::zero_grad(self)
+    }
+
+    fn as_global(&self) -> Option<&PreparedEnv> {
+        Some(self)
     }
 }

@@ -21,6 +21,7 @@
 mod context;
 mod profile;
 mod raster;
+mod shade;
 
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};
 pub use raster::{AtomicsMode, GpuBackend, GpuOptions, Walk};

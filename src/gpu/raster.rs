@@ -34,12 +34,18 @@ use tracing::info_span;
 use wgpu::util::DeviceExt;
 
 use super::profile::PassProfiler;
+use super::shade::{SHADE, SHADE_BACKWARD, SHADE_COMMON};
 use super::{GpuContext, GpuError};
+use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
+use crate::envmap::{EnvGrad, LightProbe};
 use crate::raster::{
     begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
     StageTime,
+};
+use crate::shading::{
+    self, GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
 };
 use crate::surfels::{SurfelGrads, Surfels};
 
@@ -274,7 +280,7 @@ fn varying_depth_bits(surfels: &Surfels, camera: &Camera, near: f64) -> u32 {
 const DEPTH_WORD: u32 = 0;
 const TILE_WORD: u32 = 1;
 
-struct Pipelines {
+pub(super) struct Pipelines {
     project: wgpu::ComputePipeline,
     emit: wgpu::ComputePipeline,
     tile_ranges: wgpu::ComputePipeline,
@@ -284,6 +290,8 @@ struct Pipelines {
     rasterize: wgpu::ComputePipeline,
     rasterize_backward: wgpu::ComputePipeline,
     project_backward: wgpu::ComputePipeline,
+    pub(super) shade: wgpu::ComputePipeline,
+    pub(super) shade_backward: wgpu::ComputePipeline,
 }
 
 /// The wgpu rasterizer backend.
@@ -419,6 +427,12 @@ impl GpuBackend {
                 &[COMMON, PROJECT_BACKWARD],
                 "project_backward",
             ),
+            shade: pipeline("shade", &[SHADE_COMMON, SHADE], "shade"),
+            shade_backward: pipeline(
+                "shade_backward",
+                &[SHADE_COMMON, SHADE_BACKWARD, atomic_src],
+                "shade_backward",
+            ),
         };
         if let Some(e) = pollster::block_on(device.pop_error_scope()) {
             return Err(GpuError::Shader {
@@ -459,7 +473,16 @@ impl GpuBackend {
         self.walk
     }
 
-    fn device(&self) -> &wgpu::Device {
+    pub(super) fn pipelines(&self) -> &Pipelines {
+        &self.pipelines
+    }
+
+    /// The largest buffer a binding may hold.
+    pub(super) fn binding_limit(&self) -> u64 {
+        self.binding_limit
+    }
+
+    pub(super) fn device(&self) -> &wgpu::Device {
         &self.ctx.device
     }
 
@@ -482,7 +505,7 @@ impl GpuBackend {
     }
 
     /// A zeroed storage buffer of `bytes` (checked against the binding limit).
-    fn storage(
+    pub(super) fn storage(
         &self,
         name: &str,
         bytes: u64,
@@ -498,7 +521,11 @@ impl GpuBackend {
     }
 
     /// A storage buffer holding `contents` (checked against the binding limit).
-    fn storage_init(&self, name: &str, contents: &[u8]) -> Result<wgpu::Buffer, RasterError> {
+    pub(super) fn storage_init(
+        &self,
+        name: &str,
+        contents: &[u8],
+    ) -> Result<wgpu::Buffer, RasterError> {
         self.check_size(name, contents.len() as u64)?;
         let mut padded;
         let data = if (contents.len() as u64) < MIN_BINDING_BYTES {
@@ -517,7 +544,7 @@ impl GpuBackend {
             }))
     }
 
-    fn bind(
+    pub(super) fn bind(
         &self,
         pipeline: &wgpu::ComputePipeline,
         buffers: &[(u32, &wgpu::Buffer)],
@@ -566,7 +593,7 @@ impl GpuBackend {
         })
     }
 
-    fn dispatch_1d(
+    pub(super) fn dispatch_1d(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         label: &'static str,
@@ -604,7 +631,7 @@ impl GpuBackend {
     /// Copies each `(buffer, bytes)` into a mappable buffer after `encoder`'s work, submits, waits
     /// and returns the bytes.
     /// The pass timestamps (when profiling) come back with them and go to the profiler.
-    fn submit_and_read(
+    pub(super) fn submit_and_read(
         &self,
         mut encoder: wgpu::CommandEncoder,
         sources: &[(&wgpu::Buffer, u64)],
@@ -655,7 +682,7 @@ impl GpuBackend {
 
     /// Runs `f` inside out-of-memory and validation error scopes; a device error becomes a
     /// [`RasterError::Gpu`] naming `stage`.
-    fn scoped<T>(
+    pub(super) fn scoped<T>(
         &self,
         stage: &str,
         f: impl FnOnce() -> Result<T, RasterError>,
@@ -1251,6 +1278,35 @@ impl Backend for GpuBackend {
         self.profiler
             .as_ref()
             .map_or_else(Vec::new, PassProfiler::take)
+    }
+
+    /// On the device under the global light; a position-dependent light (GridMap) with the cpu
+    /// code.
+    fn shade(
+        &self,
+        camera: &Camera,
+        buffers: &ShadingBuffers,
+        light: &dyn LightProbe,
+        lut: &BrdfLut,
+    ) -> Result<StokesImage, ShadingError> {
+        match light.as_global() {
+            Some(env) => self.shade_on_device(camera, buffers, env, lut),
+            None => shading::shade_image(camera, buffers, light, lut),
+        }
+    }
+
+    fn shade_backward(
+        &self,
+        camera: &Camera,
+        buffers: &ShadingBuffers,
+        light: &dyn LightProbe,
+        lut: &BrdfLut,
+        upstream: &StokesImageGrad,
+    ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
+        match light.as_global() {
+            Some(env) => self.shade_backward_on_device(camera, buffers, env, lut, upstream),
+            None => shading::shade_image_backward(camera, buffers, light, lut, upstream),
+        }
     }
 }
 

@@ -2,7 +2,8 @@
 //!
 //! This module is the backend-neutral interface: [`Backend`] turns surfels and a camera into
 //! [`GBuffers`] (forward) and turns upstream gradients on every buffer back into gradients on the raw
-//! surfel parameters (backward). [`cpu::CpuBackend`] is the f64 reference implementation. The
+//! surfel parameters (backward); it also shades G-buffers (PolarDR, the cpu code of
+//! [`crate::shading`] unless the backend has its own). [`cpu::CpuBackend`] is the f64 reference implementation. The
 //! depth-derived normal map and the α-normalization are defined here, once, so every backend
 //! produces the same buffers.
 //!
@@ -21,7 +22,12 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
+use crate::envmap::{EnvGrad, LightProbe};
+use crate::shading::{
+    self, GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
+};
 use crate::surfels::{SurfelGrads, Surfels};
 
 /// Thresholds of the rasterizer (2DGS defaults).
@@ -274,6 +280,28 @@ pub trait Backend: Send + Sync {
     /// backend with [`crate::gpu::GpuOptions::profile`]); empty otherwise.
     fn take_stage_times(&self) -> Vec<StageTime> {
         Vec::new()
+    }
+    /// PolarDR shading of one view's G-buffers ([`shading::shade_image`], the default); a
+    /// backend may run it on its own device.
+    fn shade(
+        &self,
+        camera: &Camera,
+        buffers: &ShadingBuffers,
+        light: &dyn LightProbe,
+        lut: &BrdfLut,
+    ) -> Result<StokesImage, ShadingError> {
+        shading::shade_image(camera, buffers, light, lut)
+    }
+    /// Backward of [`Self::shade`] ([`shading::shade_image_backward`], the default).
+    fn shade_backward(
+        &self,
+        camera: &Camera,
+        buffers: &ShadingBuffers,
+        light: &dyn LightProbe,
+        lut: &BrdfLut,
+        upstream: &StokesImageGrad,
+    ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
+        shading::shade_image_backward(camera, buffers, light, lut, upstream)
     }
 }
 

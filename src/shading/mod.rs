@@ -46,6 +46,9 @@ pub enum ShadingError {
         expected_height: usize,
         expected_channels: usize,
     },
+    /// The gpu backend could not shade (device error, or a buffer beyond the device's limits).
+    #[error("gpu shading: {0}")]
+    Gpu(String),
 }
 
 /// Everything the shader needs at one pixel.
@@ -463,7 +466,8 @@ pub struct ShadingBuffers<'a> {
 }
 
 impl ShadingBuffers<'_> {
-    fn check(&self, pixels: usize) -> Result<(), ShadingError> {
+    /// Fails naming the first buffer that does not hold one entry per pixel.
+    pub(crate) fn check(&self, pixels: usize) -> Result<(), ShadingError> {
         let lengths = [
             ("normal", self.normal.len()),
             ("albedo", self.albedo.len()),
@@ -484,7 +488,7 @@ impl ShadingBuffers<'_> {
         Ok(())
     }
 
-    fn is_active(&self, p: usize) -> bool {
+    pub(crate) fn is_active(&self, p: usize) -> bool {
         self.active.is_none_or(|a| a[p])
     }
 
@@ -527,6 +531,26 @@ pub struct StokesImageGrad<'a> {
     pub s0: &'a [DVec3],
     pub s1: &'a [DVec3],
     pub s2: &'a [DVec3],
+}
+
+impl StokesImageGrad<'_> {
+    /// Fails naming the first image that does not hold one entry per pixel.
+    pub(crate) fn check(&self, pixels: usize) -> Result<(), ShadingError> {
+        for (name, found) in [
+            ("grad s0", self.s0.len()),
+            ("grad s1", self.s1.len()),
+            ("grad s2", self.s2.len()),
+        ] {
+            if found != pixels {
+                return Err(ShadingError::BufferLength {
+                    name,
+                    expected: pixels,
+                    found,
+                });
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Gradients with respect to one view's G-buffers.
@@ -585,19 +609,7 @@ pub fn shade_image_backward(
     let _span = tracing::info_span!("shade_image_backward").entered();
     let pixels = camera.num_pixels();
     buffers.check(pixels)?;
-    for (name, found) in [
-        ("grad s0", upstream.s0.len()),
-        ("grad s1", upstream.s1.len()),
-        ("grad s2", upstream.s2.len()),
-    ] {
-        if found != pixels {
-            return Err(ShadingError::BufferLength {
-                name,
-                expected: pixels,
-                found,
-            });
-        }
-    }
+    upstream.check(pixels)?;
     let width = camera.width as usize;
     let mut grads = vec![PixelInputGrad::default(); pixels];
     // A fixed number of row blocks, each with its own light-gradient accumulator, summed in block

@@ -13,7 +13,7 @@ use crate::events::Stage;
 use crate::loss::{self, LossWeights};
 use crate::raster::{Backend, GBufferGrads, RasterSettings};
 use crate::render::{Scene, ShadingInputs};
-use crate::shading::{self, StokesImageGrad};
+use crate::shading::StokesImageGrad;
 use crate::surfels::{SurfelGrads, Surfels};
 
 use super::targets::{Polarizer, ViewTarget};
@@ -99,7 +99,9 @@ pub fn run(
         None
     } else {
         let inputs = ShadingInputs::new(g, camera);
-        let image = shading::shade_image(camera, &inputs.buffers(g), scene.light, scene.lut)?;
+        let image = scene
+            .backend
+            .shade(camera, &inputs.buffers(g), scene.light, scene.lut)?;
         Some((inputs, image))
     };
 
@@ -223,7 +225,7 @@ pub fn run(
                     up.alpha[p] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
                 }
             }
-            let (gb, env_g) = shading::shade_image_backward(
+            let (gb, env_g) = scene.backend.shade_backward(
                 camera,
                 &inputs_px.buffers(g),
                 scene.light,

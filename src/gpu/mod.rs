@@ -19,6 +19,7 @@
 //! the device between the two).
 
 mod context;
+mod device;
 mod profile;
 mod raster;
 mod shade;
@@ -46,4 +47,28 @@ pub enum GpuError {
     RequestDevice { adapter: String, message: String },
     #[error("the gpu kernels failed to compile on adapter {adapter}: {message}")]
     Shader { adapter: String, message: String },
+    #[error(
+        "buffer `{name}` needs {bytes} bytes, more than the device allows ({limit} bytes, \
+         max_storage_buffer_binding_size); use fewer surfels, a smaller image or `--backend cpu`"
+    )]
+    BufferTooLarge {
+        name: String,
+        bytes: u64,
+        limit: u64,
+    },
+    /// A device error (validation, out of memory, a failed readback), naming what was running.
+    #[error("{0}")]
+    Device(String),
+}
+
+impl From<GpuError> for crate::raster::RasterError {
+    fn from(e: GpuError) -> Self {
+        crate::raster::RasterError::Gpu(e.to_string())
+    }
+}
+
+impl From<GpuError> for crate::shading::ShadingError {
+    fn from(e: GpuError) -> Self {
+        crate::shading::ShadingError::Gpu(e.to_string())
+    }
 }

@@ -33,8 +33,8 @@ use bytemuck::{Pod, Zeroable};
 use tracing::info_span;
 use wgpu::util::DeviceExt;
 
-use super::profile::PassProfiler;
-use super::shade::{SHADE, SHADE_BACKWARD, SHADE_COMMON};
+use super::device::Device;
+use super::shade::ShadePipelines;
 use super::{GpuContext, GpuError};
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
@@ -51,8 +51,6 @@ use crate::surfels::{SurfelGrads, Surfels};
 
 /// Tile edge of the device kernels (`TILE` in shaders/common.wgsl).
 const TILE: u32 = 8;
-/// Threads per workgroup of the 1-D kernels.
-const GROUP: u32 = 256;
 /// Per-surfel gradient accumulators (`NUM_ACC`).
 const NUM_ACC: u64 = 22;
 /// Per-pixel forward outputs (`NUM_OUT`).
@@ -221,8 +219,6 @@ struct RawGpu {
 const PROJ_BYTES: u64 = 112;
 /// Bytes of one sort entry (vec4<u32>).
 const ENTRY_BYTES: u64 = 16;
-/// Smallest buffer: a binding must hold at least one element of its array (the largest is a `Proj`).
-const MIN_BINDING_BYTES: u64 = PROJ_BYTES;
 
 /// Bits sorted per radix pass (`RADIX_BINS` = 2^bits in shaders/radix_sort.wgsl).
 const RADIX_BITS: u32 = 4;
@@ -280,7 +276,7 @@ fn varying_depth_bits(surfels: &Surfels, camera: &Camera, near: f64) -> u32 {
 const DEPTH_WORD: u32 = 0;
 const TILE_WORD: u32 = 1;
 
-pub(super) struct Pipelines {
+struct Pipelines {
     project: wgpu::ComputePipeline,
     emit: wgpu::ComputePipeline,
     tile_ranges: wgpu::ComputePipeline,
@@ -290,22 +286,15 @@ pub(super) struct Pipelines {
     rasterize: wgpu::ComputePipeline,
     rasterize_backward: wgpu::ComputePipeline,
     project_backward: wgpu::ComputePipeline,
-    pub(super) shade: wgpu::ComputePipeline,
-    pub(super) shade_backward: wgpu::ComputePipeline,
 }
 
 /// The wgpu rasterizer backend.
 pub struct GpuBackend {
-    ctx: GpuContext,
+    device: Device,
     pipelines: Pipelines,
+    shading: ShadePipelines,
     atomics: AtomicsMode,
     walk: Walk,
-    /// The largest buffer a binding may hold: the device's limit, or less ([`GpuOptions`]).
-    binding_limit: u64,
-    profiler: Option<PassProfiler>,
-    /// Serializes forward and backward calls: wgpu's error scopes are one stack per device, so
-    /// two threads inside [`GpuBackend::scoped`] at once would pop each other's scopes.
-    exclusive: std::sync::Mutex<()>,
 }
 
 /// What the forward pass keeps (on the device) for the backward pass.
@@ -364,10 +353,6 @@ impl SavedForward for Saved {
     }
 }
 
-fn gpu_err(e: impl std::fmt::Display) -> RasterError {
-    RasterError::Gpu(e.to_string())
-}
-
 impl GpuBackend {
     /// Compiles the kernels on `ctx`'s device; float atomics where the device has them.
     pub fn new(ctx: GpuContext) -> Result<Self, GpuError> {
@@ -385,22 +370,7 @@ impl GpuBackend {
         } else {
             Walk::OwnEntries
         };
-        let device = &ctx.device;
-        device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let pipeline = |label: &str, sources: &[&str], entry: &str| {
-            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some(label),
-                source: wgpu::ShaderSource::Wgsl(sources.concat().into()),
-            });
-            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(label),
-                layout: None,
-                module: &module,
-                entry_point: Some(entry),
-                compilation_options: Default::default(),
-                cache: None,
-            })
-        };
+        let device = Device::new(ctx, options.max_binding_bytes, options.profile);
         let atomic_src = match atomics {
             AtomicsMode::Float => ATOMIC_FLOAT,
             AtomicsMode::CompareExchange => ATOMIC_CAS,
@@ -409,60 +379,37 @@ impl GpuBackend {
             Walk::OwnEntries => WALK_OWN,
             Walk::Subgroup => WALK_SUBGROUP,
         };
-        let pipelines = Pipelines {
-            project: pipeline("project", &[COMMON, PROJECT], "project"),
-            emit: pipeline("emit", &[COMMON, BIN], "emit"),
-            tile_ranges: pipeline("tile_ranges", &[COMMON, BIN], "tile_ranges"),
-            radix_count: pipeline("radix_count", &[RADIX_SORT], "radix_count"),
-            radix_scan: pipeline("radix_scan", &[RADIX_SORT], "radix_scan"),
-            radix_scatter: pipeline("radix_scatter", &[RADIX_SORT], "radix_scatter"),
-            rasterize: pipeline("rasterize", &[COMMON, TILE_LIST, RASTERIZE], "rasterize"),
-            rasterize_backward: pipeline(
+        let pipelines = device.compile_all(|d| Pipelines {
+            project: d.pipeline("project", &[COMMON, PROJECT], "project"),
+            emit: d.pipeline("emit", &[COMMON, BIN], "emit"),
+            tile_ranges: d.pipeline("tile_ranges", &[COMMON, BIN], "tile_ranges"),
+            radix_count: d.pipeline("radix_count", &[RADIX_SORT], "radix_count"),
+            radix_scan: d.pipeline("radix_scan", &[RADIX_SORT], "radix_scan"),
+            radix_scatter: d.pipeline("radix_scatter", &[RADIX_SORT], "radix_scatter"),
+            rasterize: d.pipeline("rasterize", &[COMMON, TILE_LIST, RASTERIZE], "rasterize"),
+            rasterize_backward: d.pipeline(
                 "rasterize_backward",
                 &[COMMON, TILE_LIST, RASTERIZE_BACKWARD, atomic_src, walk_src],
                 "rasterize_backward",
             ),
-            project_backward: pipeline(
+            project_backward: d.pipeline(
                 "project_backward",
                 &[COMMON, PROJECT_BACKWARD],
                 "project_backward",
             ),
-            shade: pipeline("shade", &[SHADE_COMMON, SHADE], "shade"),
-            shade_backward: pipeline(
-                "shade_backward",
-                &[SHADE_COMMON, SHADE_BACKWARD, atomic_src],
-                "shade_backward",
-            ),
-        };
-        if let Some(e) = pollster::block_on(device.pop_error_scope()) {
-            return Err(GpuError::Shader {
-                adapter: ctx.adapter_summary().name.clone(),
-                message: e.to_string(),
-            });
-        }
-        let limits = ctx.device.limits();
-        let device_limit =
-            u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
-        let profiler = if options.profile {
-            PassProfiler::new(&ctx.device, &ctx.queue)
-        } else {
-            None
-        };
+        })?;
+        let shading = ShadePipelines::compile(&device, atomic_src)?;
         Ok(GpuBackend {
-            binding_limit: options
-                .max_binding_bytes
-                .map_or(device_limit, |m| m.min(device_limit)),
-            profiler,
-            ctx,
+            device,
             pipelines,
+            shading,
             atomics,
             walk,
-            exclusive: std::sync::Mutex::new(()),
         })
     }
 
     pub fn context(&self) -> &GpuContext {
-        &self.ctx
+        self.device.context()
     }
 
     pub fn atomics(&self) -> AtomicsMode {
@@ -473,143 +420,14 @@ impl GpuBackend {
         self.walk
     }
 
-    pub(super) fn pipelines(&self) -> &Pipelines {
-        &self.pipelines
+    /// The device and its helpers.
+    pub(super) fn device(&self) -> &Device {
+        &self.device
     }
 
-    /// The largest buffer a binding may hold.
-    pub(super) fn binding_limit(&self) -> u64 {
-        self.binding_limit
-    }
-
-    pub(super) fn device(&self) -> &wgpu::Device {
-        &self.ctx.device
-    }
-
-    /// Fails with a message naming the buffer when `bytes` exceeds the device's limits.
-    fn check_size(&self, name: &str, bytes: u64) -> Result<(), RasterError> {
-        if bytes > self.binding_limit {
-            return Err(self.too_large(name, bytes));
-        }
-        Ok(())
-    }
-
-    /// The error of a buffer `name` of `bytes` that exceeds the binding limit.
-    fn too_large(&self, name: &str, bytes: u64) -> RasterError {
-        RasterError::Gpu(format!(
-            "buffer `{name}` needs {bytes} bytes, more than the device allows ({} bytes, \
-             max_storage_buffer_binding_size); use fewer surfels, a smaller image or \
-             `--backend cpu`",
-            self.binding_limit
-        ))
-    }
-
-    /// A zeroed storage buffer of `bytes` (checked against the binding limit).
-    pub(super) fn storage(
-        &self,
-        name: &str,
-        bytes: u64,
-        extra: wgpu::BufferUsages,
-    ) -> Result<wgpu::Buffer, RasterError> {
-        self.check_size(name, bytes)?;
-        Ok(self.device().create_buffer(&wgpu::BufferDescriptor {
-            label: Some(name),
-            size: bytes.max(MIN_BINDING_BYTES).next_multiple_of(4),
-            usage: wgpu::BufferUsages::STORAGE | extra,
-            mapped_at_creation: false,
-        }))
-    }
-
-    /// A storage buffer holding `contents` (checked against the binding limit).
-    pub(super) fn storage_init(
-        &self,
-        name: &str,
-        contents: &[u8],
-    ) -> Result<wgpu::Buffer, RasterError> {
-        self.check_size(name, contents.len() as u64)?;
-        let mut padded;
-        let data = if (contents.len() as u64) < MIN_BINDING_BYTES {
-            padded = contents.to_vec();
-            padded.resize(MIN_BINDING_BYTES as usize, 0);
-            &padded[..]
-        } else {
-            contents
-        };
-        Ok(self
-            .device()
-            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(name),
-                contents: data,
-                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-            }))
-    }
-
-    pub(super) fn bind(
-        &self,
-        pipeline: &wgpu::ComputePipeline,
-        buffers: &[(u32, &wgpu::Buffer)],
-    ) -> wgpu::BindGroup {
-        let entries: Vec<wgpu::BindGroupEntry> = buffers
-            .iter()
-            .map(|&(binding, buffer)| wgpu::BindGroupEntry {
-                binding,
-                resource: buffer.as_entire_binding(),
-            })
-            .collect();
-        self.device().create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &pipeline.get_bind_group_layout(0),
-            entries: &entries,
-        })
-    }
-
-    /// Workgroup grid for `threads` invocations of a 256-thread 1-D kernel (`linear_index`).
-    fn grid(&self, threads: u64) -> Result<(u32, u32), RasterError> {
-        self.workgroup_grid(threads.div_ceil(u64::from(GROUP)))
-    }
-
-    /// A 2-D grid of at least `groups` workgroups within the device's per-dimension limit.
-    fn workgroup_grid(&self, groups: u64) -> Result<(u32, u32), RasterError> {
-        let max = u64::from(self.device().limits().max_compute_workgroups_per_dimension);
-        let x = groups.min(max);
-        let y = groups.div_ceil(x.max(1));
-        if y > max {
-            return Err(RasterError::Gpu(format!(
-                "{groups} workgroups exceed the device's dispatch limit"
-            )));
-        }
-        Ok((x as u32, y as u32))
-    }
-
-    /// A compute pass labelled `label`, timed when profiling.
-    fn begin_pass<'e>(
-        &self,
-        encoder: &'e mut wgpu::CommandEncoder,
-        label: &'static str,
-    ) -> wgpu::ComputePass<'e> {
-        encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some(label),
-            timestamp_writes: self.profiler.as_ref().and_then(|p| p.writes(label)),
-        })
-    }
-
-    pub(super) fn dispatch_1d(
-        &self,
-        encoder: &mut wgpu::CommandEncoder,
-        label: &'static str,
-        pipeline: &wgpu::ComputePipeline,
-        group: &wgpu::BindGroup,
-        threads: u64,
-    ) -> Result<(), RasterError> {
-        if threads == 0 {
-            return Ok(());
-        }
-        let (x, y) = self.grid(threads)?;
-        let mut pass = self.begin_pass(encoder, label);
-        pass.set_pipeline(pipeline);
-        pass.set_bind_group(0, group, &[]);
-        pass.dispatch_workgroups(x, y, 1);
-        Ok(())
+    /// The PolarDR shading kernels.
+    pub(super) fn shading(&self) -> &ShadePipelines {
+        &self.shading
     }
 
     /// One workgroup per tile of `band`.
@@ -622,86 +440,10 @@ impl GpuBackend {
         camera: &Camera,
         band: Band,
     ) {
-        let mut pass = self.begin_pass(encoder, label);
+        let mut pass = self.device.begin_pass(encoder, label);
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, group, &[]);
         pass.dispatch_workgroups(camera.width.div_ceil(TILE), band.tile_rows(), 1);
-    }
-
-    /// Copies each `(buffer, bytes)` into a mappable buffer after `encoder`'s work, submits, waits
-    /// and returns the bytes.
-    /// The pass timestamps (when profiling) come back with them and go to the profiler.
-    pub(super) fn submit_and_read(
-        &self,
-        mut encoder: wgpu::CommandEncoder,
-        sources: &[(&wgpu::Buffer, u64)],
-    ) -> Result<Vec<Vec<u8>>, RasterError> {
-        let timestamps = self.profiler.as_ref().and_then(|p| p.resolve(&mut encoder));
-        let staging: Vec<(wgpu::Buffer, u64)> = sources
-            .iter()
-            .chain(&timestamps)
-            .map(|&(src, bytes)| {
-                let size = bytes.max(4).next_multiple_of(4);
-                let dst = self.device().create_buffer(&wgpu::BufferDescriptor {
-                    label: Some("readback"),
-                    size,
-                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                    mapped_at_creation: false,
-                });
-                if bytes > 0 {
-                    encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size);
-                }
-                (dst, bytes)
-            })
-            .collect();
-        self.ctx.queue.submit([encoder.finish()]);
-        let (tx, rx) = std::sync::mpsc::channel();
-        for (i, (buf, _)) in staging.iter().enumerate() {
-            let tx = tx.clone();
-            buf.slice(..)
-                .map_async(wgpu::MapMode::Read, move |r| drop(tx.send((i, r))));
-        }
-        drop(tx);
-        self.device().poll(wgpu::PollType::Wait).map_err(gpu_err)?;
-        for (_, r) in rx.iter() {
-            r.map_err(|e| RasterError::Gpu(format!("reading back a buffer failed: {e}")))?;
-        }
-        let mut data: Vec<Vec<u8>> = staging
-            .iter()
-            .map(|(buf, bytes)| {
-                let data = buf.slice(..).get_mapped_range()[..*bytes as usize].to_vec();
-                buf.unmap();
-                data
-            })
-            .collect();
-        if let (Some(profiler), Some(_)) = (&self.profiler, timestamps) {
-            profiler.record(&data.pop().unwrap_or_default());
-        }
-        Ok(data)
-    }
-
-    /// Runs `f` inside out-of-memory and validation error scopes; a device error becomes a
-    /// [`RasterError::Gpu`] naming `stage`.
-    pub(super) fn scoped<T>(
-        &self,
-        stage: &str,
-        f: impl FnOnce() -> Result<T, RasterError>,
-    ) -> Result<T, RasterError> {
-        // A panic inside another call leaves no state behind that this one depends on.
-        let _exclusive = self
-            .exclusive
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner);
-        let device = self.device();
-        device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let result = f();
-        let validation = pollster::block_on(device.pop_error_scope());
-        let oom = pollster::block_on(device.pop_error_scope());
-        if let Some(e) = oom.or(validation) {
-            return Err(RasterError::Gpu(format!("{stage}: {e}")));
-        }
-        result
     }
 
     fn forward_impl(
@@ -716,12 +458,15 @@ impl GpuBackend {
         let (w, h) = (camera.width as usize, camera.height as usize);
         // Every buffer is checked as it is created; the backward pass's per-surfel sums are
         // checked now so that a render the backward pass could not handle fails at once.
-        self.check_size("gradient sums", n as u64 * NUM_ACC * 4)?;
+        self.device
+            .check_size("gradient sums", n as u64 * NUM_ACC * 4)?;
         // The largest per-pixel buffers (G-buffers forward, upstream gradient backward) decide
         // how many tile rows a band may have.
         let tile_row_bytes = u64::from(camera.width) * u64::from(TILE) * NUM_OUT as u64 * 4;
-        self.check_size("g-buffers (one tile row)", tile_row_bytes)?;
-        let rows_per_band = (self.binding_limit / tile_row_bytes).min(u64::from(u32::MAX)) as u32;
+        self.device
+            .check_size("g-buffers (one tile row)", tile_row_bytes)?;
+        let rows_per_band =
+            (self.device.binding_limit() / tile_row_bytes).min(u64::from(u32::MAX)) as u32;
         let tile_rows = camera.height.div_ceil(TILE);
         // A stack with the top band last, so bands are popped top to bottom.
         let mut pending: Vec<Band> = (0..tile_rows)
@@ -755,9 +500,10 @@ impl GpuBackend {
                     }
                 })
                 .collect();
-            self.storage_init("raw surfels", bytemuck::cast_slice(&raw))?
+            self.device
+                .storage_init("raw surfels", bytemuck::cast_slice(&raw))?
         };
-        let proj_buf = self.storage(
+        let proj_buf = self.device.storage(
             "projected surfels",
             n as u64 * PROJ_BYTES,
             wgpu::BufferUsages::empty(),
@@ -778,7 +524,10 @@ impl GpuBackend {
             match self.forward_band(&frame, band)? {
                 BandOutcome::Done(result) => done.push(*result),
                 BandOutcome::TooManyEntries(total) if band.tile_rows() == 1 => {
-                    return Err(self.too_large("tile entries (one tile row)", total * ENTRY_BYTES));
+                    return Err(self
+                        .device
+                        .too_large("tile entries (one tile row)", total * ENTRY_BYTES)
+                        .into());
                 }
                 BandOutcome::TooManyEntries(_) => {
                     let (top, bottom) = band.halves();
@@ -842,8 +591,8 @@ impl GpuBackend {
     /// Projects the surfels for `band` (the projection is the same for every band; the tile
     /// counts are the band's), bins and sorts the band's entries and rasterizes its tiles.
     fn forward_band(&self, frame: &Frame, band: Band) -> Result<BandOutcome, RasterError> {
-        let device = self.device();
-        let queue = &self.ctx.queue;
+        let device = self.device.wgpu();
+        let queue = self.device.queue();
         let (camera, settings) = (frame.camera, frame.settings);
         let (raw_buf, proj_buf) = (frame.raw, frame.proj);
         let n = frame.surfels as usize;
@@ -857,11 +606,13 @@ impl GpuBackend {
         });
 
         // Projection and the band's tile counts.
-        let counts_buf = self.storage("tile counts", n as u64 * 4, wgpu::BufferUsages::COPY_SRC)?;
+        let counts_buf =
+            self.device
+                .storage("tile counts", n as u64 * 4, wgpu::BufferUsages::COPY_SRC)?;
         let counts: Vec<u32> = {
             let _span = info_span!("project", surfels = n).entered();
             let mut encoder = device.create_command_encoder(&Default::default());
-            let group = self.bind(
+            let group = self.device.bind(
                 &self.pipelines.project,
                 &[
                     (0, &params_buf),
@@ -870,21 +621,23 @@ impl GpuBackend {
                     (3, &counts_buf),
                 ],
             );
-            self.dispatch_1d(
+            self.device.dispatch_1d(
                 &mut encoder,
                 "project",
                 &self.pipelines.project,
                 &group,
                 n as u64,
             )?;
-            let out = self.submit_and_read(encoder, &[(&counts_buf, n as u64 * 4)])?;
+            let out = self
+                .device
+                .submit_and_read(encoder, &[(&counts_buf, n as u64 * 4)])?;
             bytemuck::pod_collect_to_vec(&out[0])
         };
 
         // Host exclusive scan of the tile counts. Entries that fit the binding limit (a u32 of
         // bytes) also fit the u32 offsets.
         let total: u64 = counts.iter().map(|&c| u64::from(c)).sum();
-        if total * ENTRY_BYTES > self.binding_limit {
+        if total * ENTRY_BYTES > self.device.binding_limit() {
             return Ok(BandOutcome::TooManyEntries(total));
         }
         let offsets: Vec<u32> = {
@@ -901,40 +654,46 @@ impl GpuBackend {
         params.counts[1] = total as u32;
         queue.write_buffer(&params_buf, 0, bytemuck::bytes_of(&params));
 
-        let offsets_buf = self.storage_init("entry offsets", bytemuck::cast_slice(&offsets))?;
-        let entries_buf = self.storage(
+        let offsets_buf = self
+            .device
+            .storage_init("entry offsets", bytemuck::cast_slice(&offsets))?;
+        let entries_buf = self.device.storage(
             "tile entries",
             total * ENTRY_BYTES,
             wgpu::BufferUsages::empty(),
         )?;
         // The radix sort's other half: each pass reads one and writes the other.
-        let sorted_alt_buf = self.storage(
+        let sorted_alt_buf = self.device.storage(
             "tile entries (sort)",
             total * ENTRY_BYTES,
             wgpu::BufferUsages::empty(),
         )?;
-        let ranges_buf = self.storage(
+        let ranges_buf = self.device.storage(
             "tile ranges",
             u64::from(tiles) * 8,
             wgpu::BufferUsages::COPY_DST,
         )?;
-        let gbuf_buf = self.storage(
+        let gbuf_buf = self.device.storage(
             "g-buffers",
             pixels * NUM_OUT as u64 * 4,
             wgpu::BufferUsages::COPY_SRC,
         )?;
-        let final_t_buf = self.storage(
+        let final_t_buf = self.device.storage(
             "final transmittance",
             pixels * 4,
             wgpu::BufferUsages::empty(),
         )?;
-        let contrib_buf = self.storage("contributors", pixels * 4, wgpu::BufferUsages::empty())?;
-        let evals_buf = self.storage("evaluations", pixels * 4, wgpu::BufferUsages::COPY_SRC)?;
+        let contrib_buf =
+            self.device
+                .storage("contributors", pixels * 4, wgpu::BufferUsages::empty())?;
+        let evals_buf =
+            self.device
+                .storage("evaluations", pixels * 4, wgpu::BufferUsages::COPY_SRC)?;
 
         let mut encoder = device.create_command_encoder(&Default::default());
         let entries_buf = {
             let _span = info_span!("bin_sort", entries = total).entered();
-            let group = self.bind(
+            let group = self.device.bind(
                 &self.pipelines.emit,
                 &[
                     (0, &params_buf),
@@ -943,7 +702,13 @@ impl GpuBackend {
                     (3, &entries_buf),
                 ],
             );
-            self.dispatch_1d(&mut encoder, "emit", &self.pipelines.emit, &group, n as u64)?;
+            self.device.dispatch_1d(
+                &mut encoder,
+                "emit",
+                &self.pipelines.emit,
+                &group,
+                n as u64,
+            )?;
             let entries_buf = self.encode_sort(
                 &mut encoder,
                 [entries_buf, sorted_alt_buf],
@@ -954,11 +719,11 @@ impl GpuBackend {
                 },
             )?;
             encoder.clear_buffer(&ranges_buf, 0, None);
-            let group = self.bind(
+            let group = self.device.bind(
                 &self.pipelines.tile_ranges,
                 &[(0, &params_buf), (3, &entries_buf), (4, &ranges_buf)],
             );
-            self.dispatch_1d(
+            self.device.dispatch_1d(
                 &mut encoder,
                 "tile_ranges",
                 &self.pipelines.tile_ranges,
@@ -969,7 +734,7 @@ impl GpuBackend {
         };
         let out = {
             let _span = info_span!("rasterize", entries = total).entered();
-            let group = self.bind(
+            let group = self.device.bind(
                 &self.pipelines.rasterize,
                 &[
                     (0, &params_buf),
@@ -990,7 +755,7 @@ impl GpuBackend {
                 camera,
                 band,
             );
-            self.submit_and_read(
+            self.device.submit_and_read(
                 encoder,
                 &[
                     (&gbuf_buf, pixels * NUM_OUT as u64 * 4),
@@ -1040,23 +805,32 @@ impl GpuBackend {
                 blocks: blocks as u32,
             })
             .collect();
-        let stride = u64::from(self.device().limits().min_uniform_buffer_offset_alignment).max(16);
+        let stride = u64::from(
+            self.device
+                .wgpu()
+                .limits()
+                .min_uniform_buffer_offset_alignment,
+        )
+        .max(16);
         let mut bytes = vec![0u8; passes.len() * stride as usize];
         for (i, p) in passes.iter().enumerate() {
             let at = i * stride as usize;
             bytes[at..at + 16].copy_from_slice(bytemuck::bytes_of(p));
         }
         let pass_buf = self
-            .device()
+            .device
+            .wgpu()
             .create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("radix passes"),
                 contents: &bytes,
                 usage: wgpu::BufferUsages::UNIFORM,
             });
         let hist_bytes = blocks * (1u64 << RADIX_BITS) * 4;
-        let hist = self.storage("radix histogram", hist_bytes, wgpu::BufferUsages::empty())?;
-        let (x, y) = self.workgroup_grid(blocks)?;
-        let mut compute = self.begin_pass(encoder, "radix sort");
+        let hist =
+            self.device
+                .storage("radix histogram", hist_bytes, wgpu::BufferUsages::empty())?;
+        let (x, y) = self.device.workgroup_grid(blocks)?;
+        let mut compute = self.device.begin_pass(encoder, "radix sort");
         for i in 0..passes.len() {
             let pass_params = wgpu::BindingResource::Buffer(wgpu::BufferBinding {
                 buffer: &pass_buf,
@@ -1076,11 +850,13 @@ impl GpuBackend {
                             resource: buffer.as_entire_binding(),
                         }),
                 );
-                self.device().create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: None,
-                    layout: &pipeline.get_bind_group_layout(0),
-                    entries: &entries,
-                })
+                self.device
+                    .wgpu()
+                    .create_bind_group(&wgpu::BindGroupDescriptor {
+                        label: None,
+                        layout: &pipeline.get_bind_group_layout(0),
+                        entries: &entries,
+                    })
             };
             compute.set_pipeline(&self.pipelines.radix_count);
             compute.set_bind_group(
@@ -1148,25 +924,30 @@ impl GpuBackend {
             })
             .collect();
         // Newly created buffers are zero-initialized.
-        let acc_buf = self.storage(
+        let acc_buf = self.device.storage(
             "gradient sums",
             n as u64 * NUM_ACC * 4,
             wgpu::BufferUsages::empty(),
         )?;
         let raw_grad_bytes = n as u64 * NUM_RAW_GRAD as u64 * 4;
-        let out_buf = self.storage(
+        let out_buf = self.device.storage(
             "raw gradients",
             raw_grad_bytes,
             wgpu::BufferUsages::COPY_SRC,
         )?;
 
-        let mut encoder = self.device().create_command_encoder(&Default::default());
+        let mut encoder = self
+            .device
+            .wgpu()
+            .create_command_encoder(&Default::default());
         // Every band adds into the same per-surfel sums: the projection is the same in all.
         for band in &saved.bands {
             let _span = info_span!("rasterize_backward", first = band.band.first).entered();
             let band_up = band.band.rows_of(&up, camera.height, w * NUM_OUT);
-            let up_buf = self.storage_init("upstream gradient", bytemuck::cast_slice(band_up))?;
-            let group = self.bind(
+            let up_buf = self
+                .device
+                .storage_init("upstream gradient", bytemuck::cast_slice(band_up))?;
+            let group = self.device.bind(
                 &self.pipelines.rasterize_backward,
                 &[
                     (0, &band.params),
@@ -1193,7 +974,7 @@ impl GpuBackend {
             let _span = info_span!("project_backward").entered();
             // The band parts of the parameters do not enter the projection's backward pass.
             let params = &saved.bands[0].params;
-            let group = self.bind(
+            let group = self.device.bind(
                 &self.pipelines.project_backward,
                 &[
                     (0, params),
@@ -1203,14 +984,15 @@ impl GpuBackend {
                     (4, &out_buf),
                 ],
             );
-            self.dispatch_1d(
+            self.device.dispatch_1d(
                 &mut encoder,
                 "project_backward",
                 &self.pipelines.project_backward,
                 &group,
                 n as u64,
             )?;
-            self.submit_and_read(encoder, &[(&out_buf, raw_grad_bytes)])?
+            self.device
+                .submit_and_read(encoder, &[(&out_buf, raw_grad_bytes)])?
         };
         let vals: Vec<f32> = bytemuck::pod_collect_to_vec(&out[0]);
         let mut grads = SurfelGrads::zeros(n);
@@ -1241,7 +1023,7 @@ impl Backend for GpuBackend {
     fn description(&self) -> String {
         format!(
             "gpu on {}, {:?} atomics, {:?} walk",
-            self.ctx.adapter_summary(),
+            self.device.context().adapter_summary(),
             self.atomics,
             self.walk
         )
@@ -1255,7 +1037,8 @@ impl Backend for GpuBackend {
     ) -> Result<Rasterized, RasterError> {
         validate_inputs(surfels, camera, settings)?;
         let _span = info_span!("raster_forward", backend = "gpu").entered();
-        self.scoped("forward", || self.forward_impl(surfels, camera, settings))
+        self.device
+            .scoped("forward", || self.forward_impl(surfels, camera, settings))
     }
 
     fn backward(
@@ -1269,15 +1052,13 @@ impl Backend for GpuBackend {
         let saved: &Saved = begin_backward(surfels, camera, settings, forward, upstream)?;
         let gb = &forward.gbuffers;
         let _span = info_span!("raster_backward", backend = "gpu").entered();
-        self.scoped("backward", || {
+        self.device.scoped("backward", || {
             self.backward_impl(saved, camera, settings, gb, upstream)
         })
     }
 
     fn take_stage_times(&self) -> Vec<StageTime> {
-        self.profiler
-            .as_ref()
-            .map_or_else(Vec::new, PassProfiler::take)
+        self.device.take_stage_times()
     }
 
     /// On the device under the global light; a position-dependent light (GridMap) with the cpu

@@ -19,18 +19,39 @@
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use tracing::info_span;
-use wgpu::util::DeviceExt;
 
+use super::device::Device;
 use super::raster::GpuBackend;
+use super::GpuError;
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::envmap::{EnvGrad, PreparedEnv};
-use crate::raster::RasterError;
 use crate::shading::{GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad};
 
-pub(super) const SHADE_COMMON: &str = include_str!("../../shaders/shade_common.wgsl");
-pub(super) const SHADE: &str = include_str!("../../shaders/shade.wgsl");
-pub(super) const SHADE_BACKWARD: &str = include_str!("../../shaders/shade_backward.wgsl");
+const SHADE_COMMON: &str = include_str!("../../shaders/shade_common.wgsl");
+const SHADE: &str = include_str!("../../shaders/shade.wgsl");
+const SHADE_BACKWARD: &str = include_str!("../../shaders/shade_backward.wgsl");
+
+/// The shading kernels.
+pub(super) struct ShadePipelines {
+    shade: wgpu::ComputePipeline,
+    shade_backward: wgpu::ComputePipeline,
+}
+
+impl ShadePipelines {
+    /// Compiles the kernels; `atomics` is the `add_grad` source the backward pass adds the
+    /// light's gradient with.
+    pub(super) fn compile(device: &Device, atomics: &str) -> Result<Self, GpuError> {
+        device.compile_all(|d| ShadePipelines {
+            shade: d.pipeline("shade", &[SHADE_COMMON, SHADE], "shade"),
+            shade_backward: d.pipeline(
+                "shade_backward",
+                &[SHADE_COMMON, SHADE_BACKWARD, atomics],
+                "shade_backward",
+            ),
+        })
+    }
+}
 
 /// IoR nodes the kernels' parameters hold (`MAX_IORS`).
 const MAX_IORS: usize = 8;
@@ -190,17 +211,10 @@ fn chunks(pixels: usize, limit_pixels: usize) -> impl Iterator<Item = std::ops::
         .map(move |start| start..(start + step).min(pixels))
 }
 
-fn as_shading_error(e: RasterError) -> ShadingError {
-    match e {
-        RasterError::Gpu(message) => ShadingError::Gpu(message),
-        other => ShadingError::Gpu(other.to_string()),
-    }
-}
-
 impl GpuBackend {
     /// Pixels per chunk: as many as the largest per-pixel buffer (the Stokes images) allows.
     fn shade_chunk_pixels(&self) -> usize {
-        (self.binding_limit() / (STOKES_FLOATS * 4)) as usize
+        (self.device().binding_limit() / (STOKES_FLOATS * 4)) as usize
     }
 
     /// The inputs of the pixels in `range`: two vectors each, and the active flags.
@@ -225,23 +239,18 @@ impl GpuBackend {
         (inputs, active)
     }
 
-    fn light_buffers(
-        &self,
-        light: &DeviceLight,
-    ) -> Result<(wgpu::Buffer, wgpu::Buffer), RasterError> {
+    fn light_buffers(&self, light: &DeviceLight) -> Result<(wgpu::Buffer, wgpu::Buffer), GpuError> {
         Ok((
-            self.storage_init("light", bytemuck::cast_slice(&light.values))?,
-            self.storage_init("light tables", bytemuck::cast_slice(&light.tables))?,
+            self.device()
+                .storage_init("light", bytemuck::cast_slice(&light.values))?,
+            self.device()
+                .storage_init("light tables", bytemuck::cast_slice(&light.tables))?,
         ))
     }
 
     fn params_buffer(&self, params: &ShadeParamsGpu) -> wgpu::Buffer {
         self.device()
-            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("shade params"),
-                contents: bytemuck::bytes_of(params),
-                usage: wgpu::BufferUsages::UNIFORM,
-            })
+            .uniform("shade params", bytemuck::bytes_of(params))
     }
 
     /// PolarDR forward under the global light `env` on the device.
@@ -265,23 +274,25 @@ impl GpuBackend {
             diffuse: Vec::with_capacity(pixels),
             specular: Vec::with_capacity(pixels),
         };
-        self.scoped("shade", || {
+        self.device().scoped("shade", || -> Result<(), GpuError> {
             let (light_buf, tables_buf) = self.light_buffers(&light)?;
             for range in chunks(pixels, self.shade_chunk_pixels()) {
                 let n = range.len() as u64;
                 let params = self.params_buffer(&light.params(camera, range.start, range.len()));
                 let (inputs, active) = Self::pixel_inputs(buffers, range);
-                let inputs_buf =
-                    self.storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
-                let active_buf =
-                    self.storage_init("active pixels", bytemuck::cast_slice(&active))?;
-                let stokes_buf = self.storage(
+                let inputs_buf = self
+                    .device()
+                    .storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
+                let active_buf = self
+                    .device()
+                    .storage_init("active pixels", bytemuck::cast_slice(&active))?;
+                let stokes_buf = self.device().storage(
                     "stokes",
                     n * STOKES_FLOATS * 4,
                     wgpu::BufferUsages::COPY_SRC,
                 )?;
-                let pipeline = &self.pipelines().shade;
-                let group = self.bind(
+                let pipeline = &self.shading().shade;
+                let group = self.device().bind(
                     pipeline,
                     &[
                         (0, &params),
@@ -292,10 +303,15 @@ impl GpuBackend {
                         (5, &stokes_buf),
                     ],
                 );
-                let mut encoder = self.device().create_command_encoder(&Default::default());
-                self.dispatch_1d(&mut encoder, "shade", pipeline, &group, n)?;
-                let data =
-                    self.submit_and_read(encoder, &[(&stokes_buf, n * STOKES_FLOATS * 4)])?;
+                let mut encoder = self
+                    .device()
+                    .wgpu()
+                    .create_command_encoder(&Default::default());
+                self.device()
+                    .dispatch_1d(&mut encoder, "shade", pipeline, &group, n)?;
+                let data = self
+                    .device()
+                    .submit_and_read(encoder, &[(&stokes_buf, n * STOKES_FLOATS * 4)])?;
                 let values: Vec<f32> = bytemuck::pod_collect_to_vec(&data[0]);
                 for v in values.chunks_exact(STOKES_FLOATS as usize) {
                     let rgb = |k: usize| {
@@ -309,8 +325,7 @@ impl GpuBackend {
                 }
             }
             Ok(())
-        })
-        .map_err(as_shading_error)?;
+        })?;
         Ok(out)
     }
 
@@ -335,11 +350,15 @@ impl GpuBackend {
             ior: Vec::with_capacity(pixels),
         };
         let sums = self
-            .scoped("shade backward", || {
+            .device()
+            .scoped("shade backward", || -> Result<Vec<f32>, GpuError> {
                 let (light_buf, tables_buf) = self.light_buffers(&light)?;
                 let sums_bytes = light.texel_values as u64 * 4;
-                let sums_buf =
-                    self.storage("light gradient", sums_bytes, wgpu::BufferUsages::COPY_SRC)?;
+                let sums_buf = self.device().storage(
+                    "light gradient",
+                    sums_bytes,
+                    wgpu::BufferUsages::COPY_SRC,
+                )?;
                 let chunk_list: Vec<_> = chunks(pixels, self.shade_chunk_pixels()).collect();
                 let last = chunk_list.len().saturating_sub(1);
                 let mut sums = Vec::new();
@@ -352,18 +371,22 @@ impl GpuBackend {
                         .flat_map(|p| [upstream.s0[p], upstream.s1[p], upstream.s2[p]])
                         .flat_map(|v| [v.x as f32, v.y as f32, v.z as f32])
                         .collect();
-                    let inputs_buf =
-                        self.storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
-                    let active_buf =
-                        self.storage_init("active pixels", bytemuck::cast_slice(&active))?;
-                    let up_buf = self.storage_init("stokes gradient", bytemuck::cast_slice(&up))?;
-                    let grad_buf = self.storage(
+                    let inputs_buf = self
+                        .device()
+                        .storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
+                    let active_buf = self
+                        .device()
+                        .storage_init("active pixels", bytemuck::cast_slice(&active))?;
+                    let up_buf = self
+                        .device()
+                        .storage_init("stokes gradient", bytemuck::cast_slice(&up))?;
+                    let grad_buf = self.device().storage(
                         "shading input gradient",
                         n * GRAD_FLOATS * 4,
                         wgpu::BufferUsages::COPY_SRC,
                     )?;
-                    let pipeline = &self.pipelines().shade_backward;
-                    let group = self.bind(
+                    let pipeline = &self.shading().shade_backward;
+                    let group = self.device().bind(
                         pipeline,
                         &[
                             (0, &params),
@@ -376,13 +399,22 @@ impl GpuBackend {
                             (8, &sums_buf),
                         ],
                     );
-                    let mut encoder = self.device().create_command_encoder(&Default::default());
-                    self.dispatch_1d(&mut encoder, "shade backward", pipeline, &group, n)?;
+                    let mut encoder = self
+                        .device()
+                        .wgpu()
+                        .create_command_encoder(&Default::default());
+                    self.device().dispatch_1d(
+                        &mut encoder,
+                        "shade backward",
+                        pipeline,
+                        &group,
+                        n,
+                    )?;
                     let mut reads = vec![(&grad_buf, n * GRAD_FLOATS * 4)];
                     if c == last {
                         reads.push((&sums_buf, sums_bytes));
                     }
-                    let data = self.submit_and_read(encoder, &reads)?;
+                    let data = self.device().submit_and_read(encoder, &reads)?;
                     let values: Vec<f32> = bytemuck::pod_collect_to_vec(&data[0]);
                     for v in values.chunks_exact(GRAD_FLOATS as usize) {
                         let d = |k: usize| f64::from(v[k]);
@@ -396,8 +428,7 @@ impl GpuBackend {
                     }
                 }
                 Ok(sums)
-            })
-            .map_err(as_shading_error)?;
+            })?;
         let env_grad = if pixels == 0 {
             env.zero_grad()
         } else {

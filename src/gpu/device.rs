@@ -1,0 +1,333 @@
+//! The device the gpu kernels run on, and what every kernel module does with it: compile a
+//! pipeline, create storage buffers checked against the device's binding limit, bind them, size
+//! 1-D dispatch grids, encode (optionally timed) compute passes, submit and read buffers back, and
+//! turn the device's validation and out-of-memory errors into [`GpuError`]s.
+//!
+//! Threading: work on one [`Device`] is serialized by [`Device::scoped`] (wgpu's error scopes are
+//! one stack per device, so two threads inside it at once would pop each other's scopes).
+
+use std::sync::{Mutex, PoisonError};
+
+use wgpu::util::DeviceExt;
+
+use super::profile::PassProfiler;
+use super::{GpuContext, GpuError};
+use crate::raster::StageTime;
+
+/// Threads per workgroup of the 1-D kernels (`@workgroup_size(256)`, `linear_index`).
+pub(super) const GROUP: u32 = 256;
+
+/// Smallest storage buffer: a binding must hold at least one element of its array, and the
+/// largest element of any kernel is a projected surfel (7 × vec4).
+pub(super) const MIN_BINDING_BYTES: u64 = 112;
+
+/// An opened adapter with its limits, the pass profiler and the lock that serializes work.
+pub struct Device {
+    ctx: GpuContext,
+    /// The largest buffer a binding may hold: the device's limit, or less (to test splitting).
+    binding_limit: u64,
+    profiler: Option<PassProfiler>,
+    exclusive: Mutex<()>,
+}
+
+impl Device {
+    /// With `max_binding_bytes`, buffers above it count as beyond the binding limit; with
+    /// `profile`, every pass is timed where the adapter has `TIMESTAMP_QUERY`.
+    pub(super) fn new(ctx: GpuContext, max_binding_bytes: Option<u64>, profile: bool) -> Self {
+        let limits = ctx.device.limits();
+        let device_limit =
+            u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
+        let profiler = if profile {
+            PassProfiler::new(&ctx.device, &ctx.queue)
+        } else {
+            None
+        };
+        Device {
+            binding_limit: max_binding_bytes.map_or(device_limit, |m| m.min(device_limit)),
+            profiler,
+            ctx,
+            exclusive: Mutex::new(()),
+        }
+    }
+
+    pub fn context(&self) -> &GpuContext {
+        &self.ctx
+    }
+
+    pub(super) fn wgpu(&self) -> &wgpu::Device {
+        &self.ctx.device
+    }
+
+    pub(super) fn queue(&self) -> &wgpu::Queue {
+        &self.ctx.queue
+    }
+
+    /// The largest buffer a binding may hold.
+    pub(super) fn binding_limit(&self) -> u64 {
+        self.binding_limit
+    }
+
+    /// Compiles the concatenated `sources` into a compute pipeline with entry point `entry`.
+    /// Errors surface in the caller's error scope (see [`Device::compile_all`]).
+    pub(super) fn pipeline(
+        &self,
+        label: &str,
+        sources: &[&str],
+        entry: &str,
+    ) -> wgpu::ComputePipeline {
+        let module = self
+            .wgpu()
+            .create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(label),
+                source: wgpu::ShaderSource::Wgsl(sources.concat().into()),
+            });
+        self.wgpu()
+            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(label),
+                layout: None,
+                module: &module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+    }
+
+    /// Runs `build` (which compiles pipelines with [`Device::pipeline`]) inside a validation
+    /// scope, so a kernel that fails to compile becomes [`GpuError::Shader`].
+    pub(super) fn compile_all<T>(&self, build: impl FnOnce(&Self) -> T) -> Result<T, GpuError> {
+        self.wgpu().push_error_scope(wgpu::ErrorFilter::Validation);
+        let built = build(self);
+        match pollster::block_on(self.wgpu().pop_error_scope()) {
+            Some(e) => Err(GpuError::Shader {
+                adapter: self.ctx.adapter_summary().name.clone(),
+                message: e.to_string(),
+            }),
+            None => Ok(built),
+        }
+    }
+
+    /// Fails with a message naming the buffer when `bytes` exceeds the device's limits.
+    pub(super) fn check_size(&self, name: &str, bytes: u64) -> Result<(), GpuError> {
+        if bytes > self.binding_limit {
+            return Err(self.too_large(name, bytes));
+        }
+        Ok(())
+    }
+
+    /// The error of a buffer `name` of `bytes` that exceeds the binding limit.
+    pub(super) fn too_large(&self, name: &str, bytes: u64) -> GpuError {
+        GpuError::BufferTooLarge {
+            name: name.to_owned(),
+            bytes,
+            limit: self.binding_limit,
+        }
+    }
+
+    /// A zeroed storage buffer of `bytes` (checked against the binding limit).
+    pub(super) fn storage(
+        &self,
+        name: &str,
+        bytes: u64,
+        extra: wgpu::BufferUsages,
+    ) -> Result<wgpu::Buffer, GpuError> {
+        self.check_size(name, bytes)?;
+        Ok(self.wgpu().create_buffer(&wgpu::BufferDescriptor {
+            label: Some(name),
+            size: bytes.max(MIN_BINDING_BYTES).next_multiple_of(4),
+            usage: wgpu::BufferUsages::STORAGE | extra,
+            mapped_at_creation: false,
+        }))
+    }
+
+    /// A storage buffer holding `contents` (checked against the binding limit); it can be
+    /// rewritten with `queue.write_buffer` and copied from.
+    pub(super) fn storage_init(
+        &self,
+        name: &str,
+        contents: &[u8],
+    ) -> Result<wgpu::Buffer, GpuError> {
+        self.check_size(name, contents.len() as u64)?;
+        let mut padded;
+        let data = if (contents.len() as u64) < MIN_BINDING_BYTES {
+            padded = contents.to_vec();
+            padded.resize(MIN_BINDING_BYTES as usize, 0);
+            &padded[..]
+        } else {
+            contents
+        };
+        Ok(self
+            .wgpu()
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(name),
+                contents: data,
+                usage: wgpu::BufferUsages::STORAGE
+                    | wgpu::BufferUsages::COPY_DST
+                    | wgpu::BufferUsages::COPY_SRC,
+            }))
+    }
+
+    /// A uniform buffer holding `contents`, rewritable with `queue.write_buffer`.
+    pub(super) fn uniform(&self, label: &str, contents: &[u8]) -> wgpu::Buffer {
+        self.wgpu()
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            })
+    }
+
+    /// A bind group of `pipeline`'s group 0 with each `(binding, buffer)` bound whole.
+    pub(super) fn bind(
+        &self,
+        pipeline: &wgpu::ComputePipeline,
+        buffers: &[(u32, &wgpu::Buffer)],
+    ) -> wgpu::BindGroup {
+        let entries: Vec<wgpu::BindGroupEntry> = buffers
+            .iter()
+            .map(|&(binding, buffer)| wgpu::BindGroupEntry {
+                binding,
+                resource: buffer.as_entire_binding(),
+            })
+            .collect();
+        self.wgpu().create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &entries,
+        })
+    }
+
+    /// Workgroup grid for `threads` invocations of a 256-thread 1-D kernel (`linear_index`).
+    pub(super) fn grid(&self, threads: u64) -> Result<(u32, u32), GpuError> {
+        self.workgroup_grid(threads.div_ceil(u64::from(GROUP)))
+    }
+
+    /// A 2-D grid of at least `groups` workgroups within the device's per-dimension limit.
+    pub(super) fn workgroup_grid(&self, groups: u64) -> Result<(u32, u32), GpuError> {
+        let max = u64::from(self.wgpu().limits().max_compute_workgroups_per_dimension);
+        let x = groups.min(max);
+        let y = groups.div_ceil(x.max(1));
+        if y > max {
+            return Err(GpuError::Device(format!(
+                "{groups} workgroups exceed the device's dispatch limit"
+            )));
+        }
+        Ok((x as u32, y as u32))
+    }
+
+    /// A compute pass labelled `label`, timed when profiling.
+    pub(super) fn begin_pass<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        label: &'static str,
+    ) -> wgpu::ComputePass<'e> {
+        encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some(label),
+            timestamp_writes: self.profiler.as_ref().and_then(|p| p.writes(label)),
+        })
+    }
+
+    /// One pass running `pipeline` over `threads` invocations of a 1-D kernel (none for 0).
+    pub(super) fn dispatch_1d(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        label: &'static str,
+        pipeline: &wgpu::ComputePipeline,
+        group: &wgpu::BindGroup,
+        threads: u64,
+    ) -> Result<(), GpuError> {
+        if threads == 0 {
+            return Ok(());
+        }
+        let (x, y) = self.grid(threads)?;
+        let mut pass = self.begin_pass(encoder, label);
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, group, &[]);
+        pass.dispatch_workgroups(x, y, 1);
+        Ok(())
+    }
+
+    /// Copies each `(buffer, bytes)` into a mappable buffer after `encoder`'s work, submits, waits
+    /// and returns the bytes. The pass timestamps (when profiling) come back with them and go to
+    /// the profiler.
+    pub(super) fn submit_and_read(
+        &self,
+        mut encoder: wgpu::CommandEncoder,
+        sources: &[(&wgpu::Buffer, u64)],
+    ) -> Result<Vec<Vec<u8>>, GpuError> {
+        let timestamps = self.profiler.as_ref().and_then(|p| p.resolve(&mut encoder));
+        let staging: Vec<(wgpu::Buffer, u64)> = sources
+            .iter()
+            .chain(&timestamps)
+            .map(|&(src, bytes)| {
+                let size = bytes.max(4).next_multiple_of(4);
+                let dst = self.wgpu().create_buffer(&wgpu::BufferDescriptor {
+                    label: Some("readback"),
+                    size,
+                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                });
+                if bytes > 0 {
+                    encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size);
+                }
+                (dst, bytes)
+            })
+            .collect();
+        self.queue().submit([encoder.finish()]);
+        let (tx, rx) = std::sync::mpsc::channel();
+        for (i, (buf, _)) in staging.iter().enumerate() {
+            let tx = tx.clone();
+            buf.slice(..)
+                .map_async(wgpu::MapMode::Read, move |r| drop(tx.send((i, r))));
+        }
+        drop(tx);
+        self.wgpu()
+            .poll(wgpu::PollType::Wait)
+            .map_err(|e| GpuError::Device(e.to_string()))?;
+        for (_, r) in rx.iter() {
+            r.map_err(|e| GpuError::Device(format!("reading back a buffer failed: {e}")))?;
+        }
+        let mut data: Vec<Vec<u8>> = staging
+            .iter()
+            .map(|(buf, bytes)| {
+                let data = buf.slice(..).get_mapped_range()[..*bytes as usize].to_vec();
+                buf.unmap();
+                data
+            })
+            .collect();
+        if let (Some(profiler), Some(_)) = (&self.profiler, timestamps) {
+            profiler.record(&data.pop().unwrap_or_default());
+        }
+        Ok(data)
+    }
+
+    /// Runs `f` alone on this device, inside out-of-memory and validation error scopes; a device
+    /// error becomes [`GpuError::Device`] naming `stage`.
+    pub(super) fn scoped<T, E: From<GpuError>>(
+        &self,
+        stage: &str,
+        f: impl FnOnce() -> Result<T, E>,
+    ) -> Result<T, E> {
+        // A panic inside another call leaves no state behind that this one depends on.
+        let _exclusive = self
+            .exclusive
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner);
+        let device = self.wgpu();
+        device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let result = f();
+        let validation = pollster::block_on(device.pop_error_scope());
+        let oom = pollster::block_on(device.pop_error_scope());
+        if let Some(e) = oom.or(validation) {
+            return Err(GpuError::Device(format!("{stage}: {e}")).into());
+        }
+        result
+    }
+
+    /// Device times of the passes since the last call (empty unless profiling).
+    pub(super) fn take_stage_times(&self) -> Vec<StageTime> {
+        self.profiler
+            .as_ref()
+            .map_or_else(Vec::new, PassProfiler::take)
+    }
+}

@@ -1,8 +1,10 @@
 // PolarDR backward (`shade_backward` in src/shading/mod.rs): per pixel, the gradient with
 // respect to the raw normal, albedo, roughness and IoR, and the light's gradient added into
 // per-texel sums (`add_grad`, appended from atomic_float.wgsl or atomic_cas.wgsl, over the
-// levels-then-irradiance layout of `light`). Compiled after shade_common.wgsl; one thread per
-// pixel of the chunk; the forward intermediates are recomputed.
+// levels-then-irradiance layout of `light`). The global lookups' backward passes are here; the
+// light file's backward (light_global_backward.wgsl or light_gridmap_backward.wgsl) decides which
+// a pixel uses. Compiled after shade_common.wgsl and the light file; one thread per pixel of the
+// chunk; the forward intermediates are recomputed.
 
 // Per pixel of the chunk, 9 values: dL/dS0, dL/dS1, dL/dS2 (RGB each).
 @group(0) @binding(5) var<storage, read> upstream: array<f32>;
@@ -93,7 +95,7 @@ fn shade_backward(
     let g_albedo = g_diff * f.transmitted * f.irradiance;
     let g_irradiance = g_diff * f.transmitted * px.albedo;
     let g_fresnel = -dot(g_diff, px.albedo * f.irradiance);
-    let irr = irradiance_backward(f.n, px.ior, g_irradiance);
+    let irr = light_irradiance_backward(px.position, f.n, px.ior, g_irradiance);
     g_n += irr.xyz;
     g_eta += irr.w;
     g_mu += g_fresnel * f.dfresnel_dmu;
@@ -101,7 +103,7 @@ fn shade_backward(
 
     // Specular = (F0 A + B) L_s(2μn − o, r).
     let g_ws = dot(g_spec, f.radiance);
-    let spec = specular_backward(f.mirror, px.roughness, g_spec * f.w_s);
+    let spec = light_specular_backward(px.position, f.mirror, px.roughness, g_spec * f.w_s);
     let g_mirror = spec.xyz;
     var g_roughness = spec.w;
     g_f0 += g_ws * f.lut.a.x;

@@ -1,8 +1,10 @@
-// PolarDR shading of one pixel (a port of `forward` in src/shading/mod.rs, in f32) under the
-// global environment light: the prefiltered specular mip chain and the irradiance map(s) of a
-// `PreparedEnv`, and the BRDF table. Shared by shade.wgsl (forward) and shade_backward.wgsl; no
-// entry points. Threading: one thread per pixel of the current chunk of the image, 256 per
-// workgroup, on a 2-D grid of workgroups (`linear_index`).
+// PolarDR shading of one pixel (a port of `forward` in src/shading/mod.rs, in f32): the BRDF
+// table, and lookups in the global environment light (the prefiltered specular mip chain and the
+// irradiance map(s) of a `PreparedEnv`). The light a pixel sees comes from `light_specular` and
+// `light_irradiance`, defined by the light file compiled with this one (light_global.wgsl, or
+// light_gridmap.wgsl for GridMap's local probes). Shared by shade.wgsl (forward) and
+// shade_backward.wgsl; no entry points. Threading: one thread per pixel of the current chunk of
+// the image, 256 per workgroup, on a 2-D grid of workgroups (`linear_index`).
 
 const GROUP: u32 = 256u;
 // The cpu clamps μ = n·o below at this value (`MIN_COS_VIEW`).
@@ -27,6 +29,10 @@ struct ShadeParams {
     rough: vec4<f32>,
     // IoR of each irradiance map (Fresnel-weighted irradiance), 4 per vector.
     iors: array<vec4<f32>, 2>,
+    // GridMap only: anchors, f32 values per probe, unused, unused.
+    grid_counts: vec4<u32>,
+    // GridMap only: start offset of the mirror ray, unused (3).
+    grid_geometry: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> params: ShadeParams;
@@ -36,7 +42,7 @@ struct ShadeParams {
 // Per mip level (4 values each): face size, first texel in `light`, first entry of its border
 // table in `tables`, unused; then the border tables (`CubeGrid::border_table`).
 @group(0) @binding(2) var<storage, read> tables: array<u32>;
-// Per pixel of the chunk, two vectors: (raw normal, roughness), (albedo, IoR).
+// Per pixel of the chunk, three vectors: (raw normal, roughness), (albedo, IoR), (surface point, 0).
 @group(0) @binding(3) var<storage, read> pixels: array<vec4<f32>>;
 // Per pixel of the chunk: 1 where the pixel is shaded.
 @group(0) @binding(4) var<storage, read> active_pixels: array<u32>;
@@ -358,6 +364,7 @@ fn irradiance_light(normal: vec3<f32>, ior: f32) -> vec3<f32> {
 // The shader input of one pixel (`PixelInput`): the view direction and the Stokes frame come
 // from the camera.
 struct Pixel {
+    position: vec3<f32>,
     normal: vec3<f32>,
     view: vec3<f32>,
     stokes_x: vec3<f32>,
@@ -374,9 +381,10 @@ fn load_pixel(i: u32) -> Pixel {
     let c = vec3<f32>((x - params.intr.z) / params.intr.x, (y - params.intr.w) / params.intr.y, 1.0);
     let d = normalize(params.rot0.xyz * c.x + params.rot1.xyz * c.y + params.rot2.xyz * c.z);
     let sx = normalize(cross(d, params.up.xyz));
-    let a = pixels[2u * i];
-    let b = pixels[2u * i + 1u];
-    return Pixel(a.xyz, -d, sx, cross(sx, d), b.xyz, a.w, b.w);
+    let a = pixels[3u * i];
+    let b = pixels[3u * i + 1u];
+    let position = pixels[3u * i + 2u].xyz;
+    return Pixel(position, a.xyz, -d, sx, cross(sx, d), b.xyz, a.w, b.w);
 }
 
 // Forward intermediates kept for the backward pass (`Forward`).
@@ -431,7 +439,7 @@ fn shade_pixel(px: Pixel) -> Shaded {
     s.lut = lut_lookup(s.mu, px.roughness);
     s.w_s = s.f0 * s.lut.a.x + s.lut.b.x;
     s.mirror = 2.0 * s.mu * s.n - px.view;
-    s.radiance = specular_light(s.mirror, px.roughness);
+    s.radiance = light_specular(px.position, s.mirror, px.roughness);
     s.specular = s.w_s * s.radiance;
 
     let one_minus_mu = 1.0 - s.mu;
@@ -443,7 +451,7 @@ fn shade_pixel(px: Pixel) -> Shaded {
     s.transmitted = (1.0 - s.f0) * s.mu * (1.0 + x * (1.0 + x * (1.0 + x * (1.0 + x))));
     s.dfresnel_dmu = -5.0 * (1.0 - s.f0) * pow4;
     s.dfresnel_df0 = 1.0 - pow5;
-    s.irradiance = irradiance_light(s.n, eta);
+    s.irradiance = light_irradiance(px.position, s.n, eta);
     s.diffuse = s.transmitted * px.albedo * s.irradiance;
 
     s.rho = polarization_ratios(s.mu, eta);

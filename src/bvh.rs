@@ -80,6 +80,17 @@ impl Aabb {
     }
 }
 
+/// A node of [`Bvh::flat_nodes`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlatNode {
+    pub min: DVec3,
+    pub max: DVec3,
+    /// Leaf: first triangle slot; interior: index of the right child (the left one follows).
+    pub first_or_right: u32,
+    /// Triangles in a leaf; 0 for interior nodes.
+    pub count: u32,
+}
+
 #[derive(Clone, Copy, Debug)]
 struct Node {
     bounds: Aabb,
@@ -180,6 +191,26 @@ impl Bvh {
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
         self.triangles.len()
+    }
+
+    /// The nodes in their flattened depth-first order (a left child follows its parent), for
+    /// traversals of the same tree elsewhere (the gpu shading kernels).
+    pub fn flat_nodes(&self) -> impl Iterator<Item = FlatNode> + '_ {
+        self.nodes.iter().map(|n| FlatNode {
+            min: n.bounds.min,
+            max: n.bounds.max,
+            first_or_right: n.first_or_right,
+            count: n.count,
+        })
+    }
+
+    /// The triangle slots in leaf order: corner `v0`, edges `e1`, `e2` (the triangle is
+    /// `v0, v0 + e1, v0 + e2`) and the vertex normals of its corners.
+    pub fn slots(&self) -> impl Iterator<Item = ([DVec3; 3], [DVec3; 3])> + '_ {
+        self.triangles
+            .iter()
+            .zip(&self.normals)
+            .map(|(t, n)| ([t.v0, t.e1, t.e2], *n))
     }
 
     /// Bounds of the whole mesh (`None` when empty).

@@ -36,7 +36,7 @@ use thiserror::Error;
 use crate::bvh::Bvh;
 use crate::envmap::grid::{rgb, Tap};
 use crate::envmap::{
-    inverse_activate, texel_dir, CubeMap, EnvGrad, EnvMapError, LightProbe, PreparedEnv,
+    inverse_activate, texel_dir, CubeMap, EnvGrad, EnvMapError, LightKind, LightProbe, PreparedEnv,
 };
 use crate::kdtree::KdTree;
 use crate::mesh::TriangleMesh;
@@ -238,6 +238,16 @@ impl GridMap {
         &self.locals[k]
     }
 
+    /// The BVH of the mesh the probes were rendered against (the occlusion test's).
+    pub fn bvh(&self) -> &Bvh {
+        &self.bvh
+    }
+
+    /// Start offset of the occlusion test's mirror ray along its direction.
+    pub fn ray_offset(&self) -> f64 {
+        self.ray_offset
+    }
+
     /// The global light used where mirror rays escape (and receiving their gradient).
     pub fn global(&self) -> &PreparedEnv {
         &self.global
@@ -414,6 +424,10 @@ impl LightProbe for GridMap {
     fn zero_grad(&self) -> EnvGrad {
         self.global.zero_grad()
     }
+
+    fn kind(&self) -> LightKind<'_> {
+        LightKind::GridMap(self)
+    }
 }
 
 #[cfg(test)]
@@ -421,8 +435,8 @@ mod tests {
     use super::*;
     use crate::envmap::{activate, NUM_FACES};
     use crate::gradcheck::assert_gradient;
-    use crate::meshing::sphere_surfels;
     use crate::reconstruction::prefilter_plan;
+    use crate::testing::{sphere_surfels, two_spheres};
 
     const SIZE: usize = 16;
 
@@ -441,23 +455,6 @@ mod tests {
 
     fn prepared(cube: &CubeMap, fresnel: bool) -> PreparedEnv {
         PreparedEnv::new(cube, prefilter_plan(SIZE, fresnel).unwrap()).unwrap()
-    }
-
-    /// Sphere A (radius 1 at the origin, light albedo) and sphere B (radius 1 at (3, 0, 0), dark).
-    fn two_spheres() -> (TriangleMesh, Surfels) {
-        let mut mesh = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 3);
-        let b = TriangleMesh::icosphere(DVec3::new(3.0, 0.0, 0.0), 1.0, 3);
-        let offset = mesh.vertices.len() as u32;
-        mesh.vertices.extend(&b.vertices);
-        mesh.normals.extend(&b.normals);
-        mesh.triangles
-            .extend(b.triangles.iter().map(|t| t.map(|i| i + offset)));
-        let mut surfels = sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.6, 0.5, 0.4));
-        let dark = sphere_surfels(DVec3::new(3.0, 0.0, 0.0), 1.0, 3000, DVec3::splat(0.02));
-        for i in 0..dark.len() {
-            surfels.push_activated(&dark.get(i));
-        }
-        (mesh, surfels)
     }
 
     #[test]

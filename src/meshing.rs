@@ -172,42 +172,10 @@ pub fn write_mesh(mesh: &TriangleMesh, path: &Path) -> Result<(), MeshingError> 
     }
 }
 
-/// Opaque surfels tangent to a sphere, dense enough to close it (tests).
-#[cfg(test)]
-pub(crate) fn sphere_surfels(centre: DVec3, radius: f64, count: usize, albedo: DVec3) -> Surfels {
-    use crate::surfels::Surfel;
-    use glam::{DMat3, DVec2};
-    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    let mut surfels = Surfels::default();
-    let spacing = radius * (4.0 * std::f64::consts::PI / count as f64).sqrt();
-    for n in 0..count {
-        let z = 1.0 - 2.0 * (n as f64 + 0.5) / count as f64;
-        let r = (1.0 - z * z).sqrt();
-        let phi = golden * n as f64;
-        let normal = DVec3::new(r * phi.cos(), r * phi.sin(), z);
-        let helper = if normal.z.abs() < 0.9 {
-            DVec3::Z
-        } else {
-            DVec3::X
-        };
-        let tu = helper.cross(normal).normalize();
-        let tv = normal.cross(tu);
-        surfels.push_activated(&Surfel {
-            position: centre + radius * normal,
-            scale: DVec2::splat(0.8 * spacing),
-            rotation: DMat3::from_cols(tu, tv, normal),
-            opacity: 0.98,
-            albedo,
-            roughness: 0.3,
-            ior: 1.5,
-        });
-    }
-    surfels
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::sphere_surfels;
 
     #[test]
     fn a_surfel_sphere_meshes_to_a_sphere() {

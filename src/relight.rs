@@ -108,7 +108,7 @@ mod tests {
             })
             .collect();
         let surfels =
-            crate::meshing::sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.5, 0.4, 0.3));
+            crate::testing::sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.5, 0.4, 0.3));
         let config = TrainConfig {
             gridmap,
             iterations: 100,

@@ -1,11 +1,15 @@
-//! Fixtures shared by the tests and benchmarks: the shared ground-truth captures' folder, and
-//! random upstream gradients for the rasterizer's backward pass.
+//! Fixtures shared by the tests and benchmarks: the shared ground-truth captures' folder, random
+//! upstream gradients for the rasterizer's backward pass, and surfel spheres (one, or two beside
+//! each other for GridMap).
 
 use std::path::{Path, PathBuf};
 
+use glam::{DMat3, DVec2, DVec3};
 use rand::Rng;
 
+use crate::mesh::TriangleMesh;
 use crate::raster::{GBufferGrads, GBuffers};
+use crate::surfels::{Surfel, Surfels};
 
 /// `../shared/data` beside the repository, or `None` after printing the skip notice that tests
 /// reading the shared captures give when it is absent (the project passes from a clone alone).
@@ -34,4 +38,52 @@ pub fn random_upstream(rng: &mut impl Rng, width: usize, height: usize) -> GBuff
         g.depth_normal[k] = [r(), r(), r()];
     }
     g
+}
+
+/// Opaque surfels tangent to a sphere, dense enough to close it.
+pub fn sphere_surfels(centre: DVec3, radius: f64, count: usize, albedo: DVec3) -> Surfels {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let mut surfels = Surfels::default();
+    let spacing = radius * (4.0 * std::f64::consts::PI / count as f64).sqrt();
+    for n in 0..count {
+        let z = 1.0 - 2.0 * (n as f64 + 0.5) / count as f64;
+        let r = (1.0 - z * z).sqrt();
+        let phi = golden * n as f64;
+        let normal = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+        let helper = if normal.z.abs() < 0.9 {
+            DVec3::Z
+        } else {
+            DVec3::X
+        };
+        let tu = helper.cross(normal).normalize();
+        let tv = normal.cross(tu);
+        surfels.push_activated(&Surfel {
+            position: centre + radius * normal,
+            scale: DVec2::splat(0.8 * spacing),
+            rotation: DMat3::from_cols(tu, tv, normal),
+            opacity: 0.98,
+            albedo,
+            roughness: 0.3,
+            ior: 1.5,
+        });
+    }
+    surfels
+}
+
+/// Two unit spheres as a mesh and as surfels: A at the origin with a light albedo, B at
+/// (3, 0, 0), dark; each occludes part of the other's sky (GridMap's tests).
+pub fn two_spheres() -> (TriangleMesh, Surfels) {
+    let mut mesh = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 3);
+    let b = TriangleMesh::icosphere(DVec3::new(3.0, 0.0, 0.0), 1.0, 3);
+    let offset = mesh.vertices.len() as u32;
+    mesh.vertices.extend(&b.vertices);
+    mesh.normals.extend(&b.normals);
+    mesh.triangles
+        .extend(b.triangles.iter().map(|t| t.map(|i| i + offset)));
+    let mut surfels = sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.6, 0.5, 0.4));
+    let dark = sphere_surfels(DVec3::new(3.0, 0.0, 0.0), 1.0, 3000, DVec3::splat(0.02));
+    for i in 0..dark.len() {
+        surfels.push_activated(&dark.get(i));
+    }
+    (mesh, surfels)
 }

@@ -27,7 +27,7 @@ use thiserror::Error;
 pub use grid::CubeGrid;
 pub use latlong::WorldUp;
 pub use prefilter::{EnvGrad, MipChainSpec, PrefilterPlan, PreparedEnv};
-pub use probe::LightProbe;
+pub use probe::{LightKind, LightProbe};
 
 /// Number of cube faces.
 pub const NUM_FACES: usize = 6;

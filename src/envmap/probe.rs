@@ -6,6 +6,19 @@
 use glam::DVec3;
 
 use super::{EnvGrad, PreparedEnv};
+use crate::gridmap::GridMap;
+
+/// What a light is, for a backend that evaluates the known kinds on its own device and calls
+/// [`LightProbe`] per pixel for the others.
+#[derive(Clone, Copy)]
+pub enum LightKind<'a> {
+    /// The global environment alone (position-independent).
+    Global(&'a PreparedEnv),
+    /// GridMap's local probes over the global environment.
+    GridMap(&'a GridMap),
+    /// Any other light.
+    Other,
+}
 
 /// Light as seen by the shader.
 pub trait LightProbe: Sync {
@@ -39,10 +52,9 @@ pub trait LightProbe: Sync {
     /// Zero accumulators for this light's gradient.
     fn zero_grad(&self) -> EnvGrad;
 
-    /// The global environment, where this light is nothing else (position-independent): a
-    /// backend may then shade on its own device. `None` for lights it must call per pixel.
-    fn as_global(&self) -> Option<&PreparedEnv> {
-        None
+    /// What this light is ([`LightKind::Other`] unless it says).
+    fn kind(&self) -> LightKind<'_> {
+        LightKind::Other
     }
 }
 
@@ -81,7 +93,7 @@ impl LightProbe for PreparedEnv {
         PreparedEnv::zero_grad(self)
     }
 
-    fn as_global(&self) -> Option<&PreparedEnv> {
-        Some(self)
+    fn kind(&self) -> LightKind<'_> {
+        LightKind::Global(self)
     }
 }

@@ -34,11 +34,11 @@ use tracing::info_span;
 use wgpu::util::DeviceExt;
 
 use super::device::Device;
-use super::shade::ShadePipelines;
+use super::shade::{Lighting, ShadePipelines};
 use super::{GpuContext, GpuError};
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
-use crate::envmap::{EnvGrad, LightProbe};
+use crate::envmap::{EnvGrad, LightKind, LightProbe};
 use crate::raster::{
     begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
@@ -1061,8 +1061,7 @@ impl Backend for GpuBackend {
         self.device.take_stage_times()
     }
 
-    /// On the device under the global light; a position-dependent light (GridMap) with the cpu
-    /// code.
+    /// On the device under the global light or GridMap; other lights with the cpu code.
     fn shade(
         &self,
         camera: &Camera,
@@ -1070,8 +1069,8 @@ impl Backend for GpuBackend {
         light: &dyn LightProbe,
         lut: &BrdfLut,
     ) -> Result<StokesImage, ShadingError> {
-        match light.as_global() {
-            Some(env) => self.shade_on_device(camera, buffers, env, lut),
+        match device_lighting(light) {
+            Some(lighting) => self.shade_on_device(camera, buffers, lighting, lut),
             None => shading::shade_image(camera, buffers, light, lut),
         }
     }
@@ -1084,10 +1083,21 @@ impl Backend for GpuBackend {
         lut: &BrdfLut,
         upstream: &StokesImageGrad,
     ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
-        match light.as_global() {
-            Some(env) => self.shade_backward_on_device(camera, buffers, env, lut, upstream),
+        match device_lighting(light) {
+            Some(lighting) => {
+                self.shade_backward_on_device(camera, buffers, lighting, lut, upstream)
+            }
             None => shading::shade_image_backward(camera, buffers, light, lut, upstream),
         }
+    }
+}
+
+/// The kernels' form of `light`, where they have one.
+fn device_lighting(light: &dyn LightProbe) -> Option<Lighting<'_>> {
+    match light.kind() {
+        LightKind::Global(env) => Some(Lighting::Global(env)),
+        LightKind::GridMap(grid) => Some(Lighting::GridMap(grid)),
+        LightKind::Other => None,
     }
 }
 

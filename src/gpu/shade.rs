@@ -1,20 +1,23 @@
-//! PolarDR shading on the device: [`GpuBackend`]'s `shade` and `shade_backward` under the global
-//! environment light (`shaders/shade_common.wgsl`, `shade.wgsl`, `shade_backward.wgsl`), in f32,
-//! a port of [`crate::shading`].
+//! PolarDR shading on the device: [`GpuBackend`]'s `shade` and `shade_backward` in f32, a port
+//! of [`crate::shading`] (`shaders/shade_common.wgsl`, `shade.wgsl`, `shade_backward.wgsl`),
+//! under the global environment (`light_global*.wgsl`) or GridMap's local probes over it
+//! (`light_gridmap*.wgsl`: anchor weights, blended probe lookups and the occlusion test of mirror
+//! rays against the mesh's BVH). Lights of other kinds are shaded by the cpu code.
 //!
-//! Per call the light goes up as one f32 buffer (every prefiltered mip level and irradiance map
-//! of the [`PreparedEnv`], then the BRDF table) with the cube grids' border tables beside it, and
-//! the G-buffers as two vectors per pixel; the view direction and Stokes frame of each pixel are
-//! computed on the device from the camera. The forward pass reads back the Stokes images; the
-//! backward pass reads back the per-pixel gradients and the light's gradient. Lights that depend
-//! on the surface point (GridMap) are not handled here: [`GpuBackend`] shades them with the cpu
-//! code.
+//! A light goes up as f32 buffers ([`LightBuffers`]): every prefiltered mip level and irradiance
+//! map of the global [`PreparedEnv`] followed by the BRDF table, the cube grids' border tables,
+//! and for GridMap the probes (same layout per probe), anchors, BVH nodes and triangle slots. The
+//! resident trainer ([`super::train`]) keeps them on the device; `shade` uploads them per call.
+//! Per pixel the kernels read three vectors: (raw normal, roughness), (albedo, IoR), (surface
+//! point); the view direction and Stokes frame come from the camera. The forward pass writes the
+//! Stokes images; the backward pass writes the per-pixel gradients and adds the global light's
+//! gradient into per-texel sums.
 //!
 //! Threading: one thread per pixel, 256 per workgroup. The backward pass adds the light's
-//! gradient into per-texel sums with float atomics or a compare-and-swap loop
-//! ([`super::AtomicsMode`]), so the order of its sums, and their last bits, vary between runs.
-//! Limits: an image whose per-pixel buffers exceed the binding limit is shaded in chunks of
-//! pixels; a light that exceeds it fails with [`ShadingError::Gpu`] naming the buffer.
+//! gradient with float atomics or a compare-and-swap loop ([`super::AtomicsMode`]), so the order
+//! of its sums, and their last bits, vary between runs. Limits: an image whose per-pixel buffers
+//! exceed the binding limit is shaded in chunks of pixels; a light that exceeds it fails with
+//! [`ShadingError::Gpu`] naming the buffer.
 
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
@@ -26,44 +29,90 @@ use super::GpuError;
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::envmap::{EnvGrad, PreparedEnv};
+use crate::gridmap::GridMap;
 use crate::shading::{GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad};
 
 const SHADE_COMMON: &str = include_str!("../../shaders/shade_common.wgsl");
 const SHADE: &str = include_str!("../../shaders/shade.wgsl");
 const SHADE_BACKWARD: &str = include_str!("../../shaders/shade_backward.wgsl");
+const LIGHT_GLOBAL: &str = include_str!("../../shaders/light_global.wgsl");
+const LIGHT_GLOBAL_BACKWARD: &str = include_str!("../../shaders/light_global_backward.wgsl");
+const LIGHT_GRIDMAP: &str = include_str!("../../shaders/light_gridmap.wgsl");
+const LIGHT_GRIDMAP_BACKWARD: &str = include_str!("../../shaders/light_gridmap_backward.wgsl");
 
-/// The shading kernels.
+/// IoR nodes the kernels' parameters hold (`MAX_IORS`).
+const MAX_IORS: usize = 8;
+/// Anchors the GridMap kernels hold (`MAX_ANCHORS`).
+const MAX_ANCHORS: usize = 56;
+/// Vectors per pixel of the shading inputs.
+pub(super) const INPUT_VECTORS: u64 = 3;
+/// f32 values per pixel of the Stokes images (S0, S1, S2, diffuse, specular; RGB each).
+pub(super) const STOKES_FLOATS: u64 = 15;
+/// f32 values per pixel of the input gradients (normal, albedo, roughness, IoR).
+pub(super) const GRAD_FLOATS: u64 = 8;
+
+/// The forward and backward kernels under one kind of light.
+pub(super) struct LightPipelines {
+    pub(super) forward: wgpu::ComputePipeline,
+    pub(super) backward: wgpu::ComputePipeline,
+}
+
+/// The shading kernels, per kind of light.
 pub(super) struct ShadePipelines {
-    shade: wgpu::ComputePipeline,
-    shade_backward: wgpu::ComputePipeline,
+    pub(super) global: LightPipelines,
+    pub(super) gridmap: LightPipelines,
 }
 
 impl ShadePipelines {
     /// Compiles the kernels; `atomics` is the `add_grad` source the backward pass adds the
     /// light's gradient with.
     pub(super) fn compile(device: &Device, atomics: &str) -> Result<Self, GpuError> {
-        device.compile_all(|d| ShadePipelines {
-            shade: d.pipeline("shade", &[SHADE_COMMON, SHADE], "shade"),
-            shade_backward: d.pipeline(
-                "shade_backward",
-                &[SHADE_COMMON, SHADE_BACKWARD, atomics],
-                "shade_backward",
-            ),
+        device.compile_all(|d| {
+            let light = |name: &str, forward: &str, backward: &str| LightPipelines {
+                forward: d.pipeline(name, &[SHADE_COMMON, forward, SHADE], "shade"),
+                backward: d.pipeline(
+                    name,
+                    &[SHADE_COMMON, forward, SHADE_BACKWARD, backward, atomics],
+                    "shade_backward",
+                ),
+            };
+            ShadePipelines {
+                global: light("shade (global light)", LIGHT_GLOBAL, LIGHT_GLOBAL_BACKWARD),
+                gridmap: light("shade (GridMap)", LIGHT_GRIDMAP, LIGHT_GRIDMAP_BACKWARD),
+            }
         })
+    }
+
+    /// The kernels for `lighting`.
+    pub(super) fn for_lighting(&self, lighting: Lighting) -> &LightPipelines {
+        match lighting {
+            Lighting::Global(_) => &self.global,
+            Lighting::GridMap(_) => &self.gridmap,
+        }
     }
 }
 
-/// IoR nodes the kernels' parameters hold (`MAX_IORS`).
-const MAX_IORS: usize = 8;
-/// f32 values per pixel of the Stokes images (the largest per-pixel buffer) and of the input
-/// gradients.
-const STOKES_FLOATS: u64 = 15;
-const GRAD_FLOATS: u64 = 8;
+/// A light the kernels evaluate.
+#[derive(Clone, Copy)]
+pub(super) enum Lighting<'a> {
+    Global(&'a PreparedEnv),
+    GridMap(&'a GridMap),
+}
+
+impl<'a> Lighting<'a> {
+    /// The global environment (GridMap's escaping rays use it and receive its gradient).
+    pub(super) fn global(self) -> &'a PreparedEnv {
+        match self {
+            Lighting::Global(env) => env,
+            Lighting::GridMap(grid) => grid.global(),
+        }
+    }
+}
 
 /// `ShadeParams` of shade_common.wgsl.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
-struct ShadeParamsGpu {
+pub(super) struct ShadeParamsGpu {
     rot: [[f32; 4]; 3],
     up: [f32; 4],
     intr: [f32; 4],
@@ -71,14 +120,16 @@ struct ShadeParamsGpu {
     light_layout: [u32; 4],
     rough: [f32; 4],
     iors: [[f32; 4]; 2],
+    grid_counts: [u32; 4],
+    grid_geometry: [f32; 4],
 }
 
 fn v4(v: DVec3) -> [f32; 4] {
     [v.x as f32, v.y as f32, v.z as f32, 0.0]
 }
 
-/// A light and BRDF table laid out for the kernels.
-struct DeviceLight {
+/// A light and the BRDF table laid out for the kernels, on the host.
+pub(super) struct HostLight {
     /// RGB texels of every level, then of every irradiance map; then the table's A and B.
     values: Vec<f32>,
     /// Per level: face size, first texel, first border entry, 0; then the border tables.
@@ -87,13 +138,80 @@ struct DeviceLight {
     level_texels: Vec<usize>,
     /// Texels of each irradiance map.
     irradiance_texels: usize,
+    irradiance_maps: usize,
     /// Values of the texels (levels and irradiance maps), the length of the gradient sums.
     texel_values: usize,
+    /// GridMap's part, for [`Lighting::GridMap`].
+    probes: Option<HostProbes>,
     params: ShadeParamsGpu,
 }
 
-impl DeviceLight {
-    fn new(env: &PreparedEnv, lut: &BrdfLut) -> Result<Self, ShadingError> {
+/// GridMap's probes, anchors and BVH laid out for the kernels.
+struct HostProbes {
+    values: Vec<f32>,
+    anchors: Vec<[f32; 4]>,
+    nodes: Vec<[f32; 4]>,
+    slots: Vec<[f32; 4]>,
+}
+
+/// Lays out every texel of `env` (levels, then irradiance maps) as f32.
+fn texel_values(env: &PreparedEnv) -> impl Iterator<Item = f32> + '_ {
+    env.levels
+        .iter()
+        .chain(&env.irradiance)
+        .flatten()
+        .map(|&v| v as f32)
+}
+
+impl HostProbes {
+    fn new(grid: &GridMap, texel_values_per_probe: usize) -> Result<Self, ShadingError> {
+        let anchors = grid.anchors();
+        if anchors.len() > MAX_ANCHORS {
+            return Err(ShadingError::Gpu(format!(
+                "{} GridMap anchors, the kernels take at most {MAX_ANCHORS}",
+                anchors.len()
+            )));
+        }
+        let mut values = Vec::with_capacity(anchors.len() * texel_values_per_probe);
+        for k in 0..anchors.len() {
+            let local = grid.local(k);
+            if local.plan().spec != grid.global().plan().spec {
+                return Err(ShadingError::Gpu(
+                    "a GridMap probe is prefiltered with another plan than the global map".into(),
+                ));
+            }
+            values.extend(texel_values(local));
+        }
+        // Boxes rounded outwards, so f32 rounding cannot make a ray miss a box the f64 tree's
+        // ray enters.
+        let widen = |v: DVec3, sign: f64| {
+            let out = v + sign * (v.abs() + DVec3::ONE) * 1e-6;
+            [out.x as f32, out.y as f32, out.z as f32]
+        };
+        let mut nodes = Vec::new();
+        for n in grid.bvh().flat_nodes() {
+            let lo = widen(n.min, -1.0);
+            let hi = widen(n.max, 1.0);
+            nodes.push([lo[0], lo[1], lo[2], f32::from_bits(n.first_or_right)]);
+            nodes.push([hi[0], hi[1], hi[2], f32::from_bits(n.count)]);
+        }
+        let slots = grid
+            .bvh()
+            .slots()
+            .flat_map(|(corner_edges, normals)| corner_edges.into_iter().chain(normals).map(v4))
+            .collect();
+        Ok(HostProbes {
+            values,
+            anchors: anchors.iter().map(|&a| v4(a)).collect(),
+            nodes,
+            slots,
+        })
+    }
+}
+
+impl HostLight {
+    pub(super) fn new(lighting: Lighting, lut: &BrdfLut) -> Result<Self, ShadingError> {
+        let env = lighting.global();
         let plan = env.plan();
         if plan.irradiance_iors.len() > MAX_IORS {
             return Err(ShadingError::Gpu(format!(
@@ -124,13 +242,7 @@ impl DeviceLight {
         }
         let irradiance_first = first_texel;
         let irradiance_texels = plan.irradiance_grid().num_texels();
-        let mut values: Vec<f32> = env
-            .levels
-            .iter()
-            .chain(&env.irradiance)
-            .flatten()
-            .map(|&v| v as f32)
-            .collect();
+        let mut values: Vec<f32> = texel_values(env).collect();
         let texel_values = values.len();
         let lut_first = values.len();
         values.extend(lut.a.iter().chain(&lut.b).map(|&v| v as f32));
@@ -138,6 +250,22 @@ impl DeviceLight {
         for (k, &ior) in plan.irradiance_iors.iter().enumerate() {
             iors[k / 4][k % 4] = ior as f32;
         }
+        let probes = match lighting {
+            Lighting::Global(_) => None,
+            Lighting::GridMap(grid) => Some(HostProbes::new(grid, texel_values)?),
+        };
+        let (grid_counts, grid_geometry) = match (&probes, lighting) {
+            (Some(p), Lighting::GridMap(grid)) => (
+                [
+                    p.anchors.len() as u32,
+                    texel_values as u32,
+                    (p.nodes.len() / 2) as u32,
+                    0,
+                ],
+                [grid.ray_offset() as f32, 0.0, 0.0, 0.0],
+            ),
+            _ => ([0; 4], [0.0; 4]),
+        };
         let params = ShadeParamsGpu {
             rot: [[0.0; 4]; 3],
             up: [0.0; 4],
@@ -156,19 +284,33 @@ impl DeviceLight {
                 0.0,
             ],
             iors,
+            grid_counts,
+            grid_geometry,
         };
-        Ok(DeviceLight {
+        Ok(HostLight {
             values,
             tables,
             level_texels,
             irradiance_texels,
+            irradiance_maps: env.irradiance.len(),
             texel_values,
+            probes,
             params,
         })
     }
 
+    /// Bytes of the global light's gradient sums (one f32 per texel value).
+    pub(super) fn gradient_bytes(&self) -> u64 {
+        self.texel_values as u64 * 4
+    }
+
     /// The kernels' parameters for `pixels` pixels of `camera` from `first_pixel` on.
-    fn params(&self, camera: &Camera, first_pixel: usize, pixels: usize) -> ShadeParamsGpu {
+    pub(super) fn params(
+        &self,
+        camera: &Camera,
+        first_pixel: usize,
+        pixels: usize,
+    ) -> ShadeParamsGpu {
         let r = camera.rotation_opencv();
         ShadeParamsGpu {
             rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
@@ -190,7 +332,7 @@ impl DeviceLight {
     }
 
     /// Splits the per-texel gradient sums into an [`EnvGrad`] (levels, then irradiance maps).
-    fn env_grad(&self, sums: &[f32], maps: usize) -> EnvGrad {
+    pub(super) fn env_grad(&self, sums: &[f32]) -> EnvGrad {
         let mut rest = sums;
         let mut take = |texels: usize| {
             let (head, tail) = rest.split_at(texels * 3);
@@ -198,8 +340,47 @@ impl DeviceLight {
             head.iter().map(|&v| f64::from(v)).collect::<Vec<f64>>()
         };
         let levels = self.level_texels.iter().map(|&t| take(t)).collect();
-        let irradiance = (0..maps).map(|_| take(self.irradiance_texels)).collect();
+        let irradiance = (0..self.irradiance_maps)
+            .map(|_| take(self.irradiance_texels))
+            .collect();
         EnvGrad { levels, irradiance }
+    }
+
+    /// Uploads the light.
+    pub(super) fn upload(&self, device: &Device) -> Result<LightBuffers, GpuError> {
+        let probes = match &self.probes {
+            None => None,
+            Some(p) => Some([
+                device.storage_init("GridMap probes", bytemuck::cast_slice(&p.values))?,
+                device.storage_init("GridMap anchors", bytemuck::cast_slice(&p.anchors))?,
+                device.storage_init("GridMap BVH nodes", bytemuck::cast_slice(&p.nodes))?,
+                device.storage_init("GridMap BVH triangles", bytemuck::cast_slice(&p.slots))?,
+            ]),
+        };
+        Ok(LightBuffers {
+            values: device.storage_init("light", bytemuck::cast_slice(&self.values))?,
+            tables: device.storage_init("light tables", bytemuck::cast_slice(&self.tables))?,
+            probes,
+        })
+    }
+}
+
+/// A light on the device.
+pub(super) struct LightBuffers {
+    values: wgpu::Buffer,
+    tables: wgpu::Buffer,
+    /// GridMap's probes, anchors, BVH nodes and triangle slots.
+    probes: Option<[wgpu::Buffer; 4]>,
+}
+
+impl LightBuffers {
+    /// The light's bindings (1, 2, and 9–12 for GridMap).
+    pub(super) fn bindings(&self) -> Vec<(u32, &wgpu::Buffer)> {
+        let mut b = vec![(1, &self.values), (2, &self.tables)];
+        if let Some(probes) = &self.probes {
+            b.extend((9..).zip(probes.iter()));
+        }
+        b
     }
 }
 
@@ -211,60 +392,48 @@ fn chunks(pixels: usize, limit_pixels: usize) -> impl Iterator<Item = std::ops::
         .map(move |start| start..(start + step).min(pixels))
 }
 
+/// The inputs of the pixels in `range`: three vectors each, and the active flags.
+fn pixel_inputs(
+    buffers: &ShadingBuffers,
+    range: std::ops::Range<usize>,
+) -> (Vec<[f32; 4]>, Vec<u32>) {
+    let mut inputs = Vec::with_capacity(range.len() * INPUT_VECTORS as usize);
+    let mut active = Vec::with_capacity(range.len());
+    for p in range {
+        let n = buffers.normal[p];
+        let a = buffers.albedo[p];
+        let x = buffers.position.map_or(DVec3::ZERO, |q| q[p]);
+        inputs.push([
+            n.x as f32,
+            n.y as f32,
+            n.z as f32,
+            buffers.roughness[p] as f32,
+        ]);
+        inputs.push([a.x as f32, a.y as f32, a.z as f32, buffers.ior[p] as f32]);
+        inputs.push(v4(x));
+        active.push(u32::from(buffers.is_active(p)));
+    }
+    (inputs, active)
+}
+
 impl GpuBackend {
     /// Pixels per chunk: as many as the largest per-pixel buffer (the Stokes images) allows.
     fn shade_chunk_pixels(&self) -> usize {
         (self.device().binding_limit() / (STOKES_FLOATS * 4)) as usize
     }
 
-    /// The inputs of the pixels in `range`: two vectors each, and the active flags.
-    fn pixel_inputs(
-        buffers: &ShadingBuffers,
-        range: std::ops::Range<usize>,
-    ) -> (Vec<[f32; 4]>, Vec<u32>) {
-        let mut inputs = Vec::with_capacity(range.len() * 2);
-        let mut active = Vec::with_capacity(range.len());
-        for p in range {
-            let n = buffers.normal[p];
-            let a = buffers.albedo[p];
-            inputs.push([
-                n.x as f32,
-                n.y as f32,
-                n.z as f32,
-                buffers.roughness[p] as f32,
-            ]);
-            inputs.push([a.x as f32, a.y as f32, a.z as f32, buffers.ior[p] as f32]);
-            active.push(u32::from(buffers.is_active(p)));
-        }
-        (inputs, active)
-    }
-
-    fn light_buffers(&self, light: &DeviceLight) -> Result<(wgpu::Buffer, wgpu::Buffer), GpuError> {
-        Ok((
-            self.device()
-                .storage_init("light", bytemuck::cast_slice(&light.values))?,
-            self.device()
-                .storage_init("light tables", bytemuck::cast_slice(&light.tables))?,
-        ))
-    }
-
-    fn params_buffer(&self, params: &ShadeParamsGpu) -> wgpu::Buffer {
-        self.device()
-            .uniform("shade params", bytemuck::bytes_of(params))
-    }
-
-    /// PolarDR forward under the global light `env` on the device.
+    /// PolarDR forward under `lighting` on the device.
     pub(super) fn shade_on_device(
         &self,
         camera: &Camera,
         buffers: &ShadingBuffers,
-        env: &PreparedEnv,
+        lighting: Lighting,
         lut: &BrdfLut,
     ) -> Result<StokesImage, ShadingError> {
         let pixels = camera.num_pixels();
         buffers.check(pixels)?;
         let _span = info_span!("shade_image", backend = "gpu").entered();
-        let light = DeviceLight::new(env, lut)?;
+        let light = HostLight::new(lighting, lut)?;
         let mut out = StokesImage {
             width: camera.width as usize,
             height: camera.height as usize,
@@ -274,44 +443,29 @@ impl GpuBackend {
             diffuse: Vec::with_capacity(pixels),
             specular: Vec::with_capacity(pixels),
         };
-        self.device().scoped("shade", || -> Result<(), GpuError> {
-            let (light_buf, tables_buf) = self.light_buffers(&light)?;
+        let device = self.device();
+        let pipeline = &self.shading().for_lighting(lighting).forward;
+        device.scoped("shade", || -> Result<(), GpuError> {
+            let light_buffers = light.upload(device)?;
             for range in chunks(pixels, self.shade_chunk_pixels()) {
                 let n = range.len() as u64;
-                let params = self.params_buffer(&light.params(camera, range.start, range.len()));
-                let (inputs, active) = Self::pixel_inputs(buffers, range);
-                let inputs_buf = self
-                    .device()
-                    .storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
-                let active_buf = self
-                    .device()
-                    .storage_init("active pixels", bytemuck::cast_slice(&active))?;
-                let stokes_buf = self.device().storage(
+                let params = light.params(camera, range.start, range.len());
+                let params = device.uniform("shade params", bytemuck::bytes_of(&params));
+                let (inputs, active) = pixel_inputs(buffers, range);
+                let inputs =
+                    device.storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
+                let active = device.storage_init("active pixels", bytemuck::cast_slice(&active))?;
+                let stokes = device.storage(
                     "stokes",
                     n * STOKES_FLOATS * 4,
                     wgpu::BufferUsages::COPY_SRC,
                 )?;
-                let pipeline = &self.shading().shade;
-                let group = self.device().bind(
-                    pipeline,
-                    &[
-                        (0, &params),
-                        (1, &light_buf),
-                        (2, &tables_buf),
-                        (3, &inputs_buf),
-                        (4, &active_buf),
-                        (5, &stokes_buf),
-                    ],
-                );
-                let mut encoder = self
-                    .device()
-                    .wgpu()
-                    .create_command_encoder(&Default::default());
-                self.device()
-                    .dispatch_1d(&mut encoder, "shade", pipeline, &group, n)?;
-                let data = self
-                    .device()
-                    .submit_and_read(encoder, &[(&stokes_buf, n * STOKES_FLOATS * 4)])?;
+                let mut bindings = vec![(0, &params), (3, &inputs), (4, &active), (5, &stokes)];
+                bindings.extend(light_buffers.bindings());
+                let group = device.bind(pipeline, &bindings);
+                let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+                device.dispatch_1d(&mut encoder, "shade", pipeline, &group, n)?;
+                let data = device.submit_and_read(encoder, &[(&stokes, n * STOKES_FLOATS * 4)])?;
                 let values: Vec<f32> = bytemuck::pod_collect_to_vec(&data[0]);
                 for v in values.chunks_exact(STOKES_FLOATS as usize) {
                     let rgb = |k: usize| {
@@ -329,12 +483,12 @@ impl GpuBackend {
         Ok(out)
     }
 
-    /// PolarDR backward under the global light `env` on the device.
+    /// PolarDR backward under `lighting` on the device.
     pub(super) fn shade_backward_on_device(
         &self,
         camera: &Camera,
         buffers: &ShadingBuffers,
-        env: &PreparedEnv,
+        lighting: Lighting,
         lut: &BrdfLut,
         upstream: &StokesImageGrad,
     ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
@@ -342,99 +496,66 @@ impl GpuBackend {
         buffers.check(pixels)?;
         upstream.check(pixels)?;
         let _span = info_span!("shade_image_backward", backend = "gpu").entered();
-        let light = DeviceLight::new(env, lut)?;
+        let light = HostLight::new(lighting, lut)?;
         let mut grads = GBufferGrad {
             normal: Vec::with_capacity(pixels),
             albedo: Vec::with_capacity(pixels),
             roughness: Vec::with_capacity(pixels),
             ior: Vec::with_capacity(pixels),
         };
-        let sums = self
-            .device()
-            .scoped("shade backward", || -> Result<Vec<f32>, GpuError> {
-                let (light_buf, tables_buf) = self.light_buffers(&light)?;
-                let sums_bytes = light.texel_values as u64 * 4;
-                let sums_buf = self.device().storage(
-                    "light gradient",
-                    sums_bytes,
+        let device = self.device();
+        let pipeline = &self.shading().for_lighting(lighting).backward;
+        let sums = device.scoped("shade backward", || -> Result<Vec<f32>, GpuError> {
+            let light_buffers = light.upload(device)?;
+            let sums_bytes = light.gradient_bytes();
+            let sums =
+                device.storage("light gradient", sums_bytes, wgpu::BufferUsages::COPY_SRC)?;
+            let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+            for range in chunks(pixels, self.shade_chunk_pixels()) {
+                let n = range.len() as u64;
+                let params = light.params(camera, range.start, range.len());
+                let params = device.uniform("shade params", bytemuck::bytes_of(&params));
+                let (inputs, active) = pixel_inputs(buffers, range.clone());
+                let up: Vec<f32> = range
+                    .flat_map(|p| [upstream.s0[p], upstream.s1[p], upstream.s2[p]])
+                    .flat_map(|v| [v.x as f32, v.y as f32, v.z as f32])
+                    .collect();
+                let inputs =
+                    device.storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
+                let active = device.storage_init("active pixels", bytemuck::cast_slice(&active))?;
+                let up = device.storage_init("stokes gradient", bytemuck::cast_slice(&up))?;
+                let pixel_grads = device.storage(
+                    "shading input gradient",
+                    n * GRAD_FLOATS * 4,
                     wgpu::BufferUsages::COPY_SRC,
                 )?;
-                let chunk_list: Vec<_> = chunks(pixels, self.shade_chunk_pixels()).collect();
-                let last = chunk_list.len().saturating_sub(1);
-                let mut sums = Vec::new();
-                for (c, range) in chunk_list.into_iter().enumerate() {
-                    let n = range.len() as u64;
-                    let params =
-                        self.params_buffer(&light.params(camera, range.start, range.len()));
-                    let (inputs, active) = Self::pixel_inputs(buffers, range.clone());
-                    let up: Vec<f32> = range
-                        .flat_map(|p| [upstream.s0[p], upstream.s1[p], upstream.s2[p]])
-                        .flat_map(|v| [v.x as f32, v.y as f32, v.z as f32])
-                        .collect();
-                    let inputs_buf = self
-                        .device()
-                        .storage_init("shading inputs", bytemuck::cast_slice(&inputs))?;
-                    let active_buf = self
-                        .device()
-                        .storage_init("active pixels", bytemuck::cast_slice(&active))?;
-                    let up_buf = self
-                        .device()
-                        .storage_init("stokes gradient", bytemuck::cast_slice(&up))?;
-                    let grad_buf = self.device().storage(
-                        "shading input gradient",
-                        n * GRAD_FLOATS * 4,
-                        wgpu::BufferUsages::COPY_SRC,
-                    )?;
-                    let pipeline = &self.shading().shade_backward;
-                    let group = self.device().bind(
-                        pipeline,
-                        &[
-                            (0, &params),
-                            (1, &light_buf),
-                            (2, &tables_buf),
-                            (3, &inputs_buf),
-                            (4, &active_buf),
-                            (5, &up_buf),
-                            (6, &grad_buf),
-                            (8, &sums_buf),
-                        ],
-                    );
-                    let mut encoder = self
-                        .device()
-                        .wgpu()
-                        .create_command_encoder(&Default::default());
-                    self.device().dispatch_1d(
-                        &mut encoder,
-                        "shade backward",
-                        pipeline,
-                        &group,
-                        n,
-                    )?;
-                    let mut reads = vec![(&grad_buf, n * GRAD_FLOATS * 4)];
-                    if c == last {
-                        reads.push((&sums_buf, sums_bytes));
-                    }
-                    let data = self.device().submit_and_read(encoder, &reads)?;
-                    let values: Vec<f32> = bytemuck::pod_collect_to_vec(&data[0]);
-                    for v in values.chunks_exact(GRAD_FLOATS as usize) {
-                        let d = |k: usize| f64::from(v[k]);
-                        grads.normal.push(DVec3::new(d(0), d(1), d(2)));
-                        grads.albedo.push(DVec3::new(d(3), d(4), d(5)));
-                        grads.roughness.push(d(6));
-                        grads.ior.push(d(7));
-                    }
-                    if c == last {
-                        sums = bytemuck::pod_collect_to_vec(&data[1]);
-                    }
+                let mut bindings = vec![
+                    (0, &params),
+                    (3, &inputs),
+                    (4, &active),
+                    (5, &up),
+                    (6, &pixel_grads),
+                    (8, &sums),
+                ];
+                bindings.extend(light_buffers.bindings());
+                let group = device.bind(pipeline, &bindings);
+                device.dispatch_1d(&mut encoder, "shade backward", pipeline, &group, n)?;
+                let data =
+                    device.submit_and_read(encoder, &[(&pixel_grads, n * GRAD_FLOATS * 4)])?;
+                encoder = device.wgpu().create_command_encoder(&Default::default());
+                let values: Vec<f32> = bytemuck::pod_collect_to_vec(&data[0]);
+                for v in values.chunks_exact(GRAD_FLOATS as usize) {
+                    let d = |k: usize| f64::from(v[k]);
+                    grads.normal.push(DVec3::new(d(0), d(1), d(2)));
+                    grads.albedo.push(DVec3::new(d(3), d(4), d(5)));
+                    grads.roughness.push(d(6));
+                    grads.ior.push(d(7));
                 }
-                Ok(sums)
-            })?;
-        let env_grad = if pixels == 0 {
-            env.zero_grad()
-        } else {
-            light.env_grad(&sums, env.irradiance.len())
-        };
-        Ok((grads, env_grad))
+            }
+            let data = device.submit_and_read(encoder, &[(&sums, sums_bytes)])?;
+            Ok(bytemuck::pod_collect_to_vec(&data[0]))
+        })?;
+        Ok((grads, light.env_grad(&sums)))
     }
 }
 

@@ -1,0 +1,241 @@
+// GridMap's light (a port of the `LightProbe` of src/gridmap.rs, in f32): at surface point x the
+// local probes are blended with weights w_k ∝ 1/(‖x − a_k‖² + 1e-6); the diffuse irradiance is
+// the blend of the probes' irradiance maps everywhere, and the specular radiance the blend of
+// their mip chains where the mirror ray from x is blocked by the mesh, the global map where it
+// escapes. The occlusion test walks the mesh's BVH (flattened depth first, as src/bvh.rs builds
+// it) with a fixed stack, nearer child first, and Möller–Trumbore triangle tests: the ray starts
+// `grid_geometry.x` along the direction, steps through up to MAX_EXITS back-facing hits, and the
+// first front-facing hit means "occluded". Compiled after shade_common.wgsl (before the backward
+// file when differentiating); one thread per pixel as there.
+
+// Per probe `grid_counts.y` values: its RGB texels in the layout of `light` (every mip level,
+// then every irradiance map).
+@group(0) @binding(9) var<storage, read> probes: array<f32>;
+// Anchor positions (xyz).
+@group(0) @binding(10) var<storage, read> anchors: array<vec4<f32>>;
+// Two vectors per node: (min, first triangle slot or right child as bits),
+// (max, triangle count as bits; 0 for an interior node). Boxes are rounded outwards.
+@group(0) @binding(11) var<storage, read> bvh_nodes: array<vec4<f32>>;
+// Six vectors per triangle slot: corner v0, edges e1 and e2, the corners' vertex normals.
+@group(0) @binding(12) var<storage, read> bvh_slots: array<vec4<f32>>;
+
+const MAX_ANCHORS: u32 = 56u;
+const WEIGHT_EPSILON: f32 = 1e-6;
+// Back faces stepped through before a mirror ray counts as escaping.
+const MAX_EXITS: u32 = 4u;
+// Traversal stack entries (one per tree level; src/bvh.rs bounds the depth by 88).
+const BVH_STACK: u32 = 88u;
+// Hits closer than this ray parameter are ignored.
+const T_MIN: f32 = 1e-9;
+// Finite stand-in for +∞.
+const FAR: f32 = 3.0e38;
+
+// Normalized blend weights of the anchors at x.
+fn anchor_weights(x: vec3<f32>) -> array<f32, MAX_ANCHORS> {
+    var w: array<f32, MAX_ANCHORS>;
+    var total = 0.0;
+    for (var k = 0u; k < params.grid_counts.x; k++) {
+        let d = x - anchors[k].xyz;
+        w[k] = 1.0 / (dot(d, d) + WEIGHT_EPSILON);
+        total += w[k];
+    }
+    for (var k = 0u; k < params.grid_counts.x; k++) {
+        w[k] /= total;
+    }
+    return w;
+}
+
+// Σ_k w_k · texel t of probe k.
+fn blended_texel(w: ptr<function, array<f32, MAX_ANCHORS>>, t: u32) -> vec3<f32> {
+    var sum = vec3<f32>(0.0);
+    let stride = params.grid_counts.y;
+    for (var k = 0u; k < params.grid_counts.x; k++) {
+        let o = k * stride + t * 3u;
+        sum += (*w)[k] * vec3<f32>(probes[o], probes[o + 1u], probes[o + 2u]);
+    }
+    return sum;
+}
+
+fn blended_sample(w: ptr<function, array<f32, MAX_ANCHORS>>, taps: Taps) -> vec3<f32> {
+    var sum = vec3<f32>(0.0);
+    for (var k = 0u; k < 4u; k++) {
+        sum += taps.weight[k] * blended_texel(w, taps.texel[k]);
+    }
+    return sum;
+}
+
+// Σ_k w_k E_k(dir, r).
+fn blended_specular(x: vec3<f32>, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
+    var w = anchor_weights(x);
+    let blend = level_blend(roughness);
+    let l0 = u32(blend.x);
+    let a = blended_sample(&w, cube_taps(l0, level_first(l0), dir));
+    let b = blended_sample(&w, cube_taps(l0 + 1u, level_first(l0 + 1u), dir));
+    return a * (1.0 - blend.y) + b * blend.y;
+}
+
+// Σ_k w_k E_d,k(n).
+fn blended_irradiance(x: vec3<f32>, normal: vec3<f32>, ior: f32) -> vec3<f32> {
+    var w = anchor_weights(x);
+    let coarsest = params.light_layout.x - 1u;
+    let blend = irradiance_blend(ior);
+    let a = blended_sample(&w, cube_taps(coarsest, irradiance_first(blend.a), normal));
+    if blend.a == blend.b || blend.t == 0.0 {
+        return a;
+    }
+    let b = blended_sample(&w, cube_taps(coarsest, irradiance_first(blend.b), normal));
+    return a * (1.0 - blend.t) + b * blend.t;
+}
+
+// 1/d per component, with ±1e30 for zero components (WGSL leaves x/0 undefined).
+fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
+    let sign = select(vec3<f32>(1.0), vec3<f32>(-1.0), d < vec3<f32>(0.0));
+    return sign / max(abs(d), vec3<f32>(1e-30));
+}
+
+// Entry distance of the ray into node i's box within (0, t_max), or −1 when it misses.
+fn box_entry(i: u32, origin: vec3<f32>, inv_dir: vec3<f32>, t_max: f32) -> f32 {
+    let t0 = (bvh_nodes[2u * i].xyz - origin) * inv_dir;
+    let t1 = (bvh_nodes[2u * i + 1u].xyz - origin) * inv_dir;
+    let lo = min(t0, t1);
+    let hi = max(t0, t1);
+    let near = max(max(max(lo.x, lo.y), lo.z), 0.0);
+    let far = min(min(min(hi.x, hi.y), hi.z), t_max);
+    return select(-1.0, near, near <= far);
+}
+
+// Möller–Trumbore against slot s: (t, u, v) with T_MIN < t < t_max, or t = −1.
+fn triangle_hit(s: u32, origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> vec3<f32> {
+    let miss = vec3<f32>(-1.0, 0.0, 0.0);
+    let v0 = bvh_slots[6u * s].xyz;
+    let e1 = bvh_slots[6u * s + 1u].xyz;
+    let e2 = bvh_slots[6u * s + 2u].xyz;
+    let p = cross(dir, e2);
+    let det = dot(e1, p);
+    if det == 0.0 || !(abs(det) < FAR) {
+        return miss;
+    }
+    let inv_det = 1.0 / det;
+    let sv = origin - v0;
+    let u = dot(sv, p) * inv_det;
+    if !(u >= 0.0 && u <= 1.0) {
+        return miss;
+    }
+    let q = cross(sv, e1);
+    let v = dot(dir, q) * inv_det;
+    if v < 0.0 || u + v > 1.0 {
+        return miss;
+    }
+    let t = dot(e2, q) * inv_det;
+    if t > T_MIN && t < t_max {
+        return vec3<f32>(t, u, v);
+    }
+    return miss;
+}
+
+// The interpolated vertex normal at (u, v) of slot s (its geometric normal where that vanishes).
+fn slot_normal(s: u32, u: f32, v: f32) -> vec3<f32> {
+    let n = (1.0 - u - v) * bvh_slots[6u * s + 3u].xyz + u * bvh_slots[6u * s + 4u].xyz
+        + v * bvh_slots[6u * s + 5u].xyz;
+    if length(n) > 1e-30 {
+        return n;
+    }
+    return cross(bvh_slots[6u * s + 1u].xyz, bvh_slots[6u * s + 2u].xyz);
+}
+
+// The closest hit of origin + t·dir: (normal at the hit, unnormalized; t), or t = −1.
+fn closest_hit(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
+    var best = vec4<f32>(0.0, 0.0, 0.0, -1.0);
+    if params.grid_counts.z == 0u {
+        return best;
+    }
+    let inv_dir = safe_inverse(dir);
+    var t_max = FAR;
+    if box_entry(0u, origin, inv_dir, t_max) < 0.0 {
+        return best;
+    }
+    var stack: array<u32, BVH_STACK>;
+    var top = 0u;
+    var node = 0u;
+    loop {
+        let first_or_right = bitcast<u32>(bvh_nodes[2u * node].w);
+        let count = bitcast<u32>(bvh_nodes[2u * node + 1u].w);
+        if count > 0u {
+            for (var s = first_or_right; s < first_or_right + count; s++) {
+                let h = triangle_hit(s, origin, dir, t_max);
+                if h.x >= 0.0 {
+                    t_max = h.x;
+                    best = vec4<f32>(slot_normal(s, h.y, h.z), h.x);
+                }
+            }
+        } else {
+            let left = node + 1u;
+            let right = first_or_right;
+            let a = box_entry(left, origin, inv_dir, t_max);
+            let b = box_entry(right, origin, inv_dir, t_max);
+            if a >= 0.0 && b >= 0.0 {
+                if top < BVH_STACK {
+                    stack[top] = select(right, left, b < a);
+                    top += 1u;
+                }
+                node = select(left, right, b < a);
+                continue;
+            }
+            if a >= 0.0 {
+                node = left;
+                continue;
+            }
+            if b >= 0.0 {
+                node = right;
+                continue;
+            }
+        }
+        // Pop the next node still in reach.
+        var found = false;
+        while top > 0u {
+            top -= 1u;
+            node = stack[top];
+            if box_entry(node, origin, inv_dir, t_max) >= 0.0 {
+                found = true;
+                break;
+            }
+        }
+        if !found {
+            break;
+        }
+    }
+    return best;
+}
+
+// Whether the mirror ray from x along dir is blocked by the mesh.
+fn occluded(x: vec3<f32>, dir: vec3<f32>) -> bool {
+    let len = length(dir);
+    if !(len > 0.0 && len < FAR) {
+        return false;
+    }
+    let d = dir / len;
+    let offset = params.grid_geometry.x;
+    var origin = x + offset * d;
+    for (var e = 0u; e < MAX_EXITS; e++) {
+        let hit = closest_hit(origin, d);
+        if hit.w < 0.0 {
+            return false;
+        }
+        if dot(hit.xyz, d) < 0.0 {
+            return true;
+        }
+        origin = origin + (hit.w + offset) * d;
+    }
+    return false;
+}
+
+fn light_specular(x: vec3<f32>, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
+    if occluded(x, dir) {
+        return blended_specular(x, dir, roughness);
+    }
+    return specular_light(dir, roughness);
+}
+
+fn light_irradiance(x: vec3<f32>, normal: vec3<f32>, ior: f32) -> vec3<f32> {
+    return blended_irradiance(x, normal, ior);
+}

@@ -3,6 +3,8 @@
 // entries (the host skips digits that are the same in all), then over the tile bits the tile count
 // needs. `emit` writes the entries in surfel order, and every pass is stable, so ties keep surfel
 // order: each tile's run ends up front to back, ties broken by surfel index like the cpu backend.
+// The number of entries is read from `sort_count[0]` (written by the host, or by the device scan
+// of scan.wgsl, which also sizes the indirect dispatches of the block kernels).
 // One pass is three kernels over blocks of RADIX_BLOCK entries (the host ping-pongs `keys_in` and
 // `keys_out` between passes):
 //   `radix_count`   per block, how many entries have each digit (per-thread counts summed with
@@ -26,20 +28,29 @@ struct RadixPass {
     shift: u32,
     // Key word: 0 = depth bits (entry.y), 1 = tile (entry.x).
     word: u32,
-    // Entries to sort.
-    total: u32,
-    // ceil(total / RADIX_BLOCK).
-    blocks: u32,
+    unused0: u32,
+    unused1: u32,
 }
 
 @group(0) @binding(0) var<uniform> pass_: RadixPass;
 @group(0) @binding(1) var<storage, read> keys_in: array<vec4<u32>>;
 @group(0) @binding(2) var<storage, read_write> keys_out: array<vec4<u32>>;
 @group(0) @binding(3) var<storage, read_write> hist: array<u32>;
+@group(0) @binding(4) var<storage, read> sort_count: array<u32>;
 
 var<workgroup> block_bins: array<atomic<u32>, RADIX_BINS>;
 var<workgroup> thread_counts: array<u32, RADIX_BINS * RADIX_THREADS>;
 var<workgroup> partial: array<u32, RADIX_THREADS>;
+
+// Entries to sort (at most the buffers' capacity: the scan clamps it).
+fn total() -> u32 {
+    return sort_count[0];
+}
+
+// Blocks of RADIX_BLOCK entries: ceil(total / RADIX_BLOCK).
+fn blocks() -> u32 {
+    return (total() + RADIX_BLOCK - 1u) / RADIX_BLOCK;
+}
 
 fn digit(e: vec4<u32>) -> u32 {
     let word = select(e.y, e.x, pass_.word == 1u);
@@ -59,7 +70,7 @@ fn own_digit_counts(block: u32, t: u32) -> array<u32, RADIX_BINS> {
     let start = block * RADIX_BLOCK + t * RADIX_ITEMS;
     for (var k = 0u; k < RADIX_ITEMS; k++) {
         let i = start + k;
-        if i < pass_.total {
+        if i < total() {
             counts[digit(keys_in[i])] += 1u;
         }
     }
@@ -84,8 +95,8 @@ fn radix_count(
         }
     }
     workgroupBarrier();
-    if t < RADIX_BINS && block < pass_.blocks {
-        hist[t * pass_.blocks + block] = atomicLoad(&block_bins[t]);
+    if t < RADIX_BINS && block < blocks() {
+        hist[t * blocks() + block] = atomicLoad(&block_bins[t]);
     }
 }
 
@@ -106,7 +117,7 @@ fn scan_partial(t: u32) {
 
 @compute @workgroup_size(RADIX_THREADS)
 fn radix_scan(@builtin(local_invocation_index) t: u32) {
-    let len = RADIX_BINS * pass_.blocks;
+    let len = RADIX_BINS * blocks();
     let per = (len + RADIX_THREADS - 1u) / RADIX_THREADS;
     let start = t * per;
     var sum = 0u;
@@ -156,7 +167,7 @@ fn radix_scatter(
         thread_counts[own + k] += partial[t];
     }
     workgroupBarrier();
-    if block >= pass_.blocks {
+    if block >= blocks() {
         return;
     }
     // thread_counts[d * RADIX_THREADS + t] − thread_counts[d * RADIX_THREADS] entries of digit d
@@ -164,12 +175,12 @@ fn radix_scatter(
     var cursor: array<u32, RADIX_BINS>;
     for (var d = 0u; d < RADIX_BINS; d++) {
         let first = d * RADIX_THREADS;
-        cursor[d] = hist[d * pass_.blocks + block] + thread_counts[first + t] - thread_counts[first];
+        cursor[d] = hist[d * blocks() + block] + thread_counts[first + t] - thread_counts[first];
     }
     let start = block * RADIX_BLOCK + t * RADIX_ITEMS;
     for (var k = 0u; k < RADIX_ITEMS; k++) {
         let i = start + k;
-        if i < pass_.total {
+        if i < total() {
             let e = keys_in[i];
             let d = digit(e);
             keys_out[cursor[d]] = e;

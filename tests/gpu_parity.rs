@@ -7,18 +7,18 @@
 //! (`CI=true`), where that is a failure. With `WGPU_BACKEND` set (CI sets `vulkan`) the adapter's
 //! backend must be the one named, so a silent fallback to another API fails.
 
-use glam::{DMat3, DQuat, DVec3};
+use glam::DVec3;
 use phygap::camera::Camera;
 use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions, Walk};
 use phygap::raster::cpu::CpuBackend;
 use phygap::raster::{Backend, GBuffers, RasterSettings};
-use phygap::surfels::{logit, SurfelGrads, Surfels};
+use phygap::surfels::{SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 mod common;
-use common::{gpu, random_camera, worst};
+use common::{gpu, random_camera, random_surfels, shell, worst};
 
 #[test]
 fn adapter_matches_wgpu_backend_env() {
@@ -38,54 +38,6 @@ fn adapter_matches_wgpu_backend_env() {
             assert_eq!(info.backend, wgpu::Backend::Vulkan);
         }
     }
-}
-
-/// `n` random surfels in the cube [-0.8, 0.8]³ with random orientations, sizes and materials.
-fn random_surfels(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
-    let mut s = Surfels::zeros(n);
-    for i in 0..n {
-        s.position[i] = std::array::from_fn(|_| rng.random_range(-0.8..0.8));
-        let q: [f64; 4] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
-        // Raw quaternions are not unit: the activation normalizes them.
-        s.rotation[i] = q.map(|v| v * 1.7);
-        s.log_scale[i] = [
-            rng.random_range(0.04f64..0.25).ln(),
-            rng.random_range(0.04f64..0.25).ln(),
-        ];
-        s.opacity[i] = logit(rng.random_range(0.2..0.97));
-        s.albedo[i] = std::array::from_fn(|_| rng.random_range(-2.5..2.5));
-        s.roughness[i] = rng.random_range(-2.5..2.5);
-        s.ior[i] = rng.random_range(-2.5..2.5);
-    }
-    s
-}
-
-/// Surfels tangent to the unit sphere (a closed, opaque shell, as in training).
-fn shell(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
-    let mut s = random_surfels(rng, n);
-    let golden = std::f64::consts::PI * (3.0 - 5.0f64.sqrt());
-    let spacing = (4.0 * std::f64::consts::PI / n as f64).sqrt();
-    for i in 0..n {
-        let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-        let r = (1.0 - z * z).sqrt();
-        let normal = DVec3::new(
-            r * (golden * i as f64).cos(),
-            r * (golden * i as f64).sin(),
-            z,
-        );
-        let helper = if normal.x.abs() < 0.9 {
-            DVec3::X
-        } else {
-            DVec3::Y
-        };
-        let tu = normal.cross(helper).normalize();
-        let q = DQuat::from_mat3(&DMat3::from_cols(tu, normal.cross(tu), normal));
-        s.position[i] = normal.to_array();
-        s.rotation[i] = [q.w, q.x, q.y, q.z];
-        let scale = (0.7 * spacing * rng.random_range(0.8..1.2f64)).ln();
-        s.log_scale[i] = [scale, scale];
-    }
-    s
 }
 
 /// Asserts the G-buffers agree to 1e-4 relative, `|gpu − cpu| ≤ 1e-4 (|cpu| + floor)`, with floor

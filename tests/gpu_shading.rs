@@ -8,7 +8,7 @@
 use glam::DVec3;
 use phygap::brdf_lut::BrdfLut;
 use phygap::camera::Camera;
-use phygap::envmap::{CubeMap, EnvGrad, LightProbe, MipChainSpec, PrefilterPlan, PreparedEnv};
+use phygap::envmap::{CubeMap, EnvGrad, LightProbe, PreparedEnv};
 use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions};
 use phygap::raster::Backend;
 use phygap::shading::{self, GBufferGrad, ShadingBuffers, StokesImage, StokesImageGrad};
@@ -16,24 +16,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 mod common;
-use common::{gpu, random_camera, worst};
-
-/// A random environment on a 16³ cube (levels 16, 8, 4; two roughness levels per size with
-/// `fine`), radiance spanning sigmoid and linear branches.
-fn random_env(rng: &mut ChaCha8Rng, fresnel_irradiance: bool, fine: bool) -> PreparedEnv {
-    let spec = MipChainSpec {
-        base_size: 16,
-        min_size: 4,
-        fresnel_irradiance,
-        levels_per_size: if fine { 2 } else { 1 },
-        ..MipChainSpec::default()
-    };
-    let raw = (0..CubeMap::num_values(16))
-        .map(|_| rng.random_range(-3.0..2.0))
-        .collect();
-    let cube = CubeMap::from_raw(16, raw).unwrap();
-    PreparedEnv::new(&cube, PrefilterPlan::new(spec).unwrap()).unwrap()
-}
+use common::{gpu, random_camera, random_env, worst};
 
 /// Random G-buffers of `pixels` pixels: raw normals of any length and direction (some facing
 /// away, a few zero), roughness and IoR beyond both ends of the tables' ranges, 10% inactive.

@@ -23,9 +23,11 @@ mod device;
 mod profile;
 mod raster;
 mod shade;
+mod train;
 
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};
 pub use raster::{AtomicsMode, GpuBackend, GpuOptions, Walk};
+pub use train::{DeviceStep, DeviceStepResult, DeviceTrainer};
 
 use thiserror::Error;
 

@@ -50,13 +50,13 @@ use crate::shading::{
 use crate::surfels::{SurfelGrads, Surfels};
 
 /// Tile edge of the device kernels (`TILE` in shaders/common.wgsl).
-const TILE: u32 = 8;
+pub(super) const TILE: u32 = 8;
 /// Per-surfel gradient accumulators (`NUM_ACC`).
-const NUM_ACC: u64 = 22;
+pub(super) const NUM_ACC: u64 = 22;
 /// Per-pixel forward outputs (`NUM_OUT`).
-const NUM_OUT: usize = 10;
+pub(super) const NUM_OUT: usize = 10;
 /// Per-surfel raw gradient outputs of `project_backward`.
-const NUM_RAW_GRAD: usize = 16;
+pub(super) const NUM_RAW_GRAD: usize = 16;
 
 const COMMON: &str = include_str!("../../shaders/common.wgsl");
 const PROJECT: &str = include_str!("../../shaders/project.wgsl");
@@ -104,9 +104,10 @@ pub struct GpuOptions {
     pub profile: bool,
 }
 
+/// `Params` of shaders/common.wgsl.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
-struct ParamsGpu {
+pub(super) struct ParamsGpu {
     rot: [[f32; 4]; 3],
     trans: [f32; 4],
     origin: [f32; 4],
@@ -119,6 +120,15 @@ struct ParamsGpu {
 }
 
 impl ParamsGpu {
+    /// The parameters of a whole image of `camera` (one band).
+    pub(super) fn whole_image(camera: &Camera, settings: &RasterSettings, surfels: u32) -> Self {
+        let band = Band {
+            first: 0,
+            end: camera.height.div_ceil(TILE),
+        };
+        Self::new(camera, settings, surfels, band)
+    }
+
     fn new(camera: &Camera, settings: &RasterSettings, surfels: u32, band: Band) -> Self {
         let (rot, trans) = camera.world_to_camera_opencv();
         let v4 = |v: glam::DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
@@ -206,24 +216,43 @@ impl Band {
     }
 }
 
+/// `Raw` of shaders/common.wgsl: a surfel's raw parameters, 16 values.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-struct RawGpu {
-    pos_op: [f32; 4],
-    quat: [f32; 4],
-    scale_rough_ior: [f32; 4],
-    albedo: [f32; 4],
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub(super) struct RawGpu {
+    pub(super) pos_op: [f32; 4],
+    pub(super) quat: [f32; 4],
+    pub(super) scale_rough_ior: [f32; 4],
+    pub(super) albedo: [f32; 4],
+}
+
+/// The surfels' raw parameters in the kernels' layout (f32).
+pub(super) fn raw_surfels(surfels: &Surfels) -> Vec<RawGpu> {
+    let f = |v: f64| v as f32;
+    (0..surfels.len())
+        .map(|i| {
+            let p = surfels.position[i];
+            let s = surfels.log_scale[i];
+            let a = surfels.albedo[i];
+            RawGpu {
+                pos_op: [f(p[0]), f(p[1]), f(p[2]), f(surfels.opacity[i])],
+                quat: surfels.rotation[i].map(f),
+                scale_rough_ior: [f(s[0]), f(s[1]), f(surfels.roughness[i]), f(surfels.ior[i])],
+                albedo: [f(a[0]), f(a[1]), f(a[2]), 0.0],
+            }
+        })
+        .collect()
 }
 
 /// Bytes of one `Proj` (7 × vec4).
-const PROJ_BYTES: u64 = 112;
+pub(super) const PROJ_BYTES: u64 = 112;
 /// Bytes of one sort entry (vec4<u32>).
-const ENTRY_BYTES: u64 = 16;
+pub(super) const ENTRY_BYTES: u64 = 16;
 
 /// Bits sorted per radix pass (`RADIX_BINS` = 2^bits in shaders/radix_sort.wgsl).
 const RADIX_BITS: u32 = 4;
 /// Entries per radix-sort workgroup (`RADIX_BLOCK`).
-const RADIX_BLOCK: u64 = 2048;
+pub(super) const RADIX_BLOCK: u64 = 2048;
 
 /// One radix-sort pass (`RadixPass` in shaders/radix_sort.wgsl).
 #[repr(C)]
@@ -231,22 +260,40 @@ const RADIX_BLOCK: u64 = 2048;
 struct RadixPassGpu {
     shift: u32,
     word: u32,
-    total: u32,
-    blocks: u32,
+    unused: [u32; 2],
+}
+
+/// How the radix sort's block kernels are dispatched.
+#[derive(Clone, Copy)]
+pub(super) enum SortDispatch<'a> {
+    /// The host knows how many entries there are.
+    Direct { total: u64 },
+    /// The device wrote the workgroup grid (x, y, z) into `args` at byte `offset`.
+    Indirect { args: &'a wgpu::Buffer, offset: u64 },
+}
+
+/// What a sort reads besides its entries.
+pub(super) struct SortInputs<'a> {
+    /// Per-block digit counts: at least 16 × ⌈entries / RADIX_BLOCK⌉ u32.
+    pub(super) hist: &'a wgpu::Buffer,
+    /// The number of entries, in its first u32.
+    pub(super) count: &'a wgpu::Buffer,
+    pub(super) bits: KeyBits,
+    pub(super) dispatch: SortDispatch<'a>,
 }
 
 /// How many low bits of each key word can differ between the entries of one sort: the radix sort
 /// runs passes over those only (the bits above are the same in every entry, so their passes would
 /// move nothing).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct KeyBits {
-    depth: u32,
-    tile: u32,
+pub(super) struct KeyBits {
+    pub(super) depth: u32,
+    pub(super) tile: u32,
 }
 
 /// Bits below (and at) the highest bit in which `lo` and `hi` differ: every value between them
 /// shares the bits above.
-fn varying_bits(lo: u32, hi: u32) -> u32 {
+pub(super) fn varying_bits(lo: u32, hi: u32) -> u32 {
     u32::BITS - (lo ^ hi).leading_zeros()
 }
 
@@ -276,16 +323,16 @@ fn varying_depth_bits(surfels: &Surfels, camera: &Camera, near: f64) -> u32 {
 const DEPTH_WORD: u32 = 0;
 const TILE_WORD: u32 = 1;
 
-struct Pipelines {
-    project: wgpu::ComputePipeline,
-    emit: wgpu::ComputePipeline,
-    tile_ranges: wgpu::ComputePipeline,
+pub(super) struct Pipelines {
+    pub(super) project: wgpu::ComputePipeline,
+    pub(super) emit: wgpu::ComputePipeline,
+    pub(super) tile_ranges: wgpu::ComputePipeline,
     radix_count: wgpu::ComputePipeline,
     radix_scan: wgpu::ComputePipeline,
     radix_scatter: wgpu::ComputePipeline,
-    rasterize: wgpu::ComputePipeline,
-    rasterize_backward: wgpu::ComputePipeline,
-    project_backward: wgpu::ComputePipeline,
+    pub(super) rasterize: wgpu::ComputePipeline,
+    pub(super) rasterize_backward: wgpu::ComputePipeline,
+    pub(super) project_backward: wgpu::ComputePipeline,
 }
 
 /// The wgpu rasterizer backend.
@@ -425,6 +472,11 @@ impl GpuBackend {
         &self.device
     }
 
+    /// The rasterization kernels.
+    pub(super) fn raster(&self) -> &Pipelines {
+        &self.pipelines
+    }
+
     /// The PolarDR shading kernels.
     pub(super) fn shading(&self) -> &ShadePipelines {
         &self.shading
@@ -480,28 +532,8 @@ impl GpuBackend {
 
         let raw_buf = {
             let _span = info_span!("upload", surfels = n).entered();
-            let f = |v: f64| v as f32;
-            let raw: Vec<RawGpu> = (0..n)
-                .map(|i| {
-                    let p = surfels.position[i];
-                    let q = surfels.rotation[i];
-                    let s = surfels.log_scale[i];
-                    let a = surfels.albedo[i];
-                    RawGpu {
-                        pos_op: [f(p[0]), f(p[1]), f(p[2]), f(surfels.opacity[i])],
-                        quat: q.map(f),
-                        scale_rough_ior: [
-                            f(s[0]),
-                            f(s[1]),
-                            f(surfels.roughness[i]),
-                            f(surfels.ior[i]),
-                        ],
-                        albedo: [f(a[0]), f(a[1]), f(a[2]), 0.0],
-                    }
-                })
-                .collect();
             self.device
-                .storage_init("raw surfels", bytemuck::cast_slice(&raw))?
+                .storage_init("raw surfels", bytemuck::cast_slice(&raw_surfels(surfels)))?
         };
         let proj_buf = self.device.storage(
             "projected surfels",
@@ -654,6 +686,9 @@ impl GpuBackend {
         params.counts[1] = total as u32;
         queue.write_buffer(&params_buf, 0, bytemuck::bytes_of(&params));
 
+        let count_buf = self
+            .device
+            .storage_init("entry count", bytemuck::bytes_of(&(total as u32)))?;
         let offsets_buf = self
             .device
             .storage_init("entry offsets", bytemuck::cast_slice(&offsets))?;
@@ -709,19 +744,28 @@ impl GpuBackend {
                 &group,
                 n as u64,
             )?;
+            let hist = self.device.storage(
+                "radix histogram",
+                total.div_ceil(RADIX_BLOCK) * (1u64 << RADIX_BITS) * 4,
+                wgpu::BufferUsages::empty(),
+            )?;
             let entries_buf = self.encode_sort(
                 &mut encoder,
                 [entries_buf, sorted_alt_buf],
-                total,
-                KeyBits {
-                    depth: frame.depth_bits,
-                    tile: varying_bits(0, tiles - 1),
+                &SortInputs {
+                    hist: &hist,
+                    count: &count_buf,
+                    bits: KeyBits {
+                        depth: frame.depth_bits,
+                        tile: varying_bits(0, tiles - 1),
+                    },
+                    dispatch: SortDispatch::Direct { total },
                 },
             )?;
             encoder.clear_buffer(&ranges_buf, 0, None);
             let group = self.device.bind(
                 &self.pipelines.tile_ranges,
-                &[(0, &params_buf), (3, &entries_buf), (4, &ranges_buf)],
+                &[(3, &entries_buf), (4, &ranges_buf), (5, &count_buf)],
             );
             self.device.dispatch_1d(
                 &mut encoder,
@@ -779,57 +823,47 @@ impl GpuBackend {
         })))
     }
 
-    /// Encodes the radix sort of the first `total` entries of `buffers[0]` by (tile, depth) and
-    /// returns the buffer that holds the result (the passes alternate between the two). The passes
-    /// cover the varying low bits of the depth, then of the tile index ([`KeyBits`]); each reads
-    /// its parameters from its own aligned slice of a uniform buffer.
-    fn encode_sort(
+    /// Encodes the radix sort of the entries of `buffers[0]` (as many as `inputs.count[0]`) by
+    /// (tile, depth) and returns the buffer that holds the result (the passes alternate between
+    /// the two). The passes cover the varying low bits of the depth, then of the tile index
+    /// ([`KeyBits`]); each reads its digit from its own aligned slice of a uniform buffer.
+    pub(super) fn encode_sort(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         buffers: [wgpu::Buffer; 2],
-        total: u64,
-        bits: KeyBits,
-    ) -> Result<wgpu::Buffer, RasterError> {
+        inputs: &SortInputs,
+    ) -> Result<wgpu::Buffer, GpuError> {
         let [mut keys, mut other] = buffers;
-        if total < 2 {
-            return Ok(keys);
-        }
-        let blocks = total.div_ceil(RADIX_BLOCK);
+        let grid = match inputs.dispatch {
+            SortDispatch::Direct { total } if total < 2 => return Ok(keys),
+            SortDispatch::Direct { total } => {
+                let (x, y) = self.device.workgroup_grid(total.div_ceil(RADIX_BLOCK))?;
+                Some((x, y))
+            }
+            SortDispatch::Indirect { .. } => None,
+        };
+        let bits = inputs.bits;
         let passes: Vec<RadixPassGpu> = (0..bits.depth.div_ceil(RADIX_BITS))
             .map(|p| (p * RADIX_BITS, DEPTH_WORD))
             .chain((0..bits.tile.div_ceil(RADIX_BITS)).map(|p| (p * RADIX_BITS, TILE_WORD)))
             .map(|(shift, word)| RadixPassGpu {
                 shift,
                 word,
-                total: total as u32,
-                blocks: blocks as u32,
+                unused: [0; 2],
             })
             .collect();
-        let stride = u64::from(
-            self.device
-                .wgpu()
-                .limits()
-                .min_uniform_buffer_offset_alignment,
-        )
-        .max(16);
+        if passes.is_empty() {
+            return Ok(keys);
+        }
+        let wgpu_device = self.device.wgpu();
+        let stride = u64::from(wgpu_device.limits().min_uniform_buffer_offset_alignment).max(16);
         let mut bytes = vec![0u8; passes.len() * stride as usize];
         for (i, p) in passes.iter().enumerate() {
             let at = i * stride as usize;
             bytes[at..at + 16].copy_from_slice(bytemuck::bytes_of(p));
         }
-        let pass_buf = self
-            .device
-            .wgpu()
-            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("radix passes"),
-                contents: &bytes,
-                usage: wgpu::BufferUsages::UNIFORM,
-            });
-        let hist_bytes = blocks * (1u64 << RADIX_BITS) * 4;
-        let hist =
-            self.device
-                .storage("radix histogram", hist_bytes, wgpu::BufferUsages::empty())?;
-        let (x, y) = self.device.workgroup_grid(blocks)?;
+        let pass_buf = self.device.uniform("radix passes", &bytes);
+        let (hist, count) = (inputs.hist, inputs.count);
         let mut compute = self.device.begin_pass(encoder, "radix sort");
         for i in 0..passes.len() {
             let pass_params = wgpu::BindingResource::Buffer(wgpu::BufferBinding {
@@ -837,11 +871,17 @@ impl GpuBackend {
                 offset: i as u64 * stride,
                 size: wgpu::BufferSize::new(16),
             });
-            let group = |pipeline: &wgpu::ComputePipeline, buffers: &[(u32, &wgpu::Buffer)]| {
-                let mut entries = vec![wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: pass_params.clone(),
-                }];
+            // With `digit`, the pass parameters at binding 0 (the scan reads only the counts).
+            let group = |pipeline: &wgpu::ComputePipeline,
+                         digit: bool,
+                         buffers: &[(u32, &wgpu::Buffer)]| {
+                let mut entries = Vec::new();
+                if digit {
+                    entries.push(wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: pass_params.clone(),
+                    });
+                }
                 entries.extend(
                     buffers
                         .iter()
@@ -850,34 +890,48 @@ impl GpuBackend {
                             resource: buffer.as_entire_binding(),
                         }),
                 );
-                self.device
-                    .wgpu()
-                    .create_bind_group(&wgpu::BindGroupDescriptor {
-                        label: None,
-                        layout: &pipeline.get_bind_group_layout(0),
-                        entries: &entries,
-                    })
+                wgpu_device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: None,
+                    layout: &pipeline.get_bind_group_layout(0),
+                    entries: &entries,
+                })
+            };
+            let dispatch_blocks = |compute: &mut wgpu::ComputePass| match (grid, inputs.dispatch) {
+                (Some((x, y)), _) => compute.dispatch_workgroups(x, y, 1),
+                (None, SortDispatch::Indirect { args, offset }) => {
+                    compute.dispatch_workgroups_indirect(args, offset)
+                }
+                (None, SortDispatch::Direct { .. }) => unreachable!("direct sorts have a grid"),
             };
             compute.set_pipeline(&self.pipelines.radix_count);
             compute.set_bind_group(
                 0,
-                &group(&self.pipelines.radix_count, &[(1, &keys), (3, &hist)]),
+                &group(
+                    &self.pipelines.radix_count,
+                    true,
+                    &[(1, &keys), (3, hist), (4, count)],
+                ),
                 &[],
             );
-            compute.dispatch_workgroups(x, y, 1);
+            dispatch_blocks(&mut compute);
             compute.set_pipeline(&self.pipelines.radix_scan);
-            compute.set_bind_group(0, &group(&self.pipelines.radix_scan, &[(3, &hist)]), &[]);
+            compute.set_bind_group(
+                0,
+                &group(&self.pipelines.radix_scan, false, &[(3, hist), (4, count)]),
+                &[],
+            );
             compute.dispatch_workgroups(1, 1, 1);
             compute.set_pipeline(&self.pipelines.radix_scatter);
             compute.set_bind_group(
                 0,
                 &group(
                     &self.pipelines.radix_scatter,
-                    &[(1, &keys), (2, &other), (3, &hist)],
+                    true,
+                    &[(1, &keys), (2, &other), (3, hist), (4, count)],
                 ),
                 &[],
             );
-            compute.dispatch_workgroups(x, y, 1);
+            dispatch_blocks(&mut compute);
             std::mem::swap(&mut keys, &mut other);
         }
         Ok(keys)
@@ -1059,6 +1113,10 @@ impl Backend for GpuBackend {
 
     fn take_stage_times(&self) -> Vec<StageTime> {
         self.device.take_stage_times()
+    }
+
+    fn as_gpu(&self) -> Option<&GpuBackend> {
+        Some(self)
     }
 
     /// On the device under the global light or GridMap; other lights with the cpu code.

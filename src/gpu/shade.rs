@@ -4,10 +4,11 @@
 //! (`light_gridmap*.wgsl`: anchor weights, blended probe lookups and the occlusion test of mirror
 //! rays against the mesh's BVH). Lights of other kinds are shaded by the cpu code.
 //!
-//! A light goes up as f32 buffers ([`LightBuffers`]): every prefiltered mip level and irradiance
-//! map of the global [`PreparedEnv`] followed by the BRDF table, the cube grids' border tables,
-//! and for GridMap the probes (same layout per probe), anchors, BVH nodes and triangle slots. The
-//! resident trainer ([`super::train`]) keeps them on the device; `shade` uploads them per call.
+//! A light goes up as f32 buffers: [`LightBuffers`] hold every prefiltered mip level and
+//! irradiance map of the global [`PreparedEnv`] followed by the BRDF table, and the cube grids'
+//! border tables; [`ProbeBuffers`] hold GridMap's probes (each in the global map's layout),
+//! anchors, BVH nodes and triangle slots. The resident trainer ([`super::train`]) keeps them on
+//! the device; `shade` uploads them per call.
 //! Per pixel the kernels read three vectors: (raw normal, roughness), (albedo, IoR), (surface
 //! point); the view direction and Stokes frame come from the camera. The forward pass writes the
 //! Stokes images; the backward pass writes the per-pixel gradients and adds the global light's
@@ -107,6 +108,14 @@ impl<'a> Lighting<'a> {
             Lighting::GridMap(grid) => grid.global(),
         }
     }
+
+    /// GridMap's probes laid out for the kernels (none for the global light).
+    fn probes(self) -> Result<Option<HostProbes>, ShadingError> {
+        match self {
+            Lighting::Global(_) => Ok(None),
+            Lighting::GridMap(grid) => HostProbes::new(grid).map(Some),
+        }
+    }
 }
 
 /// `ShadeParams` of shade_common.wgsl.
@@ -141,17 +150,18 @@ pub(super) struct HostLight {
     irradiance_maps: usize,
     /// Values of the texels (levels and irradiance maps), the length of the gradient sums.
     texel_values: usize,
-    /// GridMap's part, for [`Lighting::GridMap`].
-    probes: Option<HostProbes>,
     params: ShadeParamsGpu,
 }
 
 /// GridMap's probes, anchors and BVH laid out for the kernels.
-struct HostProbes {
+pub(super) struct HostProbes {
     values: Vec<f32>,
     anchors: Vec<[f32; 4]>,
     nodes: Vec<[f32; 4]>,
     slots: Vec<[f32; 4]>,
+    /// `grid_counts` and `grid_geometry` of the kernels' parameters.
+    counts: [u32; 4],
+    geometry: [f32; 4],
 }
 
 /// Lays out every texel of `env` (levels, then irradiance maps) as f32.
@@ -164,7 +174,9 @@ fn texel_values(env: &PreparedEnv) -> impl Iterator<Item = f32> + '_ {
 }
 
 impl HostProbes {
-    fn new(grid: &GridMap, texel_values_per_probe: usize) -> Result<Self, ShadingError> {
+    /// GridMap's part of its light; the global part is a [`HostLight`] of `grid.global()`.
+    pub(super) fn new(grid: &GridMap) -> Result<Self, ShadingError> {
+        let texel_values_per_probe = texel_values(grid.global()).count();
         let anchors = grid.anchors();
         if anchors.len() > MAX_ANCHORS {
             return Err(ShadingError::Gpu(format!(
@@ -200,18 +212,65 @@ impl HostProbes {
             .slots()
             .flat_map(|(corner_edges, normals)| corner_edges.into_iter().chain(normals).map(v4))
             .collect();
+        let counts = [
+            anchors.len() as u32,
+            texel_values_per_probe as u32,
+            (nodes.len() / 2) as u32,
+            0,
+        ];
         Ok(HostProbes {
             values,
             anchors: anchors.iter().map(|&a| v4(a)).collect(),
             nodes,
             slots,
+            counts,
+            geometry: [grid.ray_offset() as f32, 0.0, 0.0, 0.0],
+        })
+    }
+
+    /// Uploads the probes.
+    pub(super) fn upload(&self, device: &Device) -> Result<ProbeBuffers, GpuError> {
+        Ok(ProbeBuffers {
+            buffers: [
+                device.storage_init("GridMap probes", bytemuck::cast_slice(&self.values))?,
+                device.storage_init("GridMap anchors", bytemuck::cast_slice(&self.anchors))?,
+                device.storage_init("GridMap BVH nodes", bytemuck::cast_slice(&self.nodes))?,
+                device.storage_init("GridMap BVH triangles", bytemuck::cast_slice(&self.slots))?,
+            ],
+            counts: self.counts,
+            geometry: self.geometry,
         })
     }
 }
 
+/// GridMap's probes, anchors, BVH nodes and triangle slots on the device.
+pub(super) struct ProbeBuffers {
+    buffers: [wgpu::Buffer; 4],
+    counts: [u32; 4],
+    geometry: [f32; 4],
+}
+
+impl ProbeBuffers {
+    /// The probes' bindings (9–12).
+    pub(super) fn bindings(&self) -> impl Iterator<Item = (u32, &wgpu::Buffer)> {
+        (9..).zip(self.buffers.iter())
+    }
+}
+
+impl ShadeParamsGpu {
+    /// These parameters with GridMap's counts and ray offset.
+    pub(super) fn with_probes(self, probes: &ProbeBuffers) -> Self {
+        ShadeParamsGpu {
+            grid_counts: probes.counts,
+            grid_geometry: probes.geometry,
+            ..self
+        }
+    }
+}
+
 impl HostLight {
-    pub(super) fn new(lighting: Lighting, lut: &BrdfLut) -> Result<Self, ShadingError> {
-        let env = lighting.global();
+    /// The global light `env` and the BRDF table.
+    pub(super) fn new(env: &PreparedEnv, lut: &BrdfLut) -> Result<Self, ShadingError> {
         let plan = env.plan();
         if plan.irradiance_iors.len() > MAX_IORS {
             return Err(ShadingError::Gpu(format!(
@@ -250,22 +309,6 @@ impl HostLight {
         for (k, &ior) in plan.irradiance_iors.iter().enumerate() {
             iors[k / 4][k % 4] = ior as f32;
         }
-        let probes = match lighting {
-            Lighting::Global(_) => None,
-            Lighting::GridMap(grid) => Some(HostProbes::new(grid, texel_values)?),
-        };
-        let (grid_counts, grid_geometry) = match (&probes, lighting) {
-            (Some(p), Lighting::GridMap(grid)) => (
-                [
-                    p.anchors.len() as u32,
-                    texel_values as u32,
-                    (p.nodes.len() / 2) as u32,
-                    0,
-                ],
-                [grid.ray_offset() as f32, 0.0, 0.0, 0.0],
-            ),
-            _ => ([0; 4], [0.0; 4]),
-        };
         let params = ShadeParamsGpu {
             rot: [[0.0; 4]; 3],
             up: [0.0; 4],
@@ -284,8 +327,8 @@ impl HostLight {
                 0.0,
             ],
             iors,
-            grid_counts,
-            grid_geometry,
+            grid_counts: [0; 4],
+            grid_geometry: [0.0; 4],
         };
         Ok(HostLight {
             values,
@@ -294,7 +337,6 @@ impl HostLight {
             irradiance_texels,
             irradiance_maps: env.irradiance.len(),
             texel_values,
-            probes,
             params,
         })
     }
@@ -304,15 +346,17 @@ impl HostLight {
         self.texel_values as u64 * 4
     }
 
-    /// The kernels' parameters for `pixels` pixels of `camera` from `first_pixel` on.
+    /// The kernels' parameters for `pixels` pixels of `camera` from `first_pixel` on, with
+    /// GridMap's `probes` where they light the view.
     pub(super) fn params(
         &self,
         camera: &Camera,
         first_pixel: usize,
         pixels: usize,
+        probes: Option<&ProbeBuffers>,
     ) -> ShadeParamsGpu {
         let r = camera.rotation_opencv();
-        ShadeParamsGpu {
+        let params = ShadeParamsGpu {
             rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
             up: v4(camera.up()),
             intr: [
@@ -328,6 +372,10 @@ impl HostLight {
                 self.params.dims[3],
             ],
             ..self.params
+        };
+        match probes {
+            Some(p) => params.with_probes(p),
+            None => params,
         }
     }
 
@@ -348,39 +396,28 @@ impl HostLight {
 
     /// Uploads the light.
     pub(super) fn upload(&self, device: &Device) -> Result<LightBuffers, GpuError> {
-        let probes = match &self.probes {
-            None => None,
-            Some(p) => Some([
-                device.storage_init("GridMap probes", bytemuck::cast_slice(&p.values))?,
-                device.storage_init("GridMap anchors", bytemuck::cast_slice(&p.anchors))?,
-                device.storage_init("GridMap BVH nodes", bytemuck::cast_slice(&p.nodes))?,
-                device.storage_init("GridMap BVH triangles", bytemuck::cast_slice(&p.slots))?,
-            ]),
-        };
         Ok(LightBuffers {
             values: device.storage_init("light", bytemuck::cast_slice(&self.values))?,
             tables: device.storage_init("light tables", bytemuck::cast_slice(&self.tables))?,
-            probes,
         })
+    }
+
+    /// Whether `other` has the same layout (its gradient sums are interchangeable).
+    pub(super) fn same_layout(&self, other: &HostLight) -> bool {
+        self.values.len() == other.values.len() && self.tables == other.tables
     }
 }
 
-/// A light on the device.
+/// The global light and the BRDF table on the device.
 pub(super) struct LightBuffers {
     values: wgpu::Buffer,
     tables: wgpu::Buffer,
-    /// GridMap's probes, anchors, BVH nodes and triangle slots.
-    probes: Option<[wgpu::Buffer; 4]>,
 }
 
 impl LightBuffers {
-    /// The light's bindings (1, 2, and 9–12 for GridMap).
-    pub(super) fn bindings(&self) -> Vec<(u32, &wgpu::Buffer)> {
-        let mut b = vec![(1, &self.values), (2, &self.tables)];
-        if let Some(probes) = &self.probes {
-            b.extend((9..).zip(probes.iter()));
-        }
-        b
+    /// The light's bindings (1, 2).
+    pub(super) fn bindings(&self) -> [(u32, &wgpu::Buffer); 2] {
+        [(1, &self.values), (2, &self.tables)]
     }
 }
 
@@ -433,7 +470,8 @@ impl GpuBackend {
         let pixels = camera.num_pixels();
         buffers.check(pixels)?;
         let _span = info_span!("shade_image", backend = "gpu").entered();
-        let light = HostLight::new(lighting, lut)?;
+        let light = HostLight::new(lighting.global(), lut)?;
+        let probes = lighting.probes()?;
         let mut out = StokesImage {
             width: camera.width as usize,
             height: camera.height as usize,
@@ -447,9 +485,10 @@ impl GpuBackend {
         let pipeline = &self.shading().for_lighting(lighting).forward;
         device.scoped("shade", || -> Result<(), GpuError> {
             let light_buffers = light.upload(device)?;
+            let probe_buffers = probes.as_ref().map(|p| p.upload(device)).transpose()?;
             for range in chunks(pixels, self.shade_chunk_pixels()) {
                 let n = range.len() as u64;
-                let params = light.params(camera, range.start, range.len());
+                let params = light.params(camera, range.start, range.len(), probe_buffers.as_ref());
                 let params = device.uniform("shade params", bytemuck::bytes_of(&params));
                 let (inputs, active) = pixel_inputs(buffers, range);
                 let inputs =
@@ -462,6 +501,7 @@ impl GpuBackend {
                 )?;
                 let mut bindings = vec![(0, &params), (3, &inputs), (4, &active), (5, &stokes)];
                 bindings.extend(light_buffers.bindings());
+                bindings.extend(probe_buffers.iter().flat_map(ProbeBuffers::bindings));
                 let group = device.bind(pipeline, &bindings);
                 let mut encoder = device.wgpu().create_command_encoder(&Default::default());
                 device.dispatch_1d(&mut encoder, "shade", pipeline, &group, n)?;
@@ -496,7 +536,8 @@ impl GpuBackend {
         buffers.check(pixels)?;
         upstream.check(pixels)?;
         let _span = info_span!("shade_image_backward", backend = "gpu").entered();
-        let light = HostLight::new(lighting, lut)?;
+        let light = HostLight::new(lighting.global(), lut)?;
+        let probes = lighting.probes()?;
         let mut grads = GBufferGrad {
             normal: Vec::with_capacity(pixels),
             albedo: Vec::with_capacity(pixels),
@@ -507,13 +548,14 @@ impl GpuBackend {
         let pipeline = &self.shading().for_lighting(lighting).backward;
         let sums = device.scoped("shade backward", || -> Result<Vec<f32>, GpuError> {
             let light_buffers = light.upload(device)?;
+            let probe_buffers = probes.as_ref().map(|p| p.upload(device)).transpose()?;
             let sums_bytes = light.gradient_bytes();
             let sums =
                 device.storage("light gradient", sums_bytes, wgpu::BufferUsages::COPY_SRC)?;
             let mut encoder = device.wgpu().create_command_encoder(&Default::default());
             for range in chunks(pixels, self.shade_chunk_pixels()) {
                 let n = range.len() as u64;
-                let params = light.params(camera, range.start, range.len());
+                let params = light.params(camera, range.start, range.len(), probe_buffers.as_ref());
                 let params = device.uniform("shade params", bytemuck::bytes_of(&params));
                 let (inputs, active) = pixel_inputs(buffers, range.clone());
                 let up: Vec<f32> = range
@@ -538,6 +580,7 @@ impl GpuBackend {
                     (8, &sums),
                 ];
                 bindings.extend(light_buffers.bindings());
+                bindings.extend(probe_buffers.iter().flat_map(ProbeBuffers::bindings));
                 let group = device.bind(pipeline, &bindings);
                 device.dispatch_1d(&mut encoder, "shade backward", pipeline, &group, n)?;
                 let data =

@@ -281,6 +281,11 @@ pub trait Backend: Send + Sync {
     fn take_stage_times(&self) -> Vec<StageTime> {
         Vec::new()
     }
+    /// The gpu backend, which can also run whole training steps on its device
+    /// ([`crate::gpu::DeviceTrainer`]).
+    fn as_gpu(&self) -> Option<&crate::gpu::GpuBackend> {
+        None
+    }
     /// PolarDR shading of one view's G-buffers ([`shading::shade_image`], the default); a
     /// backend may run it on its own device.
     fn shade(

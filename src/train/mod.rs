@@ -18,10 +18,12 @@
 //! and, in the uninterrupted run, right after each checkpoint, so both runs see the same probes.
 
 mod angles;
+mod engine;
 pub mod state;
 pub mod step;
 pub mod targets;
 
+use std::collections::BTreeMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -42,7 +44,6 @@ use crate::envmap::{EnvMapError, LightProbe, PrefilterPlan, PreparedEnv, WorldUp
 use crate::evaluate::{self, EvalError};
 use crate::events::{Stage, TrainEvent};
 use crate::gridmap::GridMap;
-use crate::loss::LossWeights;
 use crate::mesh::TriangleMesh;
 use crate::meshing::{self, GRIDMAP_MESH_RESOLUTION};
 use crate::model::{self, Model, ModelError, ModelInfo};
@@ -52,7 +53,9 @@ use crate::reconstruction::prefilter_plan;
 use crate::render::{RenderError, Scene};
 use crate::shading::ShadingError;
 use crate::surfels::init::init_from_visual_hull;
+use crate::surfels::Surfels;
 
+use engine::{Engine, Pending};
 use state::{TrainState, CHECKPOINT_FILE};
 use targets::{learned_groups, resolve_mode, ViewTarget};
 
@@ -73,6 +76,8 @@ pub enum TrainError {
     Mode { mode: Mode, reason: String },
     #[error(transparent)]
     Backend(#[from] BackendError),
+    #[error(transparent)]
+    Gpu(#[from] crate::gpu::GpuError),
     #[error(transparent)]
     Raster(#[from] RasterError),
     #[error(transparent)]
@@ -140,13 +145,6 @@ impl Reporter<'_> {
 /// A stable fingerprint of the settings that shape a run (a resume must use the same ones).
 fn fingerprint(config: &TrainConfig) -> String {
     serde_json::to_string(config).expect("config serializes")
-}
-
-/// Gradients waiting to be applied.
-#[derive(Default)]
-struct Pending {
-    /// Summed environment gradient and the number of steps it covers.
-    env: Option<(crate::envmap::EnvGrad, u32)>,
 }
 
 /// GridMap of a run (METHOD.md §5): the mesh and the probes, rebuilt from the training state on
@@ -277,10 +275,11 @@ impl Run<'_> {
         } else {
             (self.fresh_state()?, None)
         };
+        let mut engine = Engine::new(self)?;
         reporter.emit(TrainEvent::Started {
             iterations: self.config.iterations,
             mode: format!("{:?}", self.mode).to_lowercase(),
-            backend: self.backend.description(),
+            backend: format!("{}; {}", self.backend.description(), engine.describe()),
             train_views: self.targets.len(),
             test_views: self.capture.test_views().count(),
             resumed_from,
@@ -288,20 +287,17 @@ impl Run<'_> {
         let session_start = Instant::now();
         let earlier_sessions = state.elapsed_seconds;
         let elapsed = || earlier_sessions + session_start.elapsed().as_secs_f64();
-        let step_inputs = step::StepInputs {
-            backend: self.backend.as_ref(),
-            settings: self.settings,
-            lut: self.lut,
-            weights: LossWeights::from(self.config),
-        };
         let mut env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        engine.load(&state)?;
+        engine.set_env(&env)?;
         let mut pending = Pending::default();
         let mut occlusion = Occlusion::default();
         let report_every = (self.config.iterations / 300).clamp(1, 25);
         let iterations = self.config.iterations;
         while state.iteration < iterations {
             if cancel.load(Ordering::Relaxed) {
-                self.flush_env(&mut state, &mut env, &mut pending)?;
+                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+                engine.sync(&mut state)?;
                 let iteration = state.iteration;
                 state.elapsed_seconds = elapsed();
                 state.save(&checkpoint, &fp)?;
@@ -314,6 +310,7 @@ impl Run<'_> {
             // iteration, so a resumed run does the same); until then the material and lighting
             // are not fitted well enough to tell θ from θ + 90°.
             if it == self.config.polar_stage_start() && !state.polarizer_angles.is_empty() {
+                engine.sync(&mut state)?;
                 state.polarizer_angles = angles::estimate(self, &state, &env)?;
             }
             if stage == Stage::Polar && self.config.gridmap {
@@ -321,29 +318,24 @@ impl Run<'_> {
                 let due = |interval: u32| interval > 0 && since.is_multiple_of(interval);
                 let remesh = !occlusion.current || due(self.config.mesh_interval);
                 if remesh || due(self.config.gridmap_interval) {
+                    engine.sync(&mut state)?;
                     self.rebuild_gridmap(&mut occlusion, &state, &env, remesh);
+                    engine.set_gridmap(occlusion.grid.as_ref())?;
                 }
             }
             let mut rng = iteration_rng(self.config.seed, it);
-            let target = &self.targets[rng.random_range(0..self.targets.len())];
-            let camera = &self.capture.views[target.view].camera;
-            let result = step::run(
-                &step_inputs,
-                &state.surfels,
-                self.light(&occlusion, &env, stage),
-                &state.polarizer_angles,
-                camera,
-                target,
-                stage,
-            )?;
-            if self.apply_gradients(&mut state, &mut env, &mut pending, &result, stage, it)? {
+            let target = rng.random_range(0..self.targets.len());
+            let light = self.light(&occlusion, &env, stage);
+            let outcome = engine.step(self, &mut state, light, target, stage, &mut pending)?;
+            if outcome.shaded
+                && (it + 1).is_multiple_of(self.config.envmap_prefilter_interval)
+                && self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?
+            {
                 if let Some(grid) = &mut occlusion.grid {
                     grid.set_global(env.clone());
                 }
             }
-            state
-                .densify
-                .add_view(&result.mean2d_grad_norm, result.width, result.height);
+            self.apply_angle_gradients(&mut state, &outcome.angles, stage)?;
             state.iteration += 1;
 
             let done = state.iteration;
@@ -355,8 +347,8 @@ impl Run<'_> {
                     iteration: done,
                     iterations,
                     stage,
-                    loss: result.total,
-                    losses: result.losses.clone(),
+                    loss: outcome.total,
+                    losses: outcome.losses.clone(),
                     num_surfels: state.surfels.len(),
                     elapsed_seconds: seconds,
                     eta_seconds: rate * f64::from(iterations - done),
@@ -366,6 +358,7 @@ impl Run<'_> {
                 && done.is_multiple_of(self.config.eval_interval)
                 && done < iterations
             {
+                engine.sync(&mut state)?;
                 if let Some(psnr) = self.test_psnr(&state, self.light(&occlusion, &env, stage))? {
                     reporter.emit(TrainEvent::Evaluated {
                         iteration: done,
@@ -375,8 +368,16 @@ impl Run<'_> {
             }
             // Densification and opacity resets come after the report and the test evaluation,
             // so those show the model the step produced, not one whose opacities were just reset.
-            self.refine(&mut state, stage, &mut rng)?;
-            if !state.surfels.is_finite() {
+            if self.densify_due(done, stage) || self.reset_due(done) {
+                engine.sync(&mut state)?;
+                self.refine(&mut state, stage, &mut rng)?;
+                engine.load(&state)?;
+            }
+            let finite = match engine {
+                Engine::Host => state.surfels.is_finite(),
+                Engine::Device(_) => outcome.finite,
+            };
+            if !finite {
                 return Err(TrainError::Diverged(state.iteration));
             }
             if self.config.checkpoint_interval > 0
@@ -385,15 +386,19 @@ impl Run<'_> {
             {
                 // A resumed run starts with no pending gradient and a freshly prefiltered map: do
                 // the same here, so the uninterrupted run and a resumed one stay bit-identical.
-                self.flush_env(&mut state, &mut env, &mut pending)?;
+                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
                 env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+                engine.set_env(&env)?;
                 occlusion = Occlusion::default();
+                engine.set_gridmap(None)?;
+                engine.sync(&mut state)?;
                 state.elapsed_seconds = elapsed();
                 state.save(&checkpoint, &fp)?;
                 reporter.emit(TrainEvent::Checkpoint { iteration: done });
             }
         }
-        self.flush_env(&mut state, &mut env, &mut pending)?;
+        self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+        engine.sync(&mut state)?;
         let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
         state.elapsed_seconds = elapsed();
         state.save(&checkpoint, &fp)?;
@@ -408,77 +413,64 @@ impl Run<'_> {
         Ok(TrainOutcome::Finished)
     }
 
-    /// One Adam step on every group the stage trains; the environment's gradient is accumulated
-    /// and applied every `envmap_prefilter_interval` steps (see [`Run::flush_env`]). Returns
-    /// whether the environment changed.
-    fn apply_gradients(
-        &self,
-        state: &mut TrainState,
-        env: &mut PreparedEnv,
-        pending: &mut Pending,
-        result: &step::StepResult,
-        stage: Stage,
-        it: u32,
-    ) -> Result<bool, TrainError> {
-        let mut env_changed = false;
-        let grads = result.surfels.groups();
-        for ((name, params), (_, grad)) in state.surfels.groups_mut().into_iter().zip(grads) {
+    /// The learning rate of each surfel parameter group at iteration `it` (in the order of
+    /// `Surfels::groups`); `None` for the groups the stage freezes (roughness and IoR in plain
+    /// 2DGS, where the colour is the albedo).
+    fn surfel_rates(&self, stage: Stage, it: u32) -> [Option<f64>; 7] {
+        Surfels::zeros(0).groups().map(|(name, _)| {
             let frozen = stage == Stage::Geometry && matches!(name, "roughness" | "ior");
-            if frozen {
-                continue;
-            }
-            let lr = self
-                .learning_rates
-                .for_group(name, it)
-                .expect("surfel groups have rates");
-            state.adam.step(name, params, grad, lr)?;
-        }
-        if let Some(env_grad) = &result.env {
-            match &mut pending.env {
-                Some((sum, count)) => {
-                    sum.add(env_grad);
-                    *count += 1;
-                }
-                None => pending.env = Some((env_grad.clone(), 1)),
-            }
-            if (it + 1).is_multiple_of(self.config.envmap_prefilter_interval) {
-                env_changed = self.flush_env(state, env, pending)?;
-            }
-        }
-        if stage == Stage::Polar && !state.polarizer_angles.is_empty() {
-            let names: Vec<String> = state.polarizer_angles.keys().cloned().collect();
-            let mut values: Vec<f64> = state.polarizer_angles.values().copied().collect();
-            let grad: Vec<f64> = names
-                .iter()
-                .map(|n| result.angles.get(n).copied().unwrap_or(0.0))
-                .collect();
-            state.adam.step(
-                POLARIZER_GROUP,
-                &mut values,
-                &grad,
-                self.learning_rates.polarizer,
-            )?;
-            for (name, v) in names.into_iter().zip(values) {
-                state
-                    .polarizer_angles
-                    .insert(name, v.rem_euclid(std::f64::consts::PI));
-            }
-        }
-        Ok(env_changed)
+            (!frozen).then(|| {
+                self.learning_rates
+                    .for_group(name, it)
+                    .expect("surfel groups have rates")
+            })
+        })
     }
 
-    /// Applies the accumulated environment gradient: one Adam step with the mean gradient and the
-    /// learning rate scaled by the number of steps it covers (the displacement K single steps
-    /// would make), then rebuilds the prefiltered map. Both the transpose of the prefilter and
-    /// the rebuild cost about as much as a whole step without them, hence the batching. Returns
-    /// whether there was a gradient to apply.
+    /// One Adam step on the learned polarizer angles (PolarDR stage).
+    fn apply_angle_gradients(
+        &self,
+        state: &mut TrainState,
+        gradients: &BTreeMap<String, f64>,
+        stage: Stage,
+    ) -> Result<(), TrainError> {
+        if stage != Stage::Polar || state.polarizer_angles.is_empty() {
+            return Ok(());
+        }
+        let names: Vec<String> = state.polarizer_angles.keys().cloned().collect();
+        let mut values: Vec<f64> = state.polarizer_angles.values().copied().collect();
+        let grad: Vec<f64> = names
+            .iter()
+            .map(|n| gradients.get(n).copied().unwrap_or(0.0))
+            .collect();
+        state.adam.step(
+            POLARIZER_GROUP,
+            &mut values,
+            &grad,
+            self.learning_rates.polarizer,
+        )?;
+        for (name, v) in names.into_iter().zip(values) {
+            state
+                .polarizer_angles
+                .insert(name, v.rem_euclid(std::f64::consts::PI));
+        }
+        Ok(())
+    }
+
+    /// Applies the light's gradient summed since the last update: one Adam step with the mean
+    /// gradient and the learning rate scaled by the number of steps it covers (the displacement
+    /// K single steps would make), then prefilters the map again and hands it to the engine.
+    /// Both the transpose of the prefilter and the rebuild cost about as much as a whole step
+    /// without them, hence the batching. Returns whether there was a gradient to apply.
     fn flush_env(
         &self,
         state: &mut TrainState,
         env: &mut PreparedEnv,
         pending: &mut Pending,
+        engine: &mut Engine,
     ) -> Result<bool, TrainError> {
-        let Some((sum, count)) = pending.env.take() else {
+        let count = pending.steps;
+        let Some(sum) = engine.take_env_grad(pending)? else {
             return Ok(false);
         };
         let scale = 1.0 / f64::from(count);
@@ -490,7 +482,28 @@ impl Run<'_> {
             self.learning_rates.envmap * f64::from(count),
         )?;
         *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        engine.set_env(env)?;
         Ok(true)
+    }
+
+    /// Whether densification (clone, split, prune) is due after `it` iterations.
+    fn densify_due(&self, it: u32, stage: Stage) -> bool {
+        let iterations = self.config.iterations;
+        let from = (self.config.densify_from * f64::from(iterations)).round() as u32;
+        let until = (self.config.densify_until * f64::from(iterations)).round() as u32;
+        let interval = match stage {
+            Stage::Geometry => self.config.densify_interval,
+            _ => self.config.densify_interval_polar,
+        }
+        .max(1);
+        it > from && it <= until && it.is_multiple_of(interval)
+    }
+
+    /// Whether an opacity reset is due after `it` iterations.
+    fn reset_due(&self, it: u32) -> bool {
+        let until = (self.config.densify_until * f64::from(self.config.iterations)).round() as u32;
+        let reset = self.config.opacity_reset_interval;
+        reset > 0 && it.is_multiple_of(reset) && it <= until
     }
 
     /// Densify/prune and opacity reset on their schedules (METHOD.md §7).
@@ -501,15 +514,7 @@ impl Run<'_> {
         rng: &mut ChaCha8Rng,
     ) -> Result<(), TrainError> {
         let it = state.iteration;
-        let iterations = self.config.iterations;
-        let from = (self.config.densify_from * f64::from(iterations)).round() as u32;
-        let until = (self.config.densify_until * f64::from(iterations)).round() as u32;
-        let interval = match stage {
-            Stage::Geometry => self.config.densify_interval,
-            _ => self.config.densify_interval_polar,
-        }
-        .max(1);
-        if it > from && it <= until && it.is_multiple_of(interval) {
+        if self.densify_due(it, stage) {
             let _span = tracing::debug_span!("densify", iteration = it).entered();
             let plan = densify::plan(&state.surfels, &state.densify, &self.densify_rules);
             let final_keep = densify::apply(&mut state.surfels, &plan, rng);
@@ -518,8 +523,7 @@ impl Run<'_> {
             state.adam.retain_surfels(&final_keep)?;
             state.densify = DensifyStats::new(state.surfels.len());
         }
-        let reset = self.config.opacity_reset_interval;
-        if reset > 0 && it.is_multiple_of(reset) && it <= until {
+        if self.reset_due(it) {
             densify::reset_opacity(&mut state.surfels, 0.01);
             state.adam.reset_group("opacity");
         }

@@ -2,6 +2,11 @@
 //! the geometry stage is over), evaluate the weighted losses of METHOD.md §6, and carry their
 //! gradients back through shading and rasterization to the surfels, the environment map and the
 //! learned polarizer angles.
+//!
+//! [`StepPlan`] holds what a step computes for a view in a stage (shading, the polarizer angle,
+//! which loss terms apply) and turns per-pixel loss sums into the named terms; [`run`] is the
+//! host's step over a rasterizer [`Backend`], and the gpu backend's resident trainer
+//! (`phygap::gpu::DeviceTrainer`) follows the same plan on the device.
 
 use std::collections::BTreeMap;
 
@@ -33,6 +38,123 @@ pub struct StepResult {
     pub angles: BTreeMap<String, f64>,
     pub width: usize,
     pub height: usize,
+}
+
+/// What a step computes for one view in one stage, shared by [`run`] and the device trainer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepPlan {
+    /// PolarDR shading (every stage but plain 2DGS, where the colour is the albedo).
+    pub shaded: bool,
+    /// The polarizer angle the prediction is seen through: a view behind a polarizer in the
+    /// PolarDR stage (known, or its group's learned angle).
+    pub theta: Option<f64>,
+    /// The learned angle's group, whose gradient the step reports.
+    pub learned_angle: Option<String>,
+    /// ½ for a view behind a polarizer that is fitted as unpolarized light (I = S0 / 2 on
+    /// average over θ, before the PolarDR stage), else 1.
+    pub unpolarized_scale: f64,
+    /// The L1 on S1 and S2 applies (PolarDR stage, a view with Stokes targets).
+    pub stokes_loss: bool,
+    /// The extra L1 on Î(θ) applies (PolarDR stage, a view behind a polarizer without them).
+    pub extra_l1: bool,
+    /// Edge-aware normal smoothness applies (shaded stages, λ > 0).
+    pub normal_smooth: bool,
+    /// Depth–normal consistency applies (λ > 0).
+    pub depth_normal: bool,
+}
+
+/// Sums of each loss term over a view's pixels (and channels), before their means and weights.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LossSums {
+    /// Σ |prediction − target| over pixels and channels.
+    pub l1: f64,
+    /// Σ of the SSIM map over pixels and channels.
+    pub ssim: f64,
+    /// Σ (α − mask)².
+    pub mask: f64,
+    /// Σ |α S1 − S1*| + |α S2 − S2*| over pixels and channels.
+    pub stokes: f64,
+    /// Σ of the edge-weighted smoothed normal differences.
+    pub normal_smooth: f64,
+    /// Σ (1 − N̂ · N_d) over the pixels where both normals exist, and their number.
+    pub depth_normal: f64,
+    pub depth_normal_pixels: f64,
+}
+
+impl StepPlan {
+    pub fn new(
+        target: &ViewTarget,
+        stage: Stage,
+        angles: &BTreeMap<String, f64>,
+        weights: &LossWeights,
+    ) -> Self {
+        let polar = stage == Stage::Polar;
+        let (theta, learned_angle) = match (&target.polarizer, polar) {
+            (Some(Polarizer::Fixed(t)), true) => (Some(*t), None),
+            (Some(Polarizer::Learned(name)), true) => (
+                Some(angles.get(name).copied().unwrap_or(0.0)),
+                Some(name.clone()),
+            ),
+            _ => (None, None),
+        };
+        let polarized_view = target.polarizer.is_some();
+        let stokes_loss = polar && target.stokes.is_some();
+        StepPlan {
+            shaded: stage != Stage::Geometry,
+            theta,
+            learned_angle,
+            unpolarized_scale: if polarized_view && theta.is_none() {
+                0.5
+            } else {
+                1.0
+            },
+            stokes_loss,
+            extra_l1: polar && !stokes_loss && polarized_view,
+            normal_smooth: stage != Stage::Geometry && weights.lambda_normal_smooth > 0.0,
+            depth_normal: weights.lambda_depth_normal > 0.0,
+        }
+    }
+
+    /// The named, weighted loss terms of a step over `pixels` pixels (3 channels) from their sums.
+    pub fn losses(
+        &self,
+        sums: &LossSums,
+        weights: &LossWeights,
+        pixels: usize,
+    ) -> BTreeMap<String, f64> {
+        let elements = (3 * pixels).max(1) as f64;
+        let pixels = pixels.max(1) as f64;
+        let l1 = sums.l1 / elements;
+        let mut losses = BTreeMap::new();
+        let lambda = weights.lambda_ssim;
+        losses.insert(
+            "photometric".to_owned(),
+            (1.0 - lambda) * l1 + lambda * (1.0 - sums.ssim / elements),
+        );
+        if self.stokes_loss {
+            let value = weights.lambda_stokes * sums.stokes / elements;
+            losses.insert("stokes".to_owned(), value);
+        } else if self.extra_l1 {
+            losses.insert("stokes".to_owned(), weights.lambda_stokes * l1);
+        }
+        losses.insert("mask".to_owned(), weights.lambda_mask * sums.mask / pixels);
+        if self.normal_smooth {
+            let value = weights.lambda_normal_smooth * sums.normal_smooth / pixels;
+            losses.insert("normal_smooth".to_owned(), value);
+        }
+        if self.depth_normal {
+            let mean = if sums.depth_normal_pixels > 0.0 {
+                sums.depth_normal / sums.depth_normal_pixels
+            } else {
+                0.0
+            };
+            losses.insert(
+                "depth_normal".to_owned(),
+                weights.lambda_depth_normal * mean,
+            );
+        }
+        losses
+    }
 }
 
 /// Fixed inputs of every step.
@@ -77,25 +199,11 @@ pub fn run(
     let mut up = GBufferGrads::zeros(w, h);
     let mut losses = BTreeMap::new();
 
-    let polarized_view = target.polarizer.is_some();
-    // Before the PolarDR stage a view behind a polarizer is fitted as unpolarized light
-    // (I = S0 / 2 on average over θ); from then on with its known or learned angle.
-    let theta = match (&target.polarizer, stage) {
-        (_, Stage::Geometry | Stage::Material) => None,
-        (Some(Polarizer::Fixed(t)), Stage::Polar) => Some(*t),
-        (Some(Polarizer::Learned(name)), Stage::Polar) => {
-            Some(angles.get(name).copied().unwrap_or(0.0))
-        }
-        (None, Stage::Polar) => None,
-    };
-    let unpolarized_scale = if polarized_view && theta.is_none() {
-        0.5
-    } else {
-        1.0
-    };
+    let plan = StepPlan::new(target, stage, angles, weights);
+    let (theta, unpolarized_scale) = (plan.theta, plan.unpolarized_scale);
 
     // Shading (not in the geometry stage, where colour = albedo).
-    let shaded = if stage == Stage::Geometry {
+    let shaded = if !plan.shaded {
         None
     } else {
         let inputs = ShadingInputs::new(g, camera);
@@ -124,7 +232,7 @@ pub fn run(
 
     // Stokes loss on S1/S2 (full views) or the extra L1 on I(θ) (partial views), PolarDR stage only.
     let mut grad_s12: Option<(Vec<f64>, Vec<f64>)> = None;
-    if stage == Stage::Polar {
+    if plan.stokes_loss || plan.extra_l1 {
         if let (Some((t1, t2)), Some((_, s))) = (&target.stokes, &shaded) {
             let premul = |v: &[DVec3]| -> Vec<f64> {
                 v.iter()
@@ -136,7 +244,7 @@ pub fn run(
             losses.insert("stokes".to_owned(), weights.lambda_stokes * stokes.value);
             let scale = |v: Vec<f64>| v.into_iter().map(|x| x * weights.lambda_stokes).collect();
             grad_s12 = Some((scale(stokes.grad_s1), scale(stokes.grad_s2)));
-        } else if polarized_view {
+        } else {
             let extra = loss::l1(&pred, &target.photometric, None);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * extra.value);
             add_into(&mut grad_pred, &extra.grad, weights.lambda_stokes);
@@ -147,7 +255,7 @@ pub fn run(
     let mask = loss::mask_mse(&g.alpha, &target.mask);
     losses.insert("mask".to_owned(), weights.lambda_mask * mask.value);
     add_into(&mut up.alpha, &mask.grad, weights.lambda_mask);
-    if stage != Stage::Geometry && weights.lambda_normal_smooth > 0.0 {
+    if plan.normal_smooth {
         let smooth = loss::normal_smoothness(g.normal.as_flattened(), &target.photometric, w, h);
         losses.insert(
             "normal_smooth".to_owned(),
@@ -159,7 +267,7 @@ pub fn run(
             weights.lambda_normal_smooth,
         );
     }
-    if weights.lambda_depth_normal > 0.0 {
+    if plan.depth_normal {
         let dn = loss::depth_normal_consistency(
             g.normal.as_flattened(),
             g.depth_normal.as_flattened(),
@@ -252,8 +360,8 @@ pub fn run(
         .backend
         .backward(surfels, camera, &inputs.settings, &raster, &up)?;
     let mut angle_grads = BTreeMap::new();
-    if let Some(Polarizer::Learned(name)) = &target.polarizer {
-        angle_grads.insert(name.clone(), angle_grad);
+    if let Some(name) = plan.learned_angle {
+        angle_grads.insert(name, angle_grad);
     }
     let total = losses.values().sum();
     Ok(StepResult {

@@ -1,0 +1,854 @@
+//! The resident trainer: whole training steps on the device, with the surfels, their Adam
+//! moments, the densification statistics, every view's targets and the light kept there between
+//! steps. Per step the host writes four small uniform buffers, encodes one submission and reads
+//! back the step status (a few dozen words: the loss sums, the polarizer angle's gradient, the
+//! tile-entry count and two flags); the state comes back only when the training loop needs it on
+//! the host (densification, GridMap, evaluation, checkpoints: [`DeviceTrainer::sync`]), and the
+//! light's gradient when the environment is updated ([`DeviceTrainer::take_light_grad`]).
+//!
+//! One step ([`DeviceTrainer::step`], each stage a compute pass; the plan of
+//! [`crate::train::step::StepPlan`] decides what applies):
+//! projection (`project.wgsl`), a device scan of the tile counts (`scan.wgsl`, which also writes
+//! the indirect dispatch sizes), binning and the radix sort over all 31 depth bits and the tile
+//! bits (indirect), tile ranges, rasterization, the shader's inputs and the depth-derived normals
+//! (`train_pixels.wgsl`), PolarDR shading under the global light or GridMap (`shade*.wgsl`), the
+//! prediction, SSIM and the other loss terms with their gradients (`train_loss.wgsl`), the
+//! shader's backward pass, the depth normal's backward pass and the upstream gradient of every
+//! G-buffer, the rasterizer's and the projection's backward passes, and Adam with the
+//! densification statistics (`train_update.wgsl`).
+//!
+//! Tile entries: their buffer holds a capacity chosen from the previous steps. A step whose
+//! entries do not fit drops the excess, skips its update (the kernels read the overflow flag the
+//! scan wrote) and is rerun with a larger buffer, so no step is ever applied from a partial sort.
+//! Entries beyond the device's binding limit fail with [`GpuError::BufferTooLarge`].
+//!
+//! Precision: f32 throughout (parameters and moments included); the parity tests compare a step's
+//! losses and gradients with the host's f64 step, and short training runs with the cpu backend's.
+//! Threading: one step at a time (the trainer is `&mut`); the kernels' threading is in their files.
+
+mod buffers;
+mod kernels;
+
+use glam::DVec3;
+use tracing::info_span;
+
+use super::device::Device;
+use super::raster::{
+    varying_bits, GpuBackend, KeyBits, ParamsGpu, SortDispatch, SortInputs, ENTRY_BYTES,
+    NUM_RAW_GRAD, TILE,
+};
+use super::shade::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
+use super::GpuError;
+use crate::brdf_lut::BrdfLut;
+use crate::camera::Camera;
+use crate::densify::DensifyStats;
+use crate::envmap::{EnvGrad, PreparedEnv};
+use crate::gridmap::GridMap;
+use crate::loss::LossWeights;
+use crate::optim::{Adam, AdamConfig};
+use crate::raster::RasterSettings;
+use crate::render::SHADE_ALPHA_MIN;
+use crate::shading::ShadingError;
+use crate::surfels::Surfels;
+use crate::train::step::{LossSums, StepPlan};
+use crate::train::targets::ViewTarget;
+use buffers::{EntryBuffers, FrameBuffers, SurfelBuffers, GROUP_SLOTS, TARGET_FLOATS};
+use kernels::{
+    AdamParamsGpu, ScanParamsGpu, TrainKernels, TrainParamsGpu, STATUS_ENTRIES, STATUS_NONFINITE,
+    STATUS_OVERFLOW, STATUS_WORDS, SUM_FIRST,
+};
+
+/// Bits of the f32 centre depth the sort orders by: all but the sign, which is 0 for every
+/// surfel in front of the camera.
+const DEPTH_BITS: u32 = 31;
+/// Tile entries per surfel the first step makes room for.
+const INITIAL_ENTRIES_PER_SURFEL: u64 = 8;
+
+/// One step's inputs.
+pub struct DeviceStep<'a> {
+    /// The view's index in the targets given to [`DeviceTrainer::new`].
+    pub view: usize,
+    pub camera: &'a Camera,
+    pub plan: &'a StepPlan,
+    /// The learning rate of each surfel parameter group, in the order of `Surfels::groups`;
+    /// `None` for a group frozen in this stage.
+    pub rates: [Option<f64>; 7],
+}
+
+/// What a step brings back.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DeviceStepResult {
+    pub sums: LossSums,
+    /// dL/dθ of the view's learned polarizer angle (0 when it has none).
+    pub angle_grad: f64,
+    pub tile_entries: u64,
+    /// False when the update left a non-finite parameter (the run diverged).
+    pub finite: bool,
+}
+
+/// The global light on the device, with the gradient of the current step and the sum waiting
+/// for the next environment update.
+struct LightState {
+    host: HostLight,
+    buffers: LightBuffers,
+    step_grad: wgpu::Buffer,
+    pending: wgpu::Buffer,
+}
+
+/// Whole training steps on a [`GpuBackend`]'s device.
+pub struct DeviceTrainer<'g> {
+    gpu: &'g GpuBackend,
+    kernels: TrainKernels,
+    settings: RasterSettings,
+    weights: LossWeights,
+    adam: AdamConfig,
+    lut: &'g BrdfLut,
+    /// Per training view: its target ([`TARGET_FLOATS`] per pixel) and its image size.
+    targets: Vec<(wgpu::Buffer, u32, u32)>,
+    surfels: Option<SurfelBuffers>,
+    /// Adam's step count of each surfel group, `None` for a group without state yet.
+    group_steps: [(&'static str, Option<u64>); 7],
+    entries: Option<EntryBuffers>,
+    frame: Option<FrameBuffers>,
+    light: Option<LightState>,
+    probes: Option<ProbeBuffers>,
+    status: wgpu::Buffer,
+    dispatch: wgpu::Buffer,
+    scan_params: wgpu::Buffer,
+    adam_params: wgpu::Buffer,
+    /// The device holds steps the host's state has not seen.
+    host_stale: bool,
+}
+
+/// A view's target laid out per pixel: photometric RGB, mask, S1 and S2 RGB (zero without them).
+fn target_values(target: &ViewTarget) -> Vec<f32> {
+    let pixels = target.mask.len();
+    let mut out = Vec::with_capacity(pixels * TARGET_FLOATS as usize);
+    for p in 0..pixels {
+        let rgb = |v: &[f64]| [v[3 * p], v[3 * p + 1], v[3 * p + 2]];
+        let (s1, s2) = match &target.stokes {
+            Some((s1, s2)) => (rgb(s1), rgb(s2)),
+            None => ([0.0; 3], [0.0; 3]),
+        };
+        let photometric = rgb(&target.photometric);
+        out.extend(
+            photometric
+                .into_iter()
+                .chain([target.mask[p]])
+                .chain(s1)
+                .chain(s2)
+                .map(|v| v as f32),
+        );
+    }
+    out
+}
+
+fn v4(v: DVec3) -> [f32; 4] {
+    [v.x as f32, v.y as f32, v.z as f32, 0.0]
+}
+
+impl<'g> DeviceTrainer<'g> {
+    /// Compiles the kernels and uploads every view's target (`cameras[i]` sees `targets[i]`).
+    pub fn new(
+        gpu: &'g GpuBackend,
+        settings: RasterSettings,
+        weights: LossWeights,
+        adam: AdamConfig,
+        lut: &'g BrdfLut,
+        targets: &[ViewTarget],
+        cameras: &[Camera],
+    ) -> Result<Self, GpuError> {
+        let device = gpu.device();
+        let kernels = TrainKernels::compile(device)?;
+        let targets = targets
+            .iter()
+            .zip(cameras)
+            .map(|(t, c)| {
+                let values = target_values(t);
+                let buffer = device.storage_init("view target", bytemuck::cast_slice(&values))?;
+                Ok((buffer, c.width, c.height))
+            })
+            .collect::<Result<Vec<_>, GpuError>>()?;
+        let storage =
+            |name: &str, words: usize, extra| device.storage(name, words as u64 * 4, extra);
+        Ok(DeviceTrainer {
+            status: storage(
+                "step status",
+                STATUS_WORDS,
+                wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
+            )?,
+            dispatch: storage("indirect dispatches", 6, wgpu::BufferUsages::INDIRECT)?,
+            scan_params: device.uniform("scan params", &[0; size_of::<ScanParamsGpu>()]),
+            adam_params: device.uniform("adam params", &[0; size_of::<AdamParamsGpu>()]),
+            gpu,
+            kernels,
+            settings,
+            weights,
+            adam,
+            lut,
+            targets,
+            surfels: None,
+            group_steps: GROUP_SLOTS.map(|(name, _)| (name, None)),
+            entries: None,
+            frame: None,
+            light: None,
+            probes: None,
+            host_stale: false,
+        })
+    }
+
+    fn device(&self) -> &'g Device {
+        self.gpu.device()
+    }
+
+    /// Puts the host's surfels, their Adam moments (and step counts) and densification
+    /// statistics on the device, replacing what it held.
+    pub fn load(
+        &mut self,
+        surfels: &Surfels,
+        adam: &Adam,
+        densify: &DensifyStats,
+    ) -> Result<(), GpuError> {
+        let _span = info_span!("device_load", surfels = surfels.len()).entered();
+        let device = self.device();
+        let buffers = device.scoped("load", || {
+            SurfelBuffers::upload(device, surfels, adam, densify)
+        })?;
+        for (name, step) in &mut self.group_steps {
+            *step = adam.group(name).map(|g| g.step);
+        }
+        let wanted = (surfels.len() as u64 * INITIAL_ENTRIES_PER_SURFEL).max(1 << 16);
+        if self.entries.as_ref().is_none_or(|e| e.capacity < wanted) {
+            let capacity = wanted.min(device.binding_limit() / ENTRY_BYTES);
+            self.entries = Some(EntryBuffers::new(device, capacity)?);
+        }
+        self.surfels = Some(buffers);
+        self.host_stale = false;
+        Ok(())
+    }
+
+    /// Brings the device's surfels, Adam moments and statistics back into the host's state, if
+    /// steps ran since they were last there.
+    pub fn sync(
+        &mut self,
+        surfels: &mut Surfels,
+        adam: &mut Adam,
+        densify: &mut DensifyStats,
+    ) -> Result<(), GpuError> {
+        if !self.host_stale {
+            return Ok(());
+        }
+        let Some(buffers) = &self.surfels else {
+            return Ok(());
+        };
+        let _span = info_span!("device_sync", surfels = buffers.count).entered();
+        let device = self.device();
+        let steps = self.group_steps;
+        device.scoped("sync", || {
+            buffers.download(device, surfels, adam, &steps, densify)
+        })?;
+        self.host_stale = false;
+        Ok(())
+    }
+
+    /// Replaces the global light (the learned environment moved). The gradient waiting for the
+    /// next update is kept when the layout is the same.
+    pub fn set_light(&mut self, env: &PreparedEnv) -> Result<(), ShadingError> {
+        let host = HostLight::new(env, self.lut)?;
+        let device = self.device();
+        let light = device.scoped("light upload", || -> Result<LightState, GpuError> {
+            let buffers = host.upload(device)?;
+            let (step_grad, pending) = match self.light.take() {
+                Some(old) if old.host.same_layout(&host) => (old.step_grad, old.pending),
+                _ => {
+                    let bytes = host.gradient_bytes();
+                    let usage = wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST;
+                    (
+                        device.storage("light gradient (step)", bytes, usage)?,
+                        device.storage("light gradient", bytes, usage)?,
+                    )
+                }
+            };
+            Ok(LightState {
+                host,
+                buffers,
+                step_grad,
+                pending,
+            })
+        })?;
+        self.light = Some(light);
+        Ok(())
+    }
+
+    /// Lights the following steps with GridMap's probes (over the global light of
+    /// [`Self::set_light`]), or with the global light alone.
+    pub fn set_gridmap(&mut self, grid: Option<&GridMap>) -> Result<(), ShadingError> {
+        let device = self.device();
+        self.probes = match grid {
+            None => None,
+            Some(grid) => {
+                let host = HostProbes::new(grid)?;
+                Some(device.scoped("GridMap upload", || host.upload(device))?)
+            }
+        };
+        Ok(())
+    }
+
+    /// The light's gradient summed over the steps since the last call (zero when none shaded),
+    /// shaped like the global light's; the sum starts again from zero.
+    pub fn take_light_grad(&mut self) -> Result<EnvGrad, GpuError> {
+        let Some(light) = &self.light else {
+            return Err(GpuError::Device("no light on the device".into()));
+        };
+        let device = self.device();
+        let sums = device.scoped("light gradient", || -> Result<Vec<f32>, GpuError> {
+            let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+            let bytes = light.host.gradient_bytes();
+            let usage = wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST;
+            let copy = device.storage("light gradient (read)", bytes, usage)?;
+            encoder.copy_buffer_to_buffer(&light.pending, 0, &copy, 0, bytes);
+            encoder.clear_buffer(&light.pending, 0, None);
+            let data = device.submit_and_read(encoder, &[(&copy, bytes)])?;
+            Ok(bytemuck::pod_collect_to_vec(&data[0]))
+        })?;
+        Ok(light.host.env_grad(&sums))
+    }
+
+    /// Runs one step: forward, losses, backward and the Adam update of every unfrozen group.
+    pub fn step(&mut self, step: &DeviceStep) -> Result<DeviceStepResult, GpuError> {
+        let _span = info_span!("device_step", view = step.view).entered();
+        if self.surfels.is_none() {
+            return Err(GpuError::Device(
+                "no surfels on the device (load them first)".into(),
+            ));
+        }
+        let &(_, width, height) = self
+            .targets
+            .get(step.view)
+            .ok_or_else(|| GpuError::Device(format!("no target for view {}", step.view)))?;
+        if (step.camera.width, step.camera.height) != (width, height) {
+            return Err(GpuError::Device(format!(
+                "view {} is {}×{} but its target {width}×{height}",
+                step.view, step.camera.width, step.camera.height
+            )));
+        }
+        if step.plan.shaded && self.light.is_none() {
+            return Err(GpuError::Device(
+                "a shaded step needs a light (set_light)".into(),
+            ));
+        }
+        let device = self.device();
+        if self
+            .frame
+            .as_ref()
+            .is_none_or(|f| (f.width, f.height) != (width, height))
+        {
+            self.frame = Some(FrameBuffers::new(device, width, height)?);
+        }
+        let status = loop {
+            let status = device.scoped("training step", || self.run(step))?;
+            let total = u64::from(status[STATUS_ENTRIES]);
+            let capacity = self.entries.as_ref().map_or(0, |e| e.capacity);
+            // Room for the next steps (a view sees a similar number of entries).
+            if total > capacity * 9 / 10 {
+                let limit = device.binding_limit() / ENTRY_BYTES;
+                if total > limit {
+                    return Err(device.too_large("tile entries", total * ENTRY_BYTES));
+                }
+                let grown = (total + total / 4 + 1024).min(limit);
+                tracing::debug!(
+                    entries = total,
+                    capacity = grown,
+                    "growing the tile entries"
+                );
+                self.entries = Some(EntryBuffers::new(device, grown)?);
+            }
+            if status[STATUS_OVERFLOW] == 0 {
+                break status;
+            }
+        };
+        for ((_, steps), rate) in self.group_steps.iter_mut().zip(step.rates) {
+            if rate.is_some() {
+                *steps = Some(steps.unwrap_or(0) + 1);
+            }
+        }
+        self.host_stale = true;
+        let sum = |slot: usize| f64::from(f32::from_bits(status[SUM_FIRST + slot]));
+        Ok(DeviceStepResult {
+            sums: LossSums {
+                l1: sum(0),
+                ssim: sum(1),
+                mask: sum(2),
+                stokes: sum(3),
+                normal_smooth: sum(4),
+                depth_normal: sum(5),
+                depth_normal_pixels: sum(6),
+            },
+            angle_grad: sum(7),
+            tile_entries: u64::from(status[STATUS_ENTRIES]),
+            finite: status[STATUS_NONFINITE] == 0,
+        })
+    }
+
+    /// The step's uniform parameters.
+    fn write_params(&self, step: &DeviceStep, frame: &FrameBuffers, surfels: u32) {
+        let queue = self.device().queue();
+        let camera = step.camera;
+        let plan = step.plan;
+        let w = &self.weights;
+        let raster = ParamsGpu::whole_image(camera, &self.settings, surfels);
+        queue.write_buffer(&frame.raster_params, 0, bytemuck::bytes_of(&raster));
+        let r = camera.rotation_opencv();
+        let (cos2, sin2) = plan
+            .theta
+            .map_or((1.0, 0.0), |t| ((2.0 * t).cos(), (2.0 * t).sin()));
+        let train = TrainParamsGpu {
+            dims: [
+                frame.width,
+                frame.height,
+                frame.pixels as u32,
+                frame.groups(),
+            ],
+            mode: [
+                u32::from(plan.shaded),
+                u32::from(plan.stokes_loss),
+                u32::from(plan.theta.is_some()),
+                0,
+            ],
+            theta: [
+                cos2 as f32,
+                sin2 as f32,
+                plan.unpolarized_scale as f32,
+                if plan.extra_l1 {
+                    w.lambda_stokes as f32
+                } else {
+                    0.0
+                },
+            ],
+            weights: [
+                w.lambda_ssim as f32,
+                if plan.stokes_loss {
+                    w.lambda_stokes as f32
+                } else {
+                    0.0
+                },
+                w.lambda_mask as f32,
+                if plan.normal_smooth {
+                    w.lambda_normal_smooth as f32
+                } else {
+                    0.0
+                },
+            ],
+            weights2: [
+                if plan.depth_normal {
+                    w.lambda_depth_normal as f32
+                } else {
+                    0.0
+                },
+                self.settings.normalize_alpha_min as f32,
+                SHADE_ALPHA_MIN as f32,
+                0.0,
+            ],
+            rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
+            origin: v4(camera.origin()),
+            intr: [
+                camera.fx as f32,
+                camera.fy as f32,
+                camera.cx as f32,
+                camera.cy as f32,
+            ],
+        };
+        queue.write_buffer(&frame.train_params, 0, bytemuck::bytes_of(&train));
+        if let Some(light) = &self.light {
+            let shade = light
+                .host
+                .params(camera, 0, frame.pixels as usize, self.probes.as_ref());
+            queue.write_buffer(&frame.shade_params, 0, bytemuck::bytes_of(&shade));
+        }
+        let capacity = self.entries.as_ref().map_or(0, |e| e.capacity);
+        let scan = ScanParamsGpu {
+            n: surfels,
+            capacity: capacity.min(u64::from(u32::MAX)) as u32,
+            max_groups: self
+                .device()
+                .wgpu()
+                .limits()
+                .max_compute_workgroups_per_dimension,
+            unused: 0,
+        };
+        queue.write_buffer(&self.scan_params, 0, bytemuck::bytes_of(&scan));
+        let mut adam = AdamParamsGpu {
+            counts: [surfels, 0, 0, 0],
+            betas: [
+                self.adam.beta1 as f32,
+                self.adam.beta2 as f32,
+                self.adam.eps as f32,
+                (0.5 * f64::from(frame.width.max(frame.height))) as f32,
+            ],
+            ..AdamParamsGpu::default()
+        };
+        for ((&(_, slots), rate), &(_, steps)) in
+            GROUP_SLOTS.iter().zip(step.rates).zip(&self.group_steps)
+        {
+            let Some(lr) = rate else {
+                continue;
+            };
+            // The bias corrections of the step this update makes (t = steps so far + 1).
+            let t = i32::try_from(steps.unwrap_or(0) + 1).unwrap_or(i32::MAX);
+            let bias1 = 1.0 / (1.0 - self.adam.beta1.powi(t));
+            let bias2 = 1.0 / (1.0 - self.adam.beta2.powi(t));
+            for &slot in slots {
+                adam.lr[slot] = lr as f32;
+                adam.bias1[slot] = bias1 as f32;
+                adam.bias2[slot] = bias2 as f32;
+                adam.trained[slot] = 1;
+            }
+        }
+        queue.write_buffer(&self.adam_params, 0, bytemuck::bytes_of(&adam));
+    }
+
+    /// Encodes, submits and reads back one attempt at a step: the step status.
+    fn run(&self, step: &DeviceStep) -> Result<Vec<u32>, GpuError> {
+        let device = self.device();
+        let (Some(s), Some(e), Some(f)) = (&self.surfels, &self.entries, &self.frame) else {
+            return Err(GpuError::Device("the trainer's buffers are missing".into()));
+        };
+        let raster = self.gpu.raster();
+        let k = &self.kernels;
+        let n = s.count as u64;
+        self.write_params(step, f, s.count as u32);
+        let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+        encoder.clear_buffer(&self.status, 0, None);
+        encoder.clear_buffer(&s.acc, 0, None);
+        encoder.clear_buffer(&f.ranges, 0, None);
+        encoder.clear_buffer(&f.stokes, 0, None);
+        encoder.clear_buffer(&f.shade_grads, 0, None);
+        let target = &self.targets[step.view].0;
+        encoder.copy_buffer_to_buffer(target, 0, &f.target, 0, f.pixels * TARGET_FLOATS * 4);
+        let bind = |pipeline: &wgpu::ComputePipeline, buffers: &[(u32, &wgpu::Buffer)]| {
+            device.bind(pipeline, buffers)
+        };
+        let per_pixel = |encoder: &mut wgpu::CommandEncoder,
+                         label: &'static str,
+                         pipeline: &wgpu::ComputePipeline,
+                         buffers: &[(u32, &wgpu::Buffer)]| {
+            let mut pass = device.begin_pass(encoder, label);
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(0, &bind(pipeline, buffers), &[]);
+            pass.dispatch_workgroups(f.grid.0, f.grid.1, 1);
+        };
+        let tiles = |encoder: &mut wgpu::CommandEncoder,
+                     label: &'static str,
+                     pipeline: &wgpu::ComputePipeline,
+                     buffers: &[(u32, &wgpu::Buffer)]| {
+            let mut pass = device.begin_pass(encoder, label);
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(0, &bind(pipeline, buffers), &[]);
+            pass.dispatch_workgroups(f.width.div_ceil(TILE), f.height.div_ceil(TILE), 1);
+        };
+
+        // Projection, binning and sort.
+        let rp = &f.raster_params;
+        let group = bind(
+            &raster.project,
+            &[(0, rp), (1, &s.raw), (2, &s.proj), (3, &s.tile_counts)],
+        );
+        device.dispatch_1d(&mut encoder, "project", &raster.project, &group, n)?;
+        let blocks = n.div_ceil(kernels::SCAN_BLOCK);
+        let (bx, by) = device.workgroup_grid(blocks.max(1))?;
+        {
+            let sp = &self.scan_params;
+            let blocks_group = bind(
+                &k.scan_blocks,
+                &[
+                    (0, sp),
+                    (1, &s.tile_counts),
+                    (2, &s.offsets),
+                    (3, &s.block_sums),
+                ],
+            );
+            let sums_group = bind(
+                &k.scan_sums,
+                &[
+                    (0, sp),
+                    (3, &s.block_sums),
+                    (4, &self.status),
+                    (5, &self.dispatch),
+                ],
+            );
+            let add_group = bind(&k.scan_add, &[(0, sp), (2, &s.offsets), (3, &s.block_sums)]);
+            let mut pass = device.begin_pass(&mut encoder, "scan");
+            pass.set_pipeline(&k.scan_blocks);
+            pass.set_bind_group(0, &blocks_group, &[]);
+            pass.dispatch_workgroups(bx, by, 1);
+            pass.set_pipeline(&k.scan_sums);
+            pass.set_bind_group(0, &sums_group, &[]);
+            pass.dispatch_workgroups(1, 1, 1);
+            pass.set_pipeline(&k.scan_add);
+            pass.set_bind_group(0, &add_group, &[]);
+            pass.dispatch_workgroups(bx, by, 1);
+        }
+        let group = bind(
+            &raster.emit,
+            &[(0, rp), (1, &s.proj), (2, &s.offsets), (3, &e.entries[0])],
+        );
+        device.dispatch_1d(&mut encoder, "emit", &raster.emit, &group, n)?;
+        let tile_count = f.width.div_ceil(TILE) * f.height.div_ceil(TILE);
+        let sorted = self.gpu.encode_sort(
+            &mut encoder,
+            e.entries.clone(),
+            &SortInputs {
+                hist: &e.hist,
+                count: &self.status,
+                bits: KeyBits {
+                    depth: DEPTH_BITS,
+                    tile: varying_bits(0, tile_count.max(1) - 1),
+                },
+                dispatch: SortDispatch::Indirect {
+                    args: &self.dispatch,
+                    offset: 0,
+                },
+            },
+        )?;
+        {
+            let group = bind(
+                &raster.tile_ranges,
+                &[(3, &sorted), (4, &f.ranges), (5, &self.status)],
+            );
+            let mut pass = device.begin_pass(&mut encoder, "tile_ranges");
+            pass.set_pipeline(&raster.tile_ranges);
+            pass.set_bind_group(0, &group, &[]);
+            pass.dispatch_workgroups_indirect(&self.dispatch, 12);
+        }
+        tiles(
+            &mut encoder,
+            "rasterize",
+            &raster.rasterize,
+            &[
+                (0, rp),
+                (1, &sorted),
+                (2, &f.ranges),
+                (3, &s.proj),
+                (4, &f.gbuf),
+                (5, &f.final_t),
+                (6, &f.contrib),
+                (7, &f.evals),
+            ],
+        );
+
+        // G-buffers to shading and losses.
+        let tp = &f.train_params;
+        per_pixel(
+            &mut encoder,
+            "prepare_pixels",
+            &k.prepare_pixels,
+            &[
+                (0, tp),
+                (1, &f.gbuf),
+                (2, &f.shade_in),
+                (3, &f.active),
+                (4, &f.depth_normal),
+            ],
+        );
+        let shading = match (&self.light, step.plan.shaded) {
+            (Some(light), true) => {
+                let kernels = if self.probes.is_some() {
+                    &self.gpu.shading().gridmap
+                } else {
+                    &self.gpu.shading().global
+                };
+                let mut buffers = vec![
+                    (0, &f.shade_params),
+                    (3, &f.shade_in),
+                    (4, &f.active),
+                    (5, &f.stokes),
+                ];
+                buffers.extend(light.buffers.bindings());
+                buffers.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
+                per_pixel(&mut encoder, "shade", &kernels.forward, &buffers);
+                Some((light, kernels))
+            }
+            _ => None,
+        };
+        per_pixel(
+            &mut encoder,
+            "compose",
+            &k.compose,
+            &[(0, tp), (1, &f.gbuf), (2, &f.stokes), (4, &f.pred)],
+        );
+        per_pixel(
+            &mut encoder,
+            "ssim_moments_h",
+            &k.ssim_moments_h,
+            &[(0, tp), (3, &f.target), (4, &f.pred), (5, &f.blur_a)],
+        );
+        per_pixel(
+            &mut encoder,
+            "ssim_moments_v",
+            &k.ssim_moments_v,
+            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b), (7, &f.partials)],
+        );
+        per_pixel(
+            &mut encoder,
+            "ssim_adjoint_h",
+            &k.ssim_adjoint_h,
+            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b)],
+        );
+        per_pixel(
+            &mut encoder,
+            "loss_chain",
+            &k.loss_chain,
+            &[
+                (0, tp),
+                (1, &f.gbuf),
+                (2, &f.stokes),
+                (3, &f.target),
+                (4, &f.pred),
+                (5, &f.blur_a),
+                (7, &f.partials),
+                (8, &f.d_stokes),
+                (9, &f.up_partial),
+                (10, &f.dn_grad),
+                (12, &f.depth_normal),
+            ],
+        );
+        {
+            let group = bind(
+                &k.reduce_losses,
+                &[(0, tp), (7, &f.partials), (11, &self.status)],
+            );
+            let mut pass = device.begin_pass(&mut encoder, "reduce_losses");
+            pass.set_pipeline(&k.reduce_losses);
+            pass.set_bind_group(0, &group, &[]);
+            pass.dispatch_workgroups(1, 1, 1);
+        }
+
+        // Backward.
+        if let Some((light, kernels)) = shading {
+            encoder.clear_buffer(&light.step_grad, 0, None);
+            let mut buffers = vec![
+                (0, &f.shade_params),
+                (3, &f.shade_in),
+                (4, &f.active),
+                (5, &f.d_stokes),
+                (6, &f.shade_grads),
+                (8, &light.step_grad),
+            ];
+            buffers.extend(light.buffers.bindings());
+            buffers.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
+            per_pixel(&mut encoder, "shade_backward", &kernels.backward, &buffers);
+        }
+        per_pixel(
+            &mut encoder,
+            "depth_normal_backward",
+            &k.depth_normal_backward,
+            &[
+                (0, tp),
+                (1, &f.gbuf),
+                (5, &f.dn_grad),
+                (6, &self.status),
+                (7, &f.gdxy),
+            ],
+        );
+        per_pixel(
+            &mut encoder,
+            "assemble_upstream",
+            &k.assemble_upstream,
+            &[
+                (0, tp),
+                (3, &f.active),
+                (5, &f.dn_grad),
+                (6, &self.status),
+                (7, &f.gdxy),
+                (8, &f.up_partial),
+                (9, &f.shade_grads),
+                (10, &f.upstream),
+            ],
+        );
+        tiles(
+            &mut encoder,
+            "rasterize_backward",
+            &raster.rasterize_backward,
+            &[
+                (0, rp),
+                (1, &sorted),
+                (2, &f.ranges),
+                (3, &s.proj),
+                (4, &f.gbuf),
+                (5, &f.upstream),
+                (6, &f.final_t),
+                (7, &f.contrib),
+                (8, &s.acc),
+            ],
+        );
+        let group = bind(
+            &raster.project_backward,
+            &[
+                (0, rp),
+                (1, &s.raw),
+                (2, &s.proj),
+                (3, &s.acc),
+                (4, &s.raw_grad),
+            ],
+        );
+        device.dispatch_1d(
+            &mut encoder,
+            "project_backward",
+            &raster.project_backward,
+            &group,
+            n,
+        )?;
+
+        // Update.
+        let group = bind(
+            &k.adam,
+            &[
+                (0, &self.adam_params),
+                (1, &s.raw),
+                (2, &s.moment1),
+                (3, &s.moment2),
+                (4, &s.raw_grad),
+                (5, &s.grad_sum),
+                (6, &s.seen),
+                (7, &self.status),
+            ],
+        );
+        device.dispatch_1d(&mut encoder, "adam", &k.adam, &group, n)?;
+        if let Some((light, _)) = shading {
+            let group = bind(
+                &k.accumulate_light,
+                &[
+                    (7, &self.status),
+                    (8, &light.step_grad),
+                    (9, &light.pending),
+                ],
+            );
+            let values = light.host.gradient_bytes() / 4;
+            device.dispatch_1d(
+                &mut encoder,
+                "accumulate_light",
+                &k.accumulate_light,
+                &group,
+                values,
+            )?;
+        }
+        let data = device.submit_and_read(encoder, &[(&self.status, STATUS_WORDS as u64 * 4)])?;
+        Ok(bytemuck::pod_collect_to_vec(&data[0]))
+    }
+
+    /// The raw gradients of the last step (16 per surfel, project_backward.wgsl's layout), for
+    /// the parity tests.
+    #[doc(hidden)]
+    pub fn last_raw_gradients(&self) -> Result<Vec<f32>, GpuError> {
+        let Some(s) = &self.surfels else {
+            return Ok(Vec::new());
+        };
+        let device = self.device();
+        let bytes = s.count as u64 * NUM_RAW_GRAD as u64 * 4;
+        let encoder = device.wgpu().create_command_encoder(&Default::default());
+        let data = device.scoped("read gradients", || {
+            device.submit_and_read(encoder, &[(&s.raw_grad, bytes)])
+        })?;
+        Ok(bytemuck::pod_collect_to_vec(&data[0]))
+    }
+}

@@ -1,0 +1,217 @@
+//! Where a run's steps execute. [`Engine::Host`]: on the host through the rasterizer backend
+//! ([`step::run`]), with Adam and the densification statistics applied to the state in host
+//! memory (the cpu backend; the gpu backend's per-call kernels). [`Engine::Device`]: wholly on
+//! the gpu backend's device ([`DeviceTrainer`]), the surfels, their Adam moments and the
+//! statistics resident there between the points where the loop needs them on the host
+//! (densification and opacity resets, GridMap rebuilds, polarizer-angle estimates, evaluations,
+//! checkpoints: [`Engine::sync`], then [`Engine::load`] after the host changed them).
+//!
+//! Either way the loop keeps the environment map and the polarizer angles on the host: the
+//! light's gradient is summed per step (on the host in [`Pending`], or on the device) and applied
+//! every `envmap_prefilter_interval` steps; the angles' gradients come back with every step.
+
+use std::collections::BTreeMap;
+
+use super::state::TrainState;
+use super::step::{self, StepInputs, StepPlan};
+use super::{Run, TrainError};
+use crate::envmap::{EnvGrad, LightProbe, PreparedEnv};
+use crate::events::Stage;
+use crate::gpu::{DeviceStep, DeviceTrainer};
+use crate::gridmap::GridMap;
+use crate::loss::LossWeights;
+use crate::optim::AdamConfig;
+
+/// The light's gradient waiting for the next environment update.
+#[derive(Default)]
+pub(super) struct Pending {
+    /// Shaded steps since the last update.
+    pub(super) steps: u32,
+    /// Their summed gradient, where the host holds it ([`Engine::Host`]).
+    pub(super) sum: Option<EnvGrad>,
+}
+
+/// What the loop needs from a step.
+pub(super) struct StepOutcome {
+    /// Named loss terms (weighted) and their sum.
+    pub(super) losses: BTreeMap<String, f64>,
+    pub(super) total: f64,
+    /// Gradient of each learned polarizer angle the view is behind.
+    pub(super) angles: BTreeMap<String, f64>,
+    /// The step produced a light gradient (a shaded stage).
+    pub(super) shaded: bool,
+    /// The device's update left every parameter finite (the host checks its own state).
+    pub(super) finite: bool,
+}
+
+pub(super) enum Engine<'r> {
+    Host,
+    Device(Box<DeviceTrainer<'r>>),
+}
+
+impl<'r> Engine<'r> {
+    /// The device engine where the run's backend is the gpu backend, else the host engine.
+    pub(super) fn new(run: &'r Run) -> Result<Self, TrainError> {
+        let Some(gpu) = run.backend.as_gpu() else {
+            return Ok(Engine::Host);
+        };
+        let cameras: Vec<_> = run
+            .targets
+            .iter()
+            .map(|t| run.capture.views[t.view].camera)
+            .collect();
+        let trainer = DeviceTrainer::new(
+            gpu,
+            run.settings,
+            LossWeights::from(run.config),
+            AdamConfig::default(),
+            run.lut,
+            &run.targets,
+            &cameras,
+        )?;
+        Ok(Engine::Device(Box::new(trainer)))
+    }
+
+    /// How the steps run, for the start event.
+    pub(super) fn describe(&self) -> &'static str {
+        match self {
+            Engine::Host => "steps on the host",
+            Engine::Device(_) => "whole steps on the device",
+        }
+    }
+
+    /// Puts the host's state on the device (nothing to do for the host engine).
+    pub(super) fn load(&mut self, state: &TrainState) -> Result<(), TrainError> {
+        if let Engine::Device(trainer) = self {
+            trainer.load(&state.surfels, &state.adam, &state.densify)?;
+        }
+        Ok(())
+    }
+
+    /// Brings the device's state back to the host (nothing to do for the host engine).
+    pub(super) fn sync(&mut self, state: &mut TrainState) -> Result<(), TrainError> {
+        if let Engine::Device(trainer) = self {
+            trainer.sync(&mut state.surfels, &mut state.adam, &mut state.densify)?;
+        }
+        Ok(())
+    }
+
+    /// The global light of the following steps.
+    pub(super) fn set_env(&mut self, env: &PreparedEnv) -> Result<(), TrainError> {
+        if let Engine::Device(trainer) = self {
+            trainer.set_light(env)?;
+        }
+        Ok(())
+    }
+
+    /// GridMap's probes over the global light, or none.
+    pub(super) fn set_gridmap(&mut self, grid: Option<&GridMap>) -> Result<(), TrainError> {
+        if let Engine::Device(trainer) = self {
+            trainer.set_gridmap(grid)?;
+        }
+        Ok(())
+    }
+
+    /// Takes the light's gradient summed since the last update.
+    pub(super) fn take_env_grad(
+        &mut self,
+        pending: &mut Pending,
+    ) -> Result<Option<EnvGrad>, TrainError> {
+        if pending.steps == 0 {
+            return Ok(None);
+        }
+        pending.steps = 0;
+        Ok(match self {
+            Engine::Host => pending.sum.take(),
+            Engine::Device(trainer) => Some(trainer.take_light_grad()?),
+        })
+    }
+
+    /// One step on `run.targets[target]`: forward, losses, backward, the surfels' Adam update and
+    /// the densification statistics; the light's gradient goes to `pending`.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn step(
+        &mut self,
+        run: &Run,
+        state: &mut TrainState,
+        light: &dyn LightProbe,
+        target: usize,
+        stage: Stage,
+        pending: &mut Pending,
+    ) -> Result<StepOutcome, TrainError> {
+        let it = state.iteration;
+        let view = &run.targets[target];
+        let camera = &run.capture.views[view.view].camera;
+        let weights = LossWeights::from(run.config);
+        let rates = run.surfel_rates(stage, it);
+        let outcome = match self {
+            Engine::Host => {
+                let inputs = StepInputs {
+                    backend: run.backend.as_ref(),
+                    settings: run.settings,
+                    lut: run.lut,
+                    weights,
+                };
+                let result = step::run(
+                    &inputs,
+                    &state.surfels,
+                    light,
+                    &state.polarizer_angles,
+                    camera,
+                    view,
+                    stage,
+                )?;
+                let grads = result.surfels.groups();
+                for (((name, params), (_, grad)), lr) in
+                    state.surfels.groups_mut().into_iter().zip(grads).zip(rates)
+                {
+                    if let Some(lr) = lr {
+                        state.adam.step(name, params, grad, lr)?;
+                    }
+                }
+                let shaded = result.env.is_some();
+                if let Some(env_grad) = result.env {
+                    match &mut pending.sum {
+                        Some(sum) => sum.add(&env_grad),
+                        None => pending.sum = Some(env_grad),
+                    }
+                }
+                state
+                    .densify
+                    .add_view(&result.mean2d_grad_norm, result.width, result.height);
+                StepOutcome {
+                    losses: result.losses,
+                    total: result.total,
+                    angles: result.angles,
+                    shaded,
+                    finite: true,
+                }
+            }
+            Engine::Device(trainer) => {
+                let plan = StepPlan::new(view, stage, &state.polarizer_angles, &weights);
+                let result = trainer.step(&DeviceStep {
+                    view: target,
+                    camera,
+                    plan: &plan,
+                    rates,
+                })?;
+                let losses = plan.losses(&result.sums, &weights, camera.num_pixels());
+                let mut angles = BTreeMap::new();
+                if let Some(name) = &plan.learned_angle {
+                    angles.insert(name.clone(), result.angle_grad);
+                }
+                StepOutcome {
+                    total: losses.values().sum(),
+                    losses,
+                    angles,
+                    shaded: plan.shaded,
+                    finite: result.finite,
+                }
+            }
+        };
+        if outcome.shaded {
+            pending.steps += 1;
+        }
+        Ok(outcome)
+    }
+}

@@ -1,0 +1,457 @@
+//! Parity of the gpu backend's resident trainer (`DeviceTrainer`: whole steps on the device) with
+//! the host's f64 step (`train::step::run` on the cpu backend): the named loss terms, every raw
+//! gradient group, the screen-space gradient of densification, the light's gradient and the
+//! polarizer angle's, for each stage and each kind of view (full Stokes, behind a learned
+//! polarizer, plain RGB), under the global light and under GridMap; and the Adam update and the
+//! densification statistics it applies. Skips like tests/gpu_parity.rs where no adapter exists.
+
+use std::collections::BTreeMap;
+
+use glam::DVec3;
+use phygap::brdf_lut::BrdfLut;
+use phygap::camera::Camera;
+use phygap::config::TrainConfig;
+use phygap::densify::DensifyStats;
+use phygap::envmap::{EnvGrad, LightProbe, PreparedEnv};
+use phygap::events::Stage;
+use phygap::gpu::{DeviceStep, DeviceTrainer, GpuBackend, GpuOptions};
+use phygap::loss::LossWeights;
+use phygap::optim::{Adam, AdamConfig};
+use phygap::raster::cpu::CpuBackend;
+use phygap::raster::RasterSettings;
+use phygap::surfels::Surfels;
+use phygap::train::step::{self, StepInputs, StepPlan};
+use phygap::train::targets::{Polarizer, ViewTarget};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+mod common;
+use common::{gpu, random_env, shell};
+
+/// A target of `camera`'s size: the photometric image and S1/S2 smooth functions of the pixel
+/// (so SSIM sees structure), the mask the disc the shell covers.
+fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget {
+    let (w, h) = (camera.width as usize, camera.height as usize);
+    let phase: f64 = rng.random_range(0.0..6.0);
+    let mut photometric = Vec::with_capacity(w * h * 3);
+    let mut s1 = Vec::with_capacity(w * h * 3);
+    let mut s2 = Vec::with_capacity(w * h * 3);
+    let mut mask = Vec::with_capacity(w * h);
+    for p in 0..w * h {
+        let (x, y) = ((p % w) as f64 / w as f64, (p / w) as f64 / h as f64);
+        let r2 = (x - 0.5).powi(2) + (y - 0.5).powi(2);
+        let inside = f64::from(r2 < 0.12);
+        mask.push(inside);
+        for c in 0..3 {
+            let v = 0.5 + 0.4 * (7.0 * x + 5.0 * y + phase + c as f64).sin();
+            photometric.push(inside * v);
+            s1.push(inside * 0.1 * (9.0 * y + c as f64).cos());
+            s2.push(inside * 0.1 * (8.0 * x - c as f64).sin());
+        }
+    }
+    let (stokes, polarizer) = match kind {
+        "full" => (Some((s1, s2)), None),
+        "partial" => (None, Some(Polarizer::Learned("cam0".into()))),
+        _ => (None, None),
+    };
+    ViewTarget {
+        view: 0,
+        photometric,
+        stokes,
+        polarizer,
+        mask,
+    }
+}
+
+/// `|a − b| ≤ tolerance (|b| + floor · max |b|)` over two buffers; returns the worst ratio.
+fn assert_close(a: &[f64], b: &[f64], tolerance: f64, floor: f64, what: &str) -> f64 {
+    assert_eq!(a.len(), b.len(), "{what}: lengths");
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let (mut worst, mut at) = (0.0, 0);
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        let e = (x - y).abs() / (y.abs() + floor * scale + 1e-30);
+        if e > worst {
+            (worst, at) = (e, i);
+        }
+    }
+    assert!(
+        worst <= tolerance,
+        "{what}: error {worst:.2e} at {at} (gpu {}, cpu {}, scale {scale:.3e})",
+        a[at],
+        b[at]
+    );
+    worst
+}
+
+/// ‖a − b‖ / ‖b‖ (0 when both vanish).
+fn relative_l2_of(a: &[f64], b: &[f64]) -> f64 {
+    let diff: f64 = a.iter().zip(b).map(|(x, y)| (x - y).powi(2)).sum();
+    let norm: f64 = b.iter().map(|y| y * y).sum();
+    if norm == 0.0 {
+        diff.sqrt()
+    } else {
+        (diff / norm).sqrt()
+    }
+}
+
+/// [`relative_l2_of`] over every texel of two light gradients.
+fn relative_l2(a: &EnvGrad, b: &EnvGrad) -> f64 {
+    let flat = |g: &EnvGrad| -> Vec<f64> {
+        g.levels
+            .iter()
+            .chain(&g.irradiance)
+            .flatten()
+            .copied()
+            .collect()
+    };
+    relative_l2_of(&flat(a), &flat(b))
+}
+
+/// The raw gradients of project_backward's layout as the host's groups (position, scale,
+/// rotation, opacity, albedo, roughness, IoR) and the screen-space norm.
+fn device_groups(raw: &[f32]) -> (Vec<Vec<f64>>, Vec<f64>) {
+    let slots: [&[usize]; 7] = [
+        &[0, 1, 2],
+        &[3, 4],
+        &[5, 6, 7, 8],
+        &[9],
+        &[10, 11, 12],
+        &[13],
+        &[14],
+    ];
+    let groups = slots
+        .iter()
+        .map(|s| {
+            raw.chunks_exact(16)
+                .flat_map(|g| s.iter().map(|&k| f64::from(g[k])))
+                .collect()
+        })
+        .collect();
+    (
+        groups,
+        raw.chunks_exact(16).map(|g| f64::from(g[15])).collect(),
+    )
+}
+
+struct Scene {
+    surfels: Surfels,
+    camera: Camera,
+    env: PreparedEnv,
+    lut: BrdfLut,
+    weights: LossWeights,
+}
+
+/// One step on both sides; asserts that every quantity agrees and returns the worst element's
+/// relative gradient error. Tolerances: loss terms 1e-4 relative (f32 sums over the pixels);
+/// each raw gradient group 1e-3 in relative L2 norm and 5e-2 per element above a floor of 1% of
+/// the group's largest value. The per-element bound is looser than the rasterizer's alone
+/// (tests/gpu_parity.rs, 1e-3 on random upstream gradients) because a shaded step's positions and
+/// opacities receive sums over pixels of the shader's normal gradients that largely cancel: the
+/// f32 shader's ~1e-4 relative error per pixel (tests/gpu_shading.rs) becomes up to a few 1e-4
+/// of the group's norm (measured 2–4e-4 in the shaded stages, 1e-5 in plain 2DGS).
+fn compare(
+    gpu: &GpuBackend,
+    scene: &Scene,
+    target: &ViewTarget,
+    stage: Stage,
+    light: &dyn LightProbe,
+    grid: Option<&phygap::gridmap::GridMap>,
+) -> f64 {
+    let settings = RasterSettings::default();
+    let angles: BTreeMap<String, f64> = [("cam0".to_owned(), 0.6)].into();
+    let inputs = StepInputs {
+        backend: &CpuBackend,
+        settings,
+        lut: &scene.lut,
+        weights: scene.weights,
+    };
+    let host = step::run(
+        &inputs,
+        &scene.surfels,
+        light,
+        &angles,
+        &scene.camera,
+        target,
+        stage,
+    )
+    .unwrap();
+    let mut trainer = DeviceTrainer::new(
+        gpu,
+        settings,
+        scene.weights,
+        AdamConfig::default(),
+        &scene.lut,
+        std::slice::from_ref(target),
+        &[scene.camera],
+    )
+    .unwrap();
+    let n = scene.surfels.len();
+    trainer
+        .load(
+            &scene.surfels,
+            &Adam::new(AdamConfig::default()),
+            &DensifyStats::new(n),
+        )
+        .unwrap();
+    trainer.set_light(&scene.env).unwrap();
+    trainer.set_gridmap(grid).unwrap();
+    let plan = StepPlan::new(target, stage, &angles, &scene.weights);
+    let result = trainer
+        .step(&DeviceStep {
+            view: 0,
+            camera: &scene.camera,
+            plan: &plan,
+            rates: [Some(1e-3); 7],
+        })
+        .unwrap();
+    assert!(result.finite);
+    let what = format!(
+        "{stage:?}, {:?}",
+        target
+            .polarizer
+            .as_ref()
+            .map(|_| "partial")
+            .or(target.stokes.as_ref().map(|_| "full"))
+    );
+    let losses = plan.losses(&result.sums, &scene.weights, scene.camera.num_pixels());
+    assert_eq!(
+        losses.keys().collect::<Vec<_>>(),
+        host.losses.keys().collect::<Vec<_>>(),
+        "{what}: loss terms"
+    );
+    for (name, &value) in &host.losses {
+        let e = (losses[name] - value).abs() / value.abs().max(1e-6);
+        assert!(
+            e < 1e-4,
+            "{what}: loss {name} gpu {} vs cpu {value}",
+            losses[name]
+        );
+    }
+    let raw = trainer.last_raw_gradients().unwrap();
+    let (groups, mean2d) = device_groups(&raw);
+    let mut worst = 0.0f64;
+    for ((name, cpu), gpu) in host.surfels.groups().iter().zip(&groups) {
+        let what = format!("{what}: dL/d{name}");
+        let l2 = relative_l2_of(gpu, cpu);
+        assert!(l2 < 1e-3, "{what}: relative L2 error {l2:.2e}");
+        worst = worst.max(assert_close(gpu, cpu, 5e-2, 1e-2, &what));
+    }
+    assert_close(
+        &mean2d,
+        &host.mean2d_grad_norm,
+        1e-2,
+        1e-2,
+        &format!("{what}: screen-space gradient"),
+    );
+    if let Some(env) = &host.env {
+        let light_error = relative_l2(&trainer.take_light_grad().unwrap(), env);
+        assert!(
+            light_error < 1e-3,
+            "{what}: light gradient {light_error:.2e}"
+        );
+    }
+    if let Some(&angle) = host.angles.get("cam0") {
+        let e = (result.angle_grad - angle).abs() / angle.abs().max(1e-9);
+        assert!(
+            e < 1e-2,
+            "{what}: angle gradient gpu {} vs cpu {angle}",
+            result.angle_grad
+        );
+    }
+    println!(
+        "{what}: worst gradient error {worst:.2e}, {} tile entries",
+        result.tile_entries
+    );
+    worst
+}
+
+fn scene(seed: u64) -> Scene {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let camera = Camera::look_at(
+        40,
+        36,
+        0.9,
+        DVec3::new(0.3, -3.2, 1.1),
+        DVec3::ZERO,
+        DVec3::Z,
+    );
+    Scene {
+        surfels: shell(&mut rng, 2500),
+        camera,
+        env: random_env(&mut rng, false, false),
+        lut: BrdfLut::compute(16, 64),
+        weights: LossWeights::from(&TrainConfig::default()),
+    }
+}
+
+#[test]
+fn a_device_step_matches_the_host_step() {
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let scene = scene(1);
+    let mut rng = ChaCha8Rng::seed_from_u64(2);
+    for kind in ["full", "partial", "rgb"] {
+        let target = target(&scene.camera, kind, &mut rng);
+        for stage in [Stage::Geometry, Stage::Material, Stage::Polar] {
+            compare(&gpu, &scene, &target, stage, &scene.env, None);
+        }
+    }
+}
+
+/// The PolarDR stage under GridMap: two spheres' mesh (the shell's and one beside it, which
+/// blocks part of the shell's mirror rays), the probes blended at the surface points the device
+/// back-projects from its depth.
+#[test]
+fn a_device_step_under_gridmap_matches_the_host_step() {
+    use phygap::envmap::CubeMap;
+    use phygap::gridmap::GridMap;
+    use phygap::reconstruction::prefilter_plan;
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let mut scene = scene(3);
+    let mut rng = ChaCha8Rng::seed_from_u64(4);
+    let raw = (0..CubeMap::num_values(16))
+        .map(|_| rng.random_range(-3.0..2.0))
+        .collect();
+    let cube = CubeMap::from_raw(16, raw).unwrap();
+    scene.env = PreparedEnv::new(&cube, prefilter_plan(16, false).unwrap()).unwrap();
+    scene.camera = Camera::look_at(
+        40,
+        36,
+        0.9,
+        DVec3::new(1.0, -3.0, 0.4),
+        DVec3::ZERO,
+        DVec3::Z,
+    );
+    let (mesh, _) = phygap::testing::two_spheres();
+    let grid = GridMap::build(&mesh, &scene.surfels, &cube, scene.env.clone()).unwrap();
+    for kind in ["full", "partial"] {
+        let target = target(&scene.camera, kind, &mut rng);
+        compare(&gpu, &scene, &target, Stage::Polar, &grid, Some(&grid));
+    }
+}
+
+/// After a step the device's surfels are one Adam step (t = 1) on the device's own gradients
+/// from where they started, in every trained group and in none of the frozen ones (roughness and
+/// IoR in plain 2DGS), its moments are Adam's, and the densification statistics count the
+/// surfels the view moved.
+#[test]
+fn the_update_is_adam_on_the_device_gradients() {
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let scene = scene(5);
+    let mut rng = ChaCha8Rng::seed_from_u64(6);
+    let target = target(&scene.camera, "full", &mut rng);
+    let settings = RasterSettings::default();
+    let n = scene.surfels.len();
+    let mut trainer = DeviceTrainer::new(
+        &gpu,
+        settings,
+        scene.weights,
+        AdamConfig::default(),
+        &scene.lut,
+        std::slice::from_ref(&target),
+        &[scene.camera],
+    )
+    .unwrap();
+    let adam = Adam::new(AdamConfig::default());
+    trainer
+        .load(&scene.surfels, &adam, &DensifyStats::new(n))
+        .unwrap();
+    let plan = StepPlan::new(&target, Stage::Geometry, &BTreeMap::new(), &scene.weights);
+    let rates = [
+        Some(2e-3),
+        Some(5e-3),
+        Some(1e-3),
+        Some(5e-2),
+        Some(7.5e-3),
+        None,
+        None,
+    ];
+    trainer
+        .step(&DeviceStep {
+            view: 0,
+            camera: &scene.camera,
+            plan: &plan,
+            rates,
+        })
+        .unwrap();
+    let raw = trainer.last_raw_gradients().unwrap();
+    let (grads, mean2d) = device_groups(&raw);
+    let (mut surfels, mut adam_after, mut densify) =
+        (Surfels::default(), adam.clone(), DensifyStats::default());
+    trainer
+        .sync(&mut surfels, &mut adam_after, &mut densify)
+        .unwrap();
+
+    let mut expected = scene.surfels.clone();
+    let mut reference = Adam::new(AdamConfig::default());
+    for (((name, params), grad), rate) in expected.groups_mut().into_iter().zip(&grads).zip(rates) {
+        if let Some(lr) = rate {
+            reference.step(name, params, grad, lr).unwrap();
+        }
+    }
+    for ((name, got), (_, want)) in surfels.groups().iter().zip(expected.groups()) {
+        let start = scene
+            .surfels
+            .groups()
+            .iter()
+            .find(|g| g.0 == *name)
+            .unwrap()
+            .1
+            .to_vec();
+        for ((g, w), s) in got.iter().zip(want).zip(&start) {
+            // f32 storage of the parameter, plus f32 rounding of the step.
+            assert!(
+                (g - w).abs() <= 1e-6 * (1.0 + w.abs()),
+                "{name}: {g} vs {w} (from {s})"
+            );
+        }
+        let moved = got
+            .iter()
+            .zip(&start)
+            .any(|(g, s)| g != &(*s as f32 as f64));
+        let trained = !matches!(*name, "roughness" | "ior");
+        assert_eq!(moved, trained, "{name}: moved {moved}");
+        match (adam_after.group(name), reference.group(name)) {
+            (Some(a), Some(b)) => {
+                assert_eq!(a.step, 1, "{name}");
+                assert_close(&a.exp_avg, &b.exp_avg, 1e-5, 1e-6, &format!("{name} m"));
+                // 1 − β2 = 0.001 is 1.3e-5 off in f32.
+                assert_close(
+                    &a.exp_avg_sq,
+                    &b.exp_avg_sq,
+                    3e-5,
+                    1e-6,
+                    &format!("{name} v"),
+                );
+            }
+            (None, None) => {}
+            (a, b) => panic!(
+                "{name}: device state {} vs host {}",
+                a.is_some(),
+                b.is_some()
+            ),
+        }
+    }
+    let to_ndc = 0.5 * f64::from(scene.camera.width.max(scene.camera.height));
+    let mut reference_stats = DensifyStats::new(n);
+    reference_stats.add_view(
+        &mean2d,
+        scene.camera.width as usize,
+        scene.camera.height as usize,
+    );
+    assert_eq!(densify.seen, reference_stats.seen);
+    assert!(densify.seen.iter().filter(|&&s| s > 0).count() > n / 10);
+    assert_close(
+        &densify.grad_sum,
+        &reference_stats.grad_sum,
+        1e-6,
+        1e-6,
+        "densify sums",
+    );
+    assert!(to_ndc > 1.0);
+}

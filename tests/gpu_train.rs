@@ -455,3 +455,56 @@ fn the_update_is_adam_on_the_device_gradients() {
     );
     assert!(to_ndc > 1.0);
 }
+
+/// A step whose tile entries overflow their buffer is not applied from the partial sort: it is
+/// rerun with a larger buffer and gives what a trainer with room from the start gives.
+#[test]
+fn a_step_whose_entries_overflow_is_rerun_with_room() {
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let scene = scene(7);
+    let mut rng = ChaCha8Rng::seed_from_u64(8);
+    let target = target(&scene.camera, "full", &mut rng);
+    let n = scene.surfels.len();
+    let plan = StepPlan::new(&target, Stage::Geometry, &BTreeMap::new(), &scene.weights);
+    let run = |capacity: Option<u64>| {
+        let mut trainer = DeviceTrainer::new(
+            &gpu,
+            RasterSettings::default(),
+            scene.weights,
+            AdamConfig::default(),
+            &scene.lut,
+            std::slice::from_ref(&target),
+            &[scene.camera],
+        )
+        .unwrap();
+        let adam = Adam::new(AdamConfig::default());
+        trainer.load(&scene.surfels, &adam, &DensifyStats::new(n)).unwrap();
+        if let Some(c) = capacity {
+            trainer.set_entry_capacity(c).unwrap();
+        }
+        let result = trainer
+            .step(&DeviceStep {
+                view: 0,
+                camera: &scene.camera,
+                plan: &plan,
+                rates: [Some(1e-3); 7],
+            })
+            .unwrap();
+        let (mut surfels, mut adam, mut densify) = (Surfels::default(), adam, DensifyStats::default());
+        trainer.sync(&mut surfels, &mut adam, &mut densify).unwrap();
+        (result, surfels, trainer.entry_capacity())
+    };
+    let (roomy, roomy_surfels, _) = run(None);
+    let (tight, tight_surfels, grown) = run(Some(100));
+    assert!(roomy.tile_entries > 1000, "{} entries", roomy.tile_entries);
+    assert_eq!(tight.tile_entries, roomy.tile_entries);
+    assert!(grown >= tight.tile_entries, "capacity {grown} after the rerun");
+    let loss = |r: &phygap::gpu::DeviceStepResult| plan.losses(&r.sums, &scene.weights, 1)["photometric"];
+    assert!((loss(&tight) - loss(&roomy)).abs() <= 1e-6 * loss(&roomy));
+    for ((name, a), (_, b)) in tight_surfels.groups().iter().zip(roomy_surfels.groups()) {
+        // Float atomics sum in any order: the updates agree to f32 rounding.
+        assert_close(a, b, 1e-5, 1e-3, name);
+    }
+}

@@ -836,6 +836,19 @@ impl<'g> DeviceTrainer<'g> {
         Ok(bytemuck::pod_collect_to_vec(&data[0]))
     }
 
+    /// Room for this many tile entries (the next steps grow it as they need), for the tests of
+    /// the overflow path.
+    #[doc(hidden)]
+    pub fn set_entry_capacity(&mut self, capacity: u64) -> Result<(), GpuError> {
+        self.entries = Some(EntryBuffers::new(self.device(), capacity.max(1))?);
+        Ok(())
+    }
+
+    /// The tile entries the buffer holds.
+    pub fn entry_capacity(&self) -> u64 {
+        self.entries.as_ref().map_or(0, |e| e.capacity)
+    }
+
     /// The raw gradients of the last step (16 per surfel, project_backward.wgsl's layout), for
     /// the parity tests.
     #[doc(hidden)]

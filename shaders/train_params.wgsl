@@ -24,6 +24,8 @@ struct TrainParams {
     origin: vec4<f32>,
     // fx, fy, cx, cy.
     intr: vec4<f32>,
+    // The normalized 1-D Gaussian window of SSIM (11 taps, σ = 1.5; `loss::ssim::gaussian_kernel`).
+    gauss: array<vec4<f32>, 3>,
 }
 
 @group(0) @binding(0) var<uniform> train: TrainParams;

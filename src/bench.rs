@@ -1,6 +1,7 @@
 //! Timings for `phygap bench`: the rasterizer backends on a synthetic object (surfels tangent to
 //! the unit sphere, seen from distance 4 with a 40° field of view, the framing of the shared
-//! captures), and GridMap's periodic rebuild on a trained model.
+//! captures), GridMap's periodic rebuild on a trained model, and training steps per second on a
+//! capture ([`bench_train`]: a short run of the real schedule held in one stage).
 //!
 //! Surfels sit on a Fibonacci lattice of the sphere with scale `0.6 × spacing`, so the shell is
 //! covered with overlap; both hemispheres are rasterized (surfels are two-sided), as in training.
@@ -202,6 +203,113 @@ pub fn bench_gridmap(model: &Model, repeats: usize) -> Result<GridMapTiming, Ben
     })
 }
 
+/// The stage a training benchmark holds for the whole run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BenchStage {
+    /// Plain 2DGS (no shading).
+    Geometry,
+    /// PolarDR with the Stokes loss, under GridMap when the config has it on.
+    Polar,
+}
+
+/// Steps per second of a training run held in one stage.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TrainTiming {
+    /// The backend and how the steps run (the run's start event).
+    pub backend: String,
+    pub stage: BenchStage,
+    pub width: u32,
+    pub height: u32,
+    /// Steps between the first and the last progress event, and their wall time. Everything a
+    /// real run does in between is included (densification, GridMap rebuilds, environment
+    /// updates); what comes before the end of the first timed step (kernel compilation, uploads,
+    /// the first GridMap) is `startup_seconds`.
+    pub steps: u32,
+    pub seconds: f64,
+    pub steps_per_second: f64,
+    pub startup_seconds: f64,
+    /// Surfels at the first and the last timed step.
+    pub surfels: (usize, usize),
+    /// Device time per pass over the whole run, where the backend measures it.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub passes: Vec<StageTime>,
+}
+
+/// Trains `capture` for `iterations` steps held in `stage` (the schedule's densification,
+/// GridMap and environment intervals scale with `iterations` as in any run; no evaluation or
+/// checkpoint), on `backend`, in a scratch folder, and times the steps.
+pub fn bench_train(
+    backend: &dyn Backend,
+    capture: &crate::capture::Capture,
+    config: &crate::config::TrainConfig,
+    stage: BenchStage,
+) -> Result<TrainTiming, BenchError> {
+    let _span = info_span!("bench_train", iterations = config.iterations).entered();
+    let (end, name) = match stage {
+        BenchStage::Geometry => (1.0, "geometry"),
+        BenchStage::Polar => (0.0, "polar"),
+    };
+    let config = crate::config::TrainConfig {
+        geometry_stage_end: end,
+        material_stage_end: end,
+        eval_interval: 0,
+        checkpoint_interval: 0,
+        ..config.clone()
+    };
+    let dir = std::env::temp_dir().join(format!(
+        "phygap-bench-train-{}-{name}-{}",
+        std::process::id(),
+        backend.name()
+    ));
+    let mut first: Option<(u32, f64, usize)> = None;
+    let mut last: Option<(u32, f64, usize)> = None;
+    let mut description = String::new();
+    let cancel = std::sync::atomic::AtomicBool::new(false);
+    backend.take_stage_times();
+    let outcome = crate::train::train_on(backend, capture, &dir, &config, false, &cancel, &mut |e| {
+        match e {
+            crate::events::TrainEvent::Started { backend, .. } => description = backend.clone(),
+            crate::events::TrainEvent::Step {
+                iteration,
+                elapsed_seconds,
+                num_surfels,
+                ..
+            } => {
+                let now = (*iteration, *elapsed_seconds, *num_surfels);
+                first.get_or_insert(now);
+                last = Some(now);
+            }
+            _ => {}
+        }
+    });
+    let passes = backend.take_stage_times();
+    // A scratch folder: failing to remove it loses nothing.
+    let _ = std::fs::remove_dir_all(&dir);
+    outcome?;
+    let (Some(first), Some(last)) = (first, last) else {
+        return Err(BenchError::TooShort(config.iterations));
+    };
+    let steps = last.0 - first.0;
+    if steps == 0 {
+        return Err(BenchError::TooShort(config.iterations));
+    }
+    let seconds = last.1 - first.1;
+    let camera = &capture.views[0].camera;
+    Ok(TrainTiming {
+        backend: description,
+        stage,
+        width: camera.width,
+        height: camera.height,
+        steps,
+        seconds,
+        steps_per_second: f64::from(steps) / seconds,
+        startup_seconds: first.1,
+        surfels: (first.2, last.2),
+        passes,
+    })
+}
+
 /// Why a benchmark of a trained model could not run.
 #[derive(Debug, thiserror::Error)]
 pub enum BenchError {
@@ -213,6 +321,10 @@ pub enum BenchError {
     EnvMap(#[from] EnvMapError),
     #[error(transparent)]
     GridMap(#[from] GridMapError),
+    #[error(transparent)]
+    Train(#[from] crate::train::TrainError),
+    #[error("{0} iterations give fewer than two timed steps; use more")]
+    TooShort(u32),
 }
 
 #[cfg(test)]

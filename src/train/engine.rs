@@ -147,7 +147,7 @@ impl<'r> Engine<'r> {
         let outcome = match self {
             Engine::Host => {
                 let inputs = StepInputs {
-                    backend: run.backend.as_ref(),
+                    backend: run.backend,
                     settings: run.settings,
                     lut: run.lut,
                     weights,

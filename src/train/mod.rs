@@ -163,7 +163,7 @@ struct Run<'a> {
     capture: &'a Capture,
     config: &'a TrainConfig,
     mode: Mode,
-    backend: Box<dyn Backend>,
+    backend: &'a dyn Backend,
     settings: RasterSettings,
     lut: &'static BrdfLut,
     plan: Arc<PrefilterPlan>,
@@ -179,6 +179,22 @@ struct Run<'a> {
 /// with another configuration is refused). When `cancel` becomes true the run writes a checkpoint
 /// and returns [`TrainOutcome::Interrupted`].
 pub fn train(
+    capture: &Capture,
+    model_dir: &Path,
+    config: &TrainConfig,
+    resume: bool,
+    cancel: &AtomicBool,
+    on_event: &mut dyn FnMut(&TrainEvent),
+) -> Result<TrainOutcome, TrainError> {
+    config.validate()?;
+    let backend = backend::select(config.backend)?;
+    train_on(backend.as_ref(), capture, model_dir, config, resume, cancel, on_event)
+}
+
+/// [`train`] on a backend the caller opened (`config.backend` is not consulted), so that it can
+/// read the backend's pass timings afterwards (`phygap bench train`).
+pub fn train_on(
+    backend: &dyn Backend,
     capture: &Capture,
     model_dir: &Path,
     config: &TrainConfig,
@@ -206,7 +222,6 @@ pub fn train(
             reason: "no training view has full Stokes measurements".into(),
         });
     }
-    let backend = backend::select(config.backend)?;
     let bounds = capture.object_bounds();
     let run = Run {
         capture,
@@ -558,7 +573,7 @@ impl Run<'_> {
             occlusion.mesh = meshing::mesh_from_surfels(
                 &state.surfels,
                 &cameras,
-                self.backend.as_ref(),
+                self.backend,
                 &self.settings,
                 GRIDMAP_MESH_RESOLUTION,
             )
@@ -591,7 +606,7 @@ impl Run<'_> {
             surfels: &state.surfels,
             light,
             lut: self.lut,
-            backend: self.backend.as_ref(),
+            backend: self.backend,
             settings: self.settings,
         }
     }

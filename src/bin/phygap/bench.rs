@@ -1,5 +1,5 @@
-//! `phygap bench ...`: timing of the compute backends on synthetic scenes, and of GridMap's
-//! rebuild on a trained model.
+//! `phygap bench ...`: timing of the compute backends on synthetic scenes, of GridMap's rebuild
+//! on a trained model, and of training steps on a capture.
 
 use anyhow::Result;
 use clap::{Args, Subcommand};
@@ -8,7 +8,7 @@ use phygap::backend::select_with;
 use phygap::gpu::GpuOptions;
 use std::path::PathBuf;
 
-use phygap::bench::{bench_gridmap, bench_raster};
+use phygap::bench::{bench_gridmap, bench_raster, bench_train, BenchStage};
 use phygap::config::BackendChoice;
 use phygap::model::Model;
 
@@ -24,6 +24,38 @@ enum BenchWhat {
     Raster(RasterBenchArgs),
     /// GridMap on a trained model: mesh extraction and the probes' rebuild.
     Gridmap(GridMapBenchArgs),
+    /// Training steps per second on a capture, the run held in one stage.
+    Train(TrainBenchArgs),
+}
+
+#[derive(Args)]
+struct TrainBenchArgs {
+    /// Capture folder (`transforms.json`).
+    capture: PathBuf,
+    /// `gpu` trains whole steps on the device (any Vulkan/Metal/DX12 adapter, lavapipe included).
+    #[arg(long, value_enum, default_value = "cpu")]
+    backend: BackendChoice,
+    /// Steps of the run (the schedule's intervals scale with it).
+    #[arg(long, default_value_t = 200)]
+    iterations: u32,
+    /// The stage the whole run is held in.
+    #[arg(long, value_enum, default_value = "polar")]
+    stage: StageArg,
+    /// Training settings (JSON, as `phygap train --config`); the stage boundaries, evaluation and
+    /// checkpoints are overridden.
+    #[arg(long)]
+    config: Option<PathBuf>,
+    /// Also time each compute pass on the device (gpu backend with timestamp queries).
+    #[arg(long)]
+    stages: bool,
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum StageArg {
+    Geometry,
+    Polar,
 }
 
 #[derive(Args)]
@@ -92,6 +124,25 @@ fn print_stages(rows: &[phygap::bench::BenchRow]) {
     }
 }
 
+/// Calls and mean device milliseconds of each pass of a training run.
+fn print_passes(passes: &[phygap::raster::StageTime]) {
+    if passes.is_empty() {
+        println!("no pass times: the backend does not measure them (gpu backend, adapter with timestamp queries)");
+        return;
+    }
+    let total: f64 = passes.iter().map(|p| p.total_ms).sum();
+    println!("\n{:<24} {:>8} {:>12} {:>8}", "pass", "calls", "ms per call", "share");
+    for p in passes {
+        println!(
+            "{:<24} {:>8} {:>12.3} {:>7.1}%",
+            p.name,
+            p.calls,
+            p.total_ms / p.calls.max(1) as f64,
+            100.0 * p.total_ms / total
+        );
+    }
+}
+
 pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.what {
         BenchWhat::Raster(a) => {
@@ -123,6 +174,45 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 }
                 if a.stages {
                     print_stages(&rows);
+                }
+            }
+        }
+        BenchWhat::Train(a) => {
+            let backend = select_with(
+                a.backend,
+                GpuOptions {
+                    profile: a.stages,
+                    ..GpuOptions::default()
+                },
+            )?;
+            let mut config = crate::train::read_config(a.config.as_deref())?;
+            config.iterations = a.iterations;
+            let stage = match a.stage {
+                StageArg::Geometry => BenchStage::Geometry,
+                StageArg::Polar => BenchStage::Polar,
+            };
+            let capture = phygap::capture::load(&a.capture)?;
+            let t = bench_train(backend.as_ref(), &capture, &config, stage)?;
+            if a.json {
+                println!("{}", serde_json::to_string_pretty(&t)?);
+            } else {
+                println!("backend {}", t.backend);
+                println!(
+                    "{:?} stage, {}x{}: {} steps in {:.2} s = {:.2} steps/s ({:.1} ms/step), \
+                     {} -> {} surfels; {:.2} s before the first timed step",
+                    t.stage,
+                    t.width,
+                    t.height,
+                    t.steps,
+                    t.seconds,
+                    t.steps_per_second,
+                    1e3 / t.steps_per_second,
+                    t.surfels.0,
+                    t.surfels.1,
+                    t.startup_seconds
+                );
+                if a.stages {
+                    print_passes(&t.passes);
                 }
             }
         }

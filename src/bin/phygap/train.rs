@@ -47,17 +47,22 @@ pub struct TrainArgs {
     pub resume: bool,
 }
 
+/// The defaults, overridden by the config file at `path` when given.
+pub fn read_config(path: Option<&std::path::Path>) -> Result<TrainConfig> {
+    Ok(match path {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("cannot read config {}", path.display()))?;
+            TrainConfig::from_json(&text).with_context(|| format!("{}", path.display()))?
+        }
+        None => TrainConfig::default(),
+    })
+}
+
 impl TrainArgs {
     /// Defaults, then the config file, then the flags.
     pub fn config(&self) -> Result<TrainConfig> {
-        let mut config = match &self.config {
-            Some(path) => {
-                let text = std::fs::read_to_string(path)
-                    .with_context(|| format!("cannot read config {}", path.display()))?;
-                TrainConfig::from_json(&text).with_context(|| format!("{}", path.display()))?
-            }
-            None => TrainConfig::default(),
-        };
+        let mut config = read_config(self.config.as_deref())?;
         if let Some(v) = self.iterations {
             config.iterations = v;
         }

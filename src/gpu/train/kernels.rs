@@ -93,6 +93,7 @@ pub(super) struct TrainParamsGpu {
     pub(super) rot: [[f32; 4]; 3],
     pub(super) origin: [f32; 4],
     pub(super) intr: [f32; 4],
+    pub(super) gauss: [f32; 12],
 }
 
 /// `AdamParams` of train_update.wgsl: per raw slot, its group's rate, bias corrections and

@@ -457,6 +457,11 @@ impl<'g> DeviceTrainer<'g> {
                 camera.cx as f32,
                 camera.cy as f32,
             ],
+            gauss: std::array::from_fn(|k| {
+                crate::loss::ssim::gaussian_kernel()
+                    .get(k)
+                    .map_or(0.0, |&v| v as f32)
+            }),
         };
         queue.write_buffer(&frame.train_params, 0, bytemuck::bytes_of(&train));
         if let Some(light) = &self.light {

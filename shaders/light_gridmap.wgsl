@@ -8,8 +8,8 @@
 // first front-facing hit means "occluded". Compiled after shade_common.wgsl (before the backward
 // file when differentiating); one thread per pixel as there.
 
-// Per probe `grid_counts.y` values: its RGB texels in the layout of `light` (every mip level,
-// then every irradiance map).
+// The probes' texels in the layout of `light` (every mip level, then every irradiance map),
+// texel-major: texel t of probe k at (t · anchors + k) · 3, so that a blend reads one block.
 @group(0) @binding(9) var<storage, read> probes: array<f32>;
 // Anchor positions (xyz).
 @group(0) @binding(10) var<storage, read> anchors: array<vec4<f32>>;
@@ -19,7 +19,6 @@
 // Six vectors per triangle slot: corner v0, edges e1 and e2, the corners' vertex normals.
 @group(0) @binding(12) var<storage, read> bvh_slots: array<vec4<f32>>;
 
-const MAX_ANCHORS: u32 = 56u;
 const WEIGHT_EPSILON: f32 = 1e-6;
 // Back faces stepped through before a mirror ray counts as escaping.
 const MAX_EXITS: u32 = 4u;
@@ -30,61 +29,80 @@ const T_MIN: f32 = 1e-9;
 // Finite stand-in for +∞.
 const FAR: f32 = 3.0e38;
 
-// Normalized blend weights of the anchors at x.
-fn anchor_weights(x: vec3<f32>) -> array<f32, MAX_ANCHORS> {
-    var w: array<f32, MAX_ANCHORS>;
+// The anchor weights at x: w_k = inv_total / (‖x − a_k‖² + 1e-6), computed on the fly by
+// `weight` (cheaper on every device than a per-thread array of 56).
+struct Blend {
+    x: vec3<f32>,
+    inv_total: f32,
+}
+
+fn raw_weight(x: vec3<f32>, k: u32) -> f32 {
+    let d = x - anchors[k].xyz;
+    return 1.0 / (dot(d, d) + WEIGHT_EPSILON);
+}
+
+fn anchor_blend(x: vec3<f32>) -> Blend {
     var total = 0.0;
     for (var k = 0u; k < params.grid_counts.x; k++) {
-        let d = x - anchors[k].xyz;
-        w[k] = 1.0 / (dot(d, d) + WEIGHT_EPSILON);
-        total += w[k];
+        total += raw_weight(x, k);
     }
-    for (var k = 0u; k < params.grid_counts.x; k++) {
-        w[k] /= total;
-    }
-    return w;
+    return Blend(x, 1.0 / total);
 }
 
-// Σ_k w_k · texel t of probe k.
-fn blended_texel(w: ptr<function, array<f32, MAX_ANCHORS>>, t: u32) -> vec3<f32> {
-    var sum = vec3<f32>(0.0);
-    let stride = params.grid_counts.y;
-    for (var k = 0u; k < params.grid_counts.x; k++) {
-        let o = k * stride + t * 3u;
-        sum += (*w)[k] * vec3<f32>(probes[o], probes[o + 1u], probes[o + 2u]);
-    }
-    return sum;
+// Texel t of probe k.
+fn probe_texel(t: u32, k: u32) -> vec3<f32> {
+    let o = (t * params.grid_counts.x + k) * 3u;
+    return vec3<f32>(probes[o], probes[o + 1u], probes[o + 2u]);
 }
 
-fn blended_sample(w: ptr<function, array<f32, MAX_ANCHORS>>, taps: Taps) -> vec3<f32> {
-    var sum = vec3<f32>(0.0);
-    for (var k = 0u; k < 4u; k++) {
-        sum += taps.weight[k] * blended_texel(w, taps.texel[k]);
+// The blend Σ_k w_k · (texel of probe k) at each of a lookup's four taps (anchors in the outer
+// loop, so each weight is computed once).
+struct BlendedTaps {
+    t0: vec3<f32>,
+    t1: vec3<f32>,
+    t2: vec3<f32>,
+    t3: vec3<f32>,
+}
+
+fn blended_taps(b: Blend, taps: Taps) -> BlendedTaps {
+    var out = BlendedTaps(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+    for (var k = 0u; k < params.grid_counts.x; k++) {
+        let w = raw_weight(b.x, k) * b.inv_total;
+        out.t0 += w * probe_texel(taps.texel.x, k);
+        out.t1 += w * probe_texel(taps.texel.y, k);
+        out.t2 += w * probe_texel(taps.texel.z, k);
+        out.t3 += w * probe_texel(taps.texel.w, k);
     }
-    return sum;
+    return out;
+}
+
+fn blended_sample(b: Blend, taps: Taps) -> vec3<f32> {
+    let v = blended_taps(b, taps);
+    return taps.weight.x * v.t0 + taps.weight.y * v.t1 + taps.weight.z * v.t2
+        + taps.weight.w * v.t3;
 }
 
 // Σ_k w_k E_k(dir, r).
 fn blended_specular(x: vec3<f32>, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
-    var w = anchor_weights(x);
+    let b = anchor_blend(x);
     let blend = level_blend(roughness);
     let l0 = u32(blend.x);
-    let a = blended_sample(&w, cube_taps(l0, level_first(l0), dir));
-    let b = blended_sample(&w, cube_taps(l0 + 1u, level_first(l0 + 1u), dir));
-    return a * (1.0 - blend.y) + b * blend.y;
+    let lo = blended_sample(b, cube_taps(l0, level_first(l0), dir));
+    let hi = blended_sample(b, cube_taps(l0 + 1u, level_first(l0 + 1u), dir));
+    return lo * (1.0 - blend.y) + hi * blend.y;
 }
 
 // Σ_k w_k E_d,k(n).
 fn blended_irradiance(x: vec3<f32>, normal: vec3<f32>, ior: f32) -> vec3<f32> {
-    var w = anchor_weights(x);
+    let b = anchor_blend(x);
     let coarsest = params.light_layout.x - 1u;
     let blend = irradiance_blend(ior);
-    let a = blended_sample(&w, cube_taps(coarsest, irradiance_first(blend.a), normal));
+    let first = blended_sample(b, cube_taps(coarsest, irradiance_first(blend.a), normal));
     if blend.a == blend.b || blend.t == 0.0 {
-        return a;
+        return first;
     }
-    let b = blended_sample(&w, cube_taps(coarsest, irradiance_first(blend.b), normal));
-    return a * (1.0 - blend.t) + b * blend.t;
+    let second = blended_sample(b, cube_taps(coarsest, irradiance_first(blend.b), normal));
+    return first * (1.0 - blend.t) + second * blend.t;
 }
 
 // 1/d per component, with ±1e30 for zero components (WGSL leaves x/0 undefined).

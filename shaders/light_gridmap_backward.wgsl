@@ -5,19 +5,16 @@
 
 // Backward of `blended_sample` scaled by `scale`: (dL/d dir scaled, Σ w · (blend · grad_out)).
 fn blended_sample_backward(
-    w: ptr<function, array<f32, MAX_ANCHORS>>,
+    b: Blend,
     taps: Taps,
     grad_out: vec3<f32>,
     scale: f32,
 ) -> vec4<f32> {
-    var value = 0.0;
-    var grad_dir = vec3<f32>(0.0);
-    for (var k = 0u; k < 4u; k++) {
-        let g = dot(blended_texel(w, taps.texel[k]), grad_out);
-        value += taps.weight[k] * g;
-        grad_dir += taps.grad[k] * (g * scale);
-    }
-    return vec4<f32>(grad_dir, value);
+    let v = blended_taps(b, taps);
+    let g = vec4<f32>(dot(v.t0, grad_out), dot(v.t1, grad_out), dot(v.t2, grad_out), dot(v.t3, grad_out));
+    let grad_dir = (taps.grad[0] * g.x + taps.grad[1] * g.y + taps.grad[2] * g.z
+        + taps.grad[3] * g.w) * scale;
+    return vec4<f32>(grad_dir, dot(taps.weight, g));
 }
 
 fn light_specular_backward(
@@ -29,13 +26,14 @@ fn light_specular_backward(
     if !occluded(x, dir) {
         return specular_backward(dir, roughness, grad_out);
     }
-    var w = anchor_weights(x);
+    let weights = anchor_blend(x);
     let blend = level_blend(roughness);
     let l0 = u32(blend.x);
-    let a = blended_sample_backward(&w, cube_taps(l0, level_first(l0), dir), grad_out, 1.0 - blend.y);
-    let b = blended_sample_backward(
-        &w, cube_taps(l0 + 1u, level_first(l0 + 1u), dir), grad_out, blend.y);
-    return vec4<f32>(a.xyz + b.xyz, (b.w - a.w) * blend.z);
+    let lo = blended_sample_backward(
+        weights, cube_taps(l0, level_first(l0), dir), grad_out, 1.0 - blend.y);
+    let hi = blended_sample_backward(
+        weights, cube_taps(l0 + 1u, level_first(l0 + 1u), dir), grad_out, blend.y);
+    return vec4<f32>(lo.xyz + hi.xyz, (hi.w - lo.w) * blend.z);
 }
 
 fn light_irradiance_backward(
@@ -44,17 +42,17 @@ fn light_irradiance_backward(
     ior: f32,
     grad_out: vec3<f32>,
 ) -> vec4<f32> {
-    var w = anchor_weights(x);
+    let weights = anchor_blend(x);
     let coarsest = params.light_layout.x - 1u;
     let blend = irradiance_blend(ior);
     if blend.a == blend.b || blend.t == 0.0 {
-        let a = blended_sample_backward(
-            &w, cube_taps(coarsest, irradiance_first(blend.a), normal), grad_out, 1.0);
-        return vec4<f32>(a.xyz, 0.0);
+        let first = blended_sample_backward(
+            weights, cube_taps(coarsest, irradiance_first(blend.a), normal), grad_out, 1.0);
+        return vec4<f32>(first.xyz, 0.0);
     }
-    let a = blended_sample_backward(
-        &w, cube_taps(coarsest, irradiance_first(blend.a), normal), grad_out, 1.0 - blend.t);
-    let b = blended_sample_backward(
-        &w, cube_taps(coarsest, irradiance_first(blend.b), normal), grad_out, blend.t);
-    return vec4<f32>(a.xyz + b.xyz, (b.w - a.w) * blend.dt);
+    let first = blended_sample_backward(
+        weights, cube_taps(coarsest, irradiance_first(blend.a), normal), grad_out, 1.0 - blend.t);
+    let second = blended_sample_backward(
+        weights, cube_taps(coarsest, irradiance_first(blend.b), normal), grad_out, blend.t);
+    return vec4<f32>(first.xyz + second.xyz, (second.w - first.w) * blend.dt);
 }

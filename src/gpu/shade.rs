@@ -153,7 +153,8 @@ pub(super) struct HostLight {
     params: ShadeParamsGpu,
 }
 
-/// GridMap's probes, anchors and BVH laid out for the kernels.
+/// GridMap's probes (texel-major: every probe's RGB of texel 0, then of texel 1, ...), anchors
+/// and BVH laid out for the kernels.
 pub(super) struct HostProbes {
     values: Vec<f32>,
     anchors: Vec<[f32; 4]>,
@@ -184,15 +185,20 @@ impl HostProbes {
                 anchors.len()
             )));
         }
-        let mut values = Vec::with_capacity(anchors.len() * texel_values_per_probe);
-        for k in 0..anchors.len() {
+        let k_count = anchors.len();
+        let mut values = vec![0.0f32; k_count * texel_values_per_probe];
+        for k in 0..k_count {
             let local = grid.local(k);
             if local.plan().spec != grid.global().plan().spec {
                 return Err(ShadingError::Gpu(
                     "a GridMap probe is prefiltered with another plan than the global map".into(),
                 ));
             }
-            values.extend(texel_values(local));
+            // Texel-major: a texel's RGB of every probe together, as a blend reads them.
+            for (i, v) in texel_values(local).enumerate() {
+                let (texel, c) = (i / 3, i % 3);
+                values[(texel * k_count + k) * 3 + c] = v;
+            }
         }
         // Boxes rounded outwards, so f32 rounding cannot make a ray miss a box the f64 tree's
         // ray enters.

@@ -267,8 +267,14 @@ pub fn bench_train(
     let mut description = String::new();
     let cancel = std::sync::atomic::AtomicBool::new(false);
     backend.take_stage_times();
-    let outcome = crate::train::train_on(backend, capture, &dir, &config, false, &cancel, &mut |e| {
-        match e {
+    let outcome = crate::train::train_on(
+        backend,
+        capture,
+        &dir,
+        &config,
+        false,
+        &cancel,
+        &mut |e| match e {
             crate::events::TrainEvent::Started { backend, .. } => description = backend.clone(),
             crate::events::TrainEvent::Step {
                 iteration,
@@ -281,8 +287,8 @@ pub fn bench_train(
                 last = Some(now);
             }
             _ => {}
-        }
-    });
+        },
+    );
     let passes = backend.take_stage_times();
     // A scratch folder: failing to remove it loses nothing.
     let _ = std::fs::remove_dir_all(&dir);

@@ -372,6 +372,7 @@ fn fallback_paths_match_cpu() {
 fn train_with(
     backend: phygap::config::BackendChoice,
     capture: &phygap::capture::Capture,
+    gridmap: bool,
 ) -> (Vec<(u32, f64)>, f64) {
     use phygap::config::TrainConfig;
     use phygap::events::TrainEvent;
@@ -379,7 +380,8 @@ fn train_with(
         iterations: 100,
         backend,
         seed: 3,
-        gridmap: false,
+        gridmap,
+        gridmap_interval: 20,
         initial_surfels: 3_000,
         envmap_resolution: 16,
         checkpoint_interval: 0,
@@ -417,17 +419,17 @@ fn train_with(
     (losses, psnr)
 }
 
-/// A 100-iteration training run (same seed: same views, same schedule) on a synthetic sphere
-/// capture follows the cpu run: every logged loss within 2% of the cpu run's at the same
-/// iteration (f32 gradients perturb the trajectory slightly; measured ≈ 0.1% on lavapipe), the
+/// A 100-iteration training run (same seed: same views, same schedule) on a synthetic capture
+/// with the gpu backend (whole steps on the device) follows the cpu run: every logged loss within
+/// 2% of the cpu run's at the same iteration (f32 gradients perturb the trajectory slightly), the
 /// mean loss over iterations 76–100 within 1%, and the final test PSNR within 0.2 dB.
-#[test]
-fn short_training_run_matches_cpu() {
+fn training_run_matches_cpu(shape: phygap::synth::Shape, gridmap: bool) {
     if gpu(GpuOptions::default()).is_none() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
     let options = phygap::synth::SynthOptions {
+        shape,
         views: 8,
         size: 48,
         ..Default::default()
@@ -435,9 +437,9 @@ fn short_training_run_matches_cpu() {
     phygap::synth::synth(dir.path(), &options).unwrap();
     let capture = phygap::capture::load(dir.path()).unwrap();
     let t0 = std::time::Instant::now();
-    let (cpu, cpu_psnr) = train_with(phygap::config::BackendChoice::Cpu, &capture);
+    let (cpu, cpu_psnr) = train_with(phygap::config::BackendChoice::Cpu, &capture, gridmap);
     let t1 = std::time::Instant::now();
-    let (gpu, gpu_psnr) = train_with(phygap::config::BackendChoice::Gpu, &capture);
+    let (gpu, gpu_psnr) = train_with(phygap::config::BackendChoice::Gpu, &capture, gridmap);
     let t2 = std::time::Instant::now();
     assert_eq!(cpu.len(), gpu.len(), "different numbers of logged steps");
     assert!(cpu.len() >= 20, "too few logged steps: {}", cpu.len());
@@ -454,8 +456,9 @@ fn short_training_run_matches_cpu() {
     };
     let (cpu_late, gpu_late) = (late(&cpu), late(&gpu));
     println!(
-        "cpu: late loss {cpu_late:.5}, test PSNR {cpu_psnr:.3} dB, {:.1} s; gpu: late loss \
-         {gpu_late:.5}, test PSNR {gpu_psnr:.3} dB, {:.1} s; worst per-step loss difference {worst:.2e}",
+        "{shape:?}, GridMap {gridmap}: cpu: late loss {cpu_late:.5}, test PSNR {cpu_psnr:.3} dB, \
+         {:.1} s; gpu: late loss {gpu_late:.5}, test PSNR {gpu_psnr:.3} dB, {:.1} s; worst \
+         per-step loss difference {worst:.2e}",
         (t1 - t0).as_secs_f64(),
         (t2 - t1).as_secs_f64()
     );
@@ -467,6 +470,19 @@ fn short_training_run_matches_cpu() {
         (gpu_psnr - cpu_psnr).abs() <= 0.2,
         "test PSNR gpu {gpu_psnr} vs cpu {cpu_psnr}"
     );
+}
+
+/// Global light only.
+#[test]
+fn short_training_run_matches_cpu() {
+    training_run_matches_cpu(phygap::synth::Shape::Sphere, false);
+}
+
+/// A torus (it occludes parts of itself) under GridMap, rebuilt every 20 steps of the PolarDR
+/// stage: the probes, the occlusion test and the blended light on the device.
+#[test]
+fn short_training_run_with_gridmap_matches_cpu() {
+    training_run_matches_cpu(phygap::synth::Shape::Torus, true);
 }
 
 /// No surfels, and surfels that are all culled (behind the camera), give empty buffers and zero

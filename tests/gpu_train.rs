@@ -480,7 +480,9 @@ fn a_step_whose_entries_overflow_is_rerun_with_room() {
         )
         .unwrap();
         let adam = Adam::new(AdamConfig::default());
-        trainer.load(&scene.surfels, &adam, &DensifyStats::new(n)).unwrap();
+        trainer
+            .load(&scene.surfels, &adam, &DensifyStats::new(n))
+            .unwrap();
         if let Some(c) = capacity {
             trainer.set_entry_capacity(c).unwrap();
         }
@@ -492,7 +494,8 @@ fn a_step_whose_entries_overflow_is_rerun_with_room() {
                 rates: [Some(1e-3); 7],
             })
             .unwrap();
-        let (mut surfels, mut adam, mut densify) = (Surfels::default(), adam, DensifyStats::default());
+        let (mut surfels, mut adam, mut densify) =
+            (Surfels::default(), adam, DensifyStats::default());
         trainer.sync(&mut surfels, &mut adam, &mut densify).unwrap();
         (result, surfels, trainer.entry_capacity())
     };
@@ -500,11 +503,77 @@ fn a_step_whose_entries_overflow_is_rerun_with_room() {
     let (tight, tight_surfels, grown) = run(Some(100));
     assert!(roomy.tile_entries > 1000, "{} entries", roomy.tile_entries);
     assert_eq!(tight.tile_entries, roomy.tile_entries);
-    assert!(grown >= tight.tile_entries, "capacity {grown} after the rerun");
-    let loss = |r: &phygap::gpu::DeviceStepResult| plan.losses(&r.sums, &scene.weights, 1)["photometric"];
+    assert!(
+        grown >= tight.tile_entries,
+        "capacity {grown} after the rerun"
+    );
+    let loss =
+        |r: &phygap::gpu::DeviceStepResult| plan.losses(&r.sums, &scene.weights, 1)["photometric"];
     assert!((loss(&tight) - loss(&roomy)).abs() <= 1e-6 * loss(&roomy));
     for ((name, a), (_, b)) in tight_surfels.groups().iter().zip(roomy_surfels.groups()) {
         // Float atomics sum in any order: the updates agree to f32 rounding.
         assert_close(a, b, 1e-5, 1e-3, name);
     }
+}
+
+/// When the device cannot hold a step's buffers (here: a binding limit below the SSIM planes of
+/// a 112×112 view, above the light and the BRDF table), training continues with the gpu
+/// backend's host steps, which split images into bands and shade them in chunks, instead of
+/// failing.
+#[test]
+fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
+    use phygap::config::TrainConfig;
+    use phygap::events::TrainEvent;
+    let limit = 600_000;
+    let Some(gpu) = gpu(GpuOptions {
+        max_binding_bytes: Some(limit),
+        ..GpuOptions::default()
+    }) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let options = phygap::synth::SynthOptions {
+        views: 6,
+        size: 112,
+        ..Default::default()
+    };
+    phygap::synth::synth(&dir.path().join("capture"), &options).unwrap();
+    let capture = phygap::capture::load(&dir.path().join("capture")).unwrap();
+    // The device step needs 112 · 112 · 15 f32 for the SSIM planes: more than the limit.
+    assert!(112 * 112 * 15 * 4 > limit);
+    let config = TrainConfig {
+        iterations: 12,
+        initial_surfels: 500,
+        envmap_resolution: 16,
+        checkpoint_interval: 0,
+        eval_interval: 0,
+        gridmap: false,
+        ..TrainConfig::default()
+    };
+    let cancel = std::sync::atomic::AtomicBool::new(false);
+    let mut steps = Vec::new();
+    let mut description = String::new();
+    let outcome = phygap::train::train_on(
+        &gpu,
+        &capture,
+        &dir.path().join("model"),
+        &config,
+        false,
+        &cancel,
+        &mut |e| match e {
+            TrainEvent::Started { backend, .. } => description = backend.clone(),
+            TrainEvent::Step {
+                iteration, loss, ..
+            } => steps.push((*iteration, *loss)),
+            _ => {}
+        },
+    )
+    .unwrap();
+    assert_eq!(outcome, phygap::train::TrainOutcome::Finished);
+    assert!(
+        description.ends_with("whole steps on the device"),
+        "{description}"
+    );
+    assert_eq!(steps.last().map(|s| s.0), Some(12));
+    assert!(steps.iter().all(|s| s.1.is_finite()));
 }

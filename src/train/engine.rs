@@ -17,7 +17,7 @@ use super::step::{self, StepInputs, StepPlan};
 use super::{Run, TrainError};
 use crate::envmap::{EnvGrad, LightProbe, PreparedEnv};
 use crate::events::Stage;
-use crate::gpu::{DeviceStep, DeviceTrainer};
+use crate::gpu::{DeviceStep, DeviceTrainer, GpuError};
 use crate::gridmap::GridMap;
 use crate::loss::LossWeights;
 use crate::optim::AdamConfig;
@@ -68,8 +68,43 @@ impl<'r> Engine<'r> {
             run.lut,
             &run.targets,
             &cameras,
-        )?;
-        Ok(Engine::Device(Box::new(trainer)))
+        );
+        match trainer {
+            Ok(trainer) => Ok(Engine::Device(Box::new(trainer))),
+            Err(e @ GpuError::BufferTooLarge { .. }) => {
+                tracing::warn!(
+                    "{e}: training with host steps (the gpu backend splits large images)"
+                );
+                Ok(Engine::Host)
+            }
+            Err(e) => Err(e.into()),
+        }
+    }
+
+    /// Whether `error` is a buffer beyond the device's limits, which the host steps avoid (the
+    /// gpu backend's rasterizer splits images into bands of tile rows).
+    pub(super) fn is_oversized(error: &TrainError) -> bool {
+        matches!(error, TrainError::Gpu(GpuError::BufferTooLarge { .. }))
+    }
+
+    /// Continues on the host: the light's pending gradient comes back into `pending`, and with
+    /// `state` the device's surfels, moments and statistics (leave it out when the host's state
+    /// is the newer one, after a failed [`Engine::load`]).
+    pub(super) fn fall_back_to_host(
+        &mut self,
+        state: Option<&mut TrainState>,
+        pending: &mut Pending,
+    ) -> Result<(), TrainError> {
+        if let Engine::Device(trainer) = self {
+            if pending.steps > 0 {
+                pending.sum = Some(trainer.take_light_grad()?);
+            }
+            if let Some(state) = state {
+                trainer.sync(&mut state.surfels, &mut state.adam, &mut state.densify)?;
+            }
+        }
+        *self = Engine::Host;
+        Ok(())
     }
 
     /// How the steps run, for the start event.

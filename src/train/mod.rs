@@ -188,7 +188,15 @@ pub fn train(
 ) -> Result<TrainOutcome, TrainError> {
     config.validate()?;
     let backend = backend::select(config.backend)?;
-    train_on(backend.as_ref(), capture, model_dir, config, resume, cancel, on_event)
+    train_on(
+        backend.as_ref(),
+        capture,
+        model_dir,
+        config,
+        resume,
+        cancel,
+        on_event,
+    )
 }
 
 /// [`train`] on a backend the caller opened (`config.backend` is not consulted), so that it can
@@ -341,7 +349,14 @@ impl Run<'_> {
             let mut rng = iteration_rng(self.config.seed, it);
             let target = rng.random_range(0..self.targets.len());
             let light = self.light(&occlusion, &env, stage);
-            let outcome = engine.step(self, &mut state, light, target, stage, &mut pending)?;
+            let outcome = match engine.step(self, &mut state, light, target, stage, &mut pending) {
+                Err(e) if Engine::is_oversized(&e) => {
+                    tracing::warn!("{e}: continuing with host steps (split into bands)");
+                    engine.fall_back_to_host(Some(&mut state), &mut pending)?;
+                    engine.step(self, &mut state, light, target, stage, &mut pending)?
+                }
+                other => other?,
+            };
             if outcome.shaded
                 && (it + 1).is_multiple_of(self.config.envmap_prefilter_interval)
                 && self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?
@@ -386,7 +401,13 @@ impl Run<'_> {
             if self.densify_due(done, stage) || self.reset_due(done) {
                 engine.sync(&mut state)?;
                 self.refine(&mut state, stage, &mut rng)?;
-                engine.load(&state)?;
+                match engine.load(&state) {
+                    Err(e) if Engine::is_oversized(&e) => {
+                        tracing::warn!("{e}: continuing with host steps");
+                        engine.fall_back_to_host(None, &mut pending)?;
+                    }
+                    other => other?,
+                }
             }
             let finite = match engine {
                 Engine::Host => state.surfels.is_finite(),

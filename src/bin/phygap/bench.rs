@@ -131,7 +131,10 @@ fn print_passes(passes: &[phygap::raster::StageTime]) {
         return;
     }
     let total: f64 = passes.iter().map(|p| p.total_ms).sum();
-    println!("\n{:<24} {:>8} {:>12} {:>8}", "pass", "calls", "ms per call", "share");
+    println!(
+        "\n{:<24} {:>8} {:>12} {:>8}",
+        "pass", "calls", "ms per call", "share"
+    );
     for p in passes {
         println!(
             "{:<24} {:>8} {:>12.3} {:>7.1}%",

@@ -13,9 +13,11 @@
 @group(0) @binding(9) var<storage, read> probes: array<f32>;
 // Anchor positions (xyz).
 @group(0) @binding(10) var<storage, read> anchors: array<vec4<f32>>;
-// Two vectors per node: (min, first triangle slot or right child as bits),
-// (max, triangle count as bits; 0 for an interior node). Boxes are rounded outwards.
+// Two vectors per node: its box's min and max corners (rounded outwards; w unused).
 @group(0) @binding(11) var<storage, read> bvh_nodes: array<vec4<f32>>;
+// Per node: its first triangle slot (leaf) or right child (interior), and its triangle count
+// (0 for an interior node, whose left child follows it).
+@group(0) @binding(13) var<storage, read> bvh_links: array<vec2<u32>>;
 // Six vectors per triangle slot: corner v0, edges e1 and e2, the corners' vertex normals.
 @group(0) @binding(12) var<storage, read> bvh_slots: array<vec4<f32>>;
 
@@ -176,8 +178,9 @@ fn closest_hit(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     var top = 0u;
     var node = 0u;
     loop {
-        let first_or_right = bitcast<u32>(bvh_nodes[2u * node].w);
-        let count = bitcast<u32>(bvh_nodes[2u * node + 1u].w);
+        let link = bvh_links[node];
+        let first_or_right = link.x;
+        let count = link.y;
         if count > 0u {
             for (var s = first_or_right; s < first_or_right + count; s++) {
                 let h = triangle_hit(s, origin, dir, t_max);

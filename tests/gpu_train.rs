@@ -577,3 +577,123 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
     assert_eq!(steps.last().map(|s| s.0), Some(12));
     assert!(steps.iter().all(|s| s.1.is_finite()));
 }
+
+/// The environment prefilter on the device (`set_envmap`: the raw cube map goes up and is
+/// prefiltered there) lights a step as the host's `PreparedEnv` does, and its transpose
+/// (`take_envmap_grad`) gives `PreparedEnv::backward` of the light's gradient, for the default
+/// chain (D = 64) with Fresnel-weighted irradiance (five irradiance kernels) and for a small one.
+#[test]
+fn the_device_prefilter_matches_the_host_prefilter() {
+    use phygap::envmap::CubeMap;
+    use phygap::reconstruction::prefilter_plan;
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let mut scene = scene(9);
+    let mut rng = ChaCha8Rng::seed_from_u64(10);
+    let target = target(&scene.camera, "full", &mut rng);
+    let angles = BTreeMap::new();
+    let plan_of_step = StepPlan::new(&target, Stage::Polar, &angles, &scene.weights);
+    for (size, fresnel) in [(64, true), (16, false)] {
+        let raw = (0..CubeMap::num_values(size))
+            .map(|_| rng.random_range(-3.0..2.0))
+            .collect();
+        let cube = CubeMap::from_raw(size, raw).unwrap();
+        let plan = prefilter_plan(size, fresnel).unwrap();
+        scene.env = PreparedEnv::new(&cube, plan.clone()).unwrap();
+        let n = scene.surfels.len();
+        let trainer = |device_prefilter: bool| {
+            let mut t = DeviceTrainer::new(
+                &gpu,
+                RasterSettings::default(),
+                scene.weights,
+                AdamConfig::default(),
+                &scene.lut,
+                std::slice::from_ref(&target),
+                &[scene.camera],
+            )
+            .unwrap();
+            t.load(
+                &scene.surfels,
+                &Adam::new(AdamConfig::default()),
+                &DensifyStats::new(n),
+            )
+            .unwrap();
+            if device_prefilter {
+                t.set_envmap(&cube, &plan).unwrap();
+            } else {
+                t.set_light(&scene.env).unwrap();
+            }
+            let result = t
+                .step(&DeviceStep {
+                    view: 0,
+                    camera: &scene.camera,
+                    plan: &plan_of_step,
+                    rates: [Some(1e-3); 7],
+                })
+                .unwrap();
+            (
+                t,
+                plan_of_step.losses(&result.sums, &scene.weights, scene.camera.num_pixels()),
+            )
+        };
+        let (mut host_lit, host_losses) = trainer(false);
+        let (mut device_lit, device_losses) = trainer(true);
+        let expected: Vec<f64> = scene
+            .env
+            .levels
+            .iter()
+            .chain(&scene.env.irradiance)
+            .flatten()
+            .copied()
+            .collect();
+        let got: Vec<f64> = device_lit
+            .light_texels()
+            .unwrap()
+            .into_iter()
+            .map(f64::from)
+            .collect();
+        let mut first = 0;
+        for (k, part) in scene
+            .env
+            .levels
+            .iter()
+            .chain(&scene.env.irradiance)
+            .enumerate()
+        {
+            let range = first..first + part.len();
+            let what = format!("D = {size}: light part {k}");
+            assert_close(&got[range.clone()], &expected[range], 1e-4, 1e-3, &what);
+            first += part.len();
+        }
+        for (name, &value) in &host_losses {
+            let e = (device_losses[name] - value).abs() / value.abs().max(1e-6);
+            assert!(
+                e < 1e-4,
+                "D = {size}: loss {name} {} vs {value}",
+                device_losses[name]
+            );
+        }
+        let host_grad = scene.env.backward(&host_lit.take_light_grad().unwrap());
+        let device_grad = device_lit.take_envmap_grad().unwrap();
+        let l2 = relative_l2_of(&device_grad, &host_grad);
+        println!("D = {size}, Fresnel {fresnel}: raw gradient relative L2 error {l2:.2e}");
+        assert!(
+            l2 < 1e-3,
+            "D = {size}: raw gradient relative L2 error {l2:.2e}"
+        );
+        assert_close(
+            &device_grad,
+            &host_grad,
+            1e-2,
+            1e-2,
+            &format!("D = {size}: raw gradient"),
+        );
+        // The sum starts again from zero.
+        assert!(device_lit
+            .take_envmap_grad()
+            .unwrap()
+            .iter()
+            .all(|&g| g == 0.0));
+    }
+}

@@ -157,8 +157,9 @@ impl MipChainSpec {
 }
 
 /// A convolution kernel of the prefilter, as a function of c = cos(angle between directions).
+/// The kernel of one convolution of a plan.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Kernel {
+pub enum Kernel {
     /// GGX lobe with N = V = R: D(h) · c with cos²θ_h = (1 + c)/2 (the 1/π of D cancels in the
     /// normalization).
     Ggx { alpha2: f64 },
@@ -169,8 +170,9 @@ enum Kernel {
 }
 
 impl Kernel {
+    /// The kernel's weight at cos(angle) = `c`.
     #[inline]
-    fn eval(self, c: f64) -> f64 {
+    pub fn eval(self, c: f64) -> f64 {
         match self {
             Kernel::Ggx { alpha2 } => {
                 let cos2h = 0.5 * (1.0 + c);
@@ -338,6 +340,30 @@ impl Convolution {
     }
 }
 
+/// One convolution of a plan as another implementation of it needs it (the gpu prefilter):
+/// `out[o] = Σ_i k(n_o · d_i) ΔΩ_i src[i] / Z_o` over the texels with `n_o · d_i > cos_cut`, the
+/// 8×8 blocks of the grid culled where `n_o · centre < thresholds[block]`; no `Z` for irradiance.
+#[derive(Clone, Copy, Debug)]
+pub struct ConvolutionTable<'a> {
+    pub kernel: Kernel,
+    pub cos_cut: f64,
+    /// Per block of the grid ([`CubeGrid::blocks`]).
+    pub thresholds: &'a [f64],
+    /// Per texel of the grid.
+    pub normalizer: Option<&'a [f64]>,
+}
+
+impl Convolution {
+    fn table(&self) -> ConvolutionTable<'_> {
+        ConvolutionTable {
+            kernel: self.kernel,
+            cos_cut: self.cos_cut,
+            thresholds: &self.thresholds,
+            normalizer: self.normalizer.as_deref(),
+        }
+    }
+}
+
 /// cos of the angle between N and the reflected direction below which a GGX lobe of `alpha2` holds
 /// less than `1 − cutoff` of its energy (θ_ω = 2 θ_h, cos²θ_h from the GGX sampling CDF).
 fn ggx_cos_cut(alpha2: f64, cutoff: f64) -> f64 {
@@ -402,6 +428,21 @@ impl PrefilterPlan {
             irradiance,
             irradiance_iors,
         }))
+    }
+
+    /// The lobe convolution of mip level `level` (on `grids[level]`).
+    pub fn specular_convolution(&self, level: usize) -> ConvolutionTable<'_> {
+        self.specular[level].table()
+    }
+
+    /// The convolution of irradiance map `map` (on [`Self::irradiance_grid`]).
+    pub fn irradiance_convolution(&self, map: usize) -> ConvolutionTable<'_> {
+        self.irradiance[map].table()
+    }
+
+    /// Number of irradiance maps.
+    pub fn num_irradiance_maps(&self) -> usize {
+        self.irradiance.len()
     }
 
     /// Number of mip levels.

@@ -1,25 +1,32 @@
-//! The wgpu compute backend: the rasterizer of [`crate::raster`] as WGSL compute kernels
-//! (`shaders/*.wgsl`), in f32 on the device.
+//! The wgpu compute backend: the rasterizer of [`crate::raster`], PolarDR shading and whole
+//! training steps as WGSL compute kernels (`shaders/*.wgsl`), in f32 on the device.
 //!
 //! [`GpuContext`] opens an adapter (Vulkan, Metal or DX12, including software Vulkan such as
 //! Mesa's lavapipe) and [`GpuBackend`] implements [`crate::raster::Backend`] with it:
-//! projection and culling (one thread per surfel), a host exclusive scan of the per-surfel tile
+//! projection and culling (one thread per surfel), an exclusive scan of the per-surfel tile
 //! counts, emission of (tile, depth, surfel) entries and a radix sort of them on the device,
 //! per-tile ranges, forward compositing (one 8×8 workgroup per tile, one thread per pixel),
 //! and the backward pass (per-pixel back-to-front replay, a subgroup's threads in step where the
 //! adapter has subgroups, with float atomics or a compare-and-swap loop, then the per-surfel chain
 //! to raw parameters). Images too large for the adapter's binding limit are rasterized in bands of
-//! tile rows; [`GpuOptions::profile`] times every compute pass on the device. The depth-derived
-//! normals and their backward are the host-side f64 helpers of [`crate::raster`], computed from
-//! the downloaded depth.
+//! tile rows; [`GpuOptions::profile`] times every compute pass on the device. Its `shade` and
+//! `shade_backward` run PolarDR on the device under the global light or GridMap (`shade` module).
+//! These per-call passes upload their inputs and read their outputs back: they serve rendering,
+//! evaluation, mesh extraction, and training steps on the host.
 //!
-//! Not done on the device: the PolarDR shading and the loss (they stay on the cpu), and data does
-//! not stay on the device across iterations (surfels are uploaded on every forward pass and the
-//! G-buffers and gradients are downloaded; only the forward state the backward pass needs stays on
-//! the device between the two).
+//! [`DeviceTrainer`] runs whole training steps on the device instead (`train` module): surfels,
+//! Adam moments, densification statistics, every view's target and the light stay there between
+//! steps; a step reads back a few dozen words (loss sums, the polarizer angle's gradient, the
+//! tile-entry count and two flags), and the state comes back only when the training loop needs
+//! it on the host. The training loop uses it whenever the run's backend is this one.
+//!
+//! Still on the host: the environment map's prefilter and its transpose (every
+//! `envmap_prefilter_interval` steps), GridMap's mesh extraction and probe rendering (every
+//! `gridmap_interval` / `mesh_interval` steps), densification and evaluation.
 
 mod context;
 mod device;
+mod prefilter;
 mod profile;
 mod raster;
 mod shade;

@@ -26,6 +26,10 @@
 //! (the per-surfel buffers, or one tile row's entries) fails with [`RasterError::Gpu`] naming the
 //! buffer. Workgroup memory: only the radix sort's (8 KiB per workgroup).
 //!
+//! The resident trainer (`super::train`) runs the same kernels without the host round trips: the
+//! scan on the device, the sort and the range kernels dispatched indirectly (their entry count
+//! is read from a buffer, [`SortInputs`]).
+//!
 //! Threading: calls on one [`GpuBackend`] are serialized (a mutex); the host-side conversions
 //! are single-threaded.
 

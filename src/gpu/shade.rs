@@ -29,7 +29,7 @@ use super::raster::GpuBackend;
 use super::GpuError;
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
-use crate::envmap::{EnvGrad, PreparedEnv};
+use crate::envmap::{EnvGrad, PrefilterPlan, PreparedEnv};
 use crate::gridmap::GridMap;
 use crate::shading::{GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad};
 
@@ -159,6 +159,7 @@ pub(super) struct HostProbes {
     values: Vec<f32>,
     anchors: Vec<[f32; 4]>,
     nodes: Vec<[f32; 4]>,
+    links: Vec<[u32; 2]>,
     slots: Vec<[f32; 4]>,
     /// `grid_counts` and `grid_geometry` of the kernels' parameters.
     counts: [u32; 4],
@@ -207,11 +208,13 @@ impl HostProbes {
             [out.x as f32, out.y as f32, out.z as f32]
         };
         let mut nodes = Vec::new();
+        let mut links = Vec::new();
         for n in grid.bvh().flat_nodes() {
             let lo = widen(n.min, -1.0);
             let hi = widen(n.max, 1.0);
-            nodes.push([lo[0], lo[1], lo[2], f32::from_bits(n.first_or_right)]);
-            nodes.push([hi[0], hi[1], hi[2], f32::from_bits(n.count)]);
+            nodes.push([lo[0], lo[1], lo[2], 0.0]);
+            nodes.push([hi[0], hi[1], hi[2], 0.0]);
+            links.push([n.first_or_right, n.count]);
         }
         let slots = grid
             .bvh()
@@ -228,6 +231,7 @@ impl HostProbes {
             values,
             anchors: anchors.iter().map(|&a| v4(a)).collect(),
             nodes,
+            links,
             slots,
             counts,
             geometry: [grid.ray_offset() as f32, 0.0, 0.0, 0.0],
@@ -242,6 +246,7 @@ impl HostProbes {
                 device.storage_init("GridMap anchors", bytemuck::cast_slice(&self.anchors))?,
                 device.storage_init("GridMap BVH nodes", bytemuck::cast_slice(&self.nodes))?,
                 device.storage_init("GridMap BVH triangles", bytemuck::cast_slice(&self.slots))?,
+                device.storage_init("GridMap BVH links", bytemuck::cast_slice(&self.links))?,
             ],
             counts: self.counts,
             geometry: self.geometry,
@@ -249,15 +254,15 @@ impl HostProbes {
     }
 }
 
-/// GridMap's probes, anchors, BVH nodes and triangle slots on the device.
+/// GridMap's probes, anchors, BVH nodes, triangle slots and node links on the device.
 pub(super) struct ProbeBuffers {
-    buffers: [wgpu::Buffer; 4],
+    buffers: [wgpu::Buffer; 5],
     counts: [u32; 4],
     geometry: [f32; 4],
 }
 
 impl ProbeBuffers {
-    /// The probes' bindings (9–12).
+    /// The probes' bindings (9–13).
     pub(super) fn bindings(&self) -> impl Iterator<Item = (u32, &wgpu::Buffer)> {
         (9..).zip(self.buffers.iter())
     }
@@ -277,7 +282,16 @@ impl ShadeParamsGpu {
 impl HostLight {
     /// The global light `env` and the BRDF table.
     pub(super) fn new(env: &PreparedEnv, lut: &BrdfLut) -> Result<Self, ShadingError> {
-        let plan = env.plan();
+        let mut light = Self::layout(env.plan(), lut)?;
+        for (v, e) in light.values.iter_mut().zip(texel_values(env)) {
+            *v = e;
+        }
+        Ok(light)
+    }
+
+    /// The layout of a light prefiltered with `plan`, and the BRDF table, with every texel zero
+    /// (the device prefilter writes them: `super::prefilter`).
+    pub(super) fn layout(plan: &PrefilterPlan, lut: &BrdfLut) -> Result<Self, ShadingError> {
         if plan.irradiance_iors.len() > MAX_IORS {
             return Err(ShadingError::Gpu(format!(
                 "{} irradiance IoR nodes, the kernels take at most {MAX_IORS}",
@@ -307,8 +321,9 @@ impl HostLight {
         }
         let irradiance_first = first_texel;
         let irradiance_texels = plan.irradiance_grid().num_texels();
-        let mut values: Vec<f32> = texel_values(env).collect();
-        let texel_values = values.len();
+        let irradiance_maps = plan.num_irradiance_maps();
+        let texel_values = (first_texel + irradiance_maps * irradiance_texels) * 3;
+        let mut values = vec![0.0f32; texel_values];
         let lut_first = values.len();
         values.extend(lut.a.iter().chain(&lut.b).map(|&v| v as f32));
         let mut iors = [[0.0f32; 4]; 2];
@@ -322,7 +337,7 @@ impl HostLight {
             dims: [0, 0, 0, lut.size as u32],
             light_layout: [
                 levels as u32,
-                env.irradiance.len() as u32,
+                irradiance_maps as u32,
                 irradiance_first as u32,
                 lut_first as u32,
             ],
@@ -341,7 +356,7 @@ impl HostLight {
             tables,
             level_texels,
             irradiance_texels,
-            irradiance_maps: env.irradiance.len(),
+            irradiance_maps,
             texel_values,
             params,
         })
@@ -421,6 +436,11 @@ pub(super) struct LightBuffers {
 }
 
 impl LightBuffers {
+    /// The texel values (every level, then every irradiance map) followed by the BRDF table.
+    pub(super) fn values(&self) -> &wgpu::Buffer {
+        &self.values
+    }
+
     /// The light's bindings (1, 2).
     pub(super) fn bindings(&self) -> [(u32, &wgpu::Buffer); 2] {
         [(1, &self.values), (2, &self.tables)]

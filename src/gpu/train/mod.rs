@@ -29,10 +29,13 @@
 mod buffers;
 mod kernels;
 
+use std::sync::Arc;
+
 use glam::DVec3;
 use tracing::info_span;
 
 use super::device::Device;
+use super::prefilter::DevicePrefilter;
 use super::raster::{
     varying_bits, GpuBackend, KeyBits, ParamsGpu, SortDispatch, SortInputs, ENTRY_BYTES,
     NUM_RAW_GRAD, TILE,
@@ -42,7 +45,7 @@ use super::GpuError;
 use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::densify::DensifyStats;
-use crate::envmap::{EnvGrad, PreparedEnv};
+use crate::envmap::{CubeMap, EnvGrad, PrefilterPlan, PreparedEnv};
 use crate::gridmap::GridMap;
 use crate::loss::LossWeights;
 use crate::optim::{Adam, AdamConfig};
@@ -112,6 +115,8 @@ pub struct DeviceTrainer<'g> {
     frame: Option<FrameBuffers>,
     light: Option<LightState>,
     probes: Option<ProbeBuffers>,
+    /// The environment prefilter, once [`DeviceTrainer::set_envmap`] has run.
+    prefilter: Option<DevicePrefilter>,
     status: wgpu::Buffer,
     dispatch: wgpu::Buffer,
     scan_params: wgpu::Buffer,
@@ -193,6 +198,7 @@ impl<'g> DeviceTrainer<'g> {
             frame: None,
             light: None,
             probes: None,
+            prefilter: None,
             host_stale: false,
         })
     }
@@ -256,28 +262,96 @@ impl<'g> DeviceTrainer<'g> {
     pub fn set_light(&mut self, env: &PreparedEnv) -> Result<(), ShadingError> {
         let host = HostLight::new(env, self.lut)?;
         let device = self.device();
-        let light = device.scoped("light upload", || -> Result<LightState, GpuError> {
-            let buffers = host.upload(device)?;
-            let (step_grad, pending) = match self.light.take() {
-                Some(old) if old.host.same_layout(&host) => (old.step_grad, old.pending),
-                _ => {
-                    let bytes = host.gradient_bytes();
-                    let usage = wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST;
-                    (
-                        device.storage("light gradient (step)", bytes, usage)?,
-                        device.storage("light gradient", bytes, usage)?,
-                    )
-                }
-            };
-            Ok(LightState {
-                host,
-                buffers,
-                step_grad,
-                pending,
-            })
-        })?;
+        let old = self.light.take();
+        let light = device.scoped("light upload", || Self::light_state(device, host, old))?;
         self.light = Some(light);
         Ok(())
+    }
+
+    /// Replaces the global light by the prefilter of the learned cube map `cube` under `plan`,
+    /// computed on the device (the map goes up raw). The gradient waiting for the next update is
+    /// kept.
+    pub fn set_envmap(
+        &mut self,
+        cube: &CubeMap,
+        plan: &Arc<PrefilterPlan>,
+    ) -> Result<(), ShadingError> {
+        let _span = info_span!("device_prefilter", size = cube.size).entered();
+        let device = self.device();
+        if self
+            .prefilter
+            .as_ref()
+            .is_none_or(|p| !Arc::ptr_eq(p.plan(), plan))
+        {
+            self.prefilter = Some(DevicePrefilter::new(device, plan.clone())?);
+        }
+        let layout = HostLight::layout(plan, self.lut)?;
+        if self
+            .light
+            .as_ref()
+            .is_none_or(|l| !l.host.same_layout(&layout))
+        {
+            let light =
+                device.scoped("light upload", || Self::light_state(device, layout, None))?;
+            self.light = Some(light);
+        }
+        let (Some(prefilter), Some(light)) = (&self.prefilter, &self.light) else {
+            unreachable!("both were just made");
+        };
+        device.scoped("prefilter", || -> Result<(), GpuError> {
+            let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+            prefilter.encode_forward(device, &mut encoder, cube, light.buffers.values())?;
+            device.queue().submit([encoder.finish()]);
+            Ok(())
+        })?;
+        Ok(())
+    }
+
+    /// The gradient on the learned cube map's raw texels of the light's gradient summed since
+    /// the last call (the transposed prefilter on the device, for lights of
+    /// [`Self::set_envmap`]); the sum starts again from zero.
+    pub fn take_envmap_grad(&mut self) -> Result<Vec<f64>, GpuError> {
+        let (Some(prefilter), Some(light)) = (&self.prefilter, &self.light) else {
+            return Err(GpuError::Device(
+                "no prefiltered environment on the device".into(),
+            ));
+        };
+        let device = self.device();
+        let grad = device.scoped("environment gradient", || -> Result<Vec<f32>, GpuError> {
+            let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+            prefilter.encode_backward(device, &mut encoder, &light.pending)?;
+            encoder.clear_buffer(&light.pending, 0, None);
+            let (raw_grad, bytes) = prefilter.raw_gradient();
+            let data = device.submit_and_read(encoder, &[(raw_grad, bytes)])?;
+            Ok(bytemuck::pod_collect_to_vec(&data[0]))
+        })?;
+        Ok(grad.into_iter().map(f64::from).collect())
+    }
+
+    /// A light's buffers, with the gradient buffers of `old` when it has the same layout.
+    fn light_state(
+        device: &Device,
+        host: HostLight,
+        old: Option<LightState>,
+    ) -> Result<LightState, GpuError> {
+        let buffers = host.upload(device)?;
+        let (step_grad, pending) = match old {
+            Some(old) if old.host.same_layout(&host) => (old.step_grad, old.pending),
+            _ => {
+                let bytes = host.gradient_bytes();
+                let usage = wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST;
+                (
+                    device.storage("light gradient (step)", bytes, usage)?,
+                    device.storage("light gradient", bytes, usage)?,
+                )
+            }
+        };
+        Ok(LightState {
+            host,
+            buffers,
+            step_grad,
+            pending,
+        })
     }
 
     /// Lights the following steps with GridMap's probes (over the global light of
@@ -838,6 +912,22 @@ impl<'g> DeviceTrainer<'g> {
             )?;
         }
         let data = device.submit_and_read(encoder, &[(&self.status, STATUS_WORDS as u64 * 4)])?;
+        Ok(bytemuck::pod_collect_to_vec(&data[0]))
+    }
+
+    /// The light's texel values as the shading kernels read them (every level, then every
+    /// irradiance map), for the tests of the device prefilter.
+    #[doc(hidden)]
+    pub fn light_texels(&self) -> Result<Vec<f32>, GpuError> {
+        let Some(light) = &self.light else {
+            return Ok(Vec::new());
+        };
+        let device = self.device();
+        let bytes = light.host.gradient_bytes();
+        let encoder = device.wgpu().create_command_encoder(&Default::default());
+        let data = device.scoped("read light", || {
+            device.submit_and_read(encoder, &[(light.buffers.values(), bytes)])
+        })?;
         Ok(bytemuck::pod_collect_to_vec(&data[0]))
     }
 

@@ -697,3 +697,88 @@ fn the_device_prefilter_matches_the_host_prefilter() {
             .all(|&g| g == 0.0));
     }
 }
+
+/// A run on the device interrupted at a checkpoint and resumed ends where the uninterrupted run
+/// ends (to the f32 atomics' run-to-run spread: the final losses within 2%), and the checkpoint
+/// holds the device's state (surfels, moments, densification statistics, the learned map).
+#[test]
+fn an_interrupted_device_run_resumes_from_its_checkpoint() {
+    use phygap::config::{BackendChoice, TrainConfig};
+    use phygap::events::TrainEvent;
+    use phygap::train::{train, TrainOutcome};
+    if gpu(GpuOptions::default()).is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let options = phygap::synth::SynthOptions {
+        views: 8,
+        size: 40,
+        ..Default::default()
+    };
+    phygap::synth::synth(&dir.path().join("capture"), &options).unwrap();
+    let capture = phygap::capture::load(&dir.path().join("capture")).unwrap();
+    let config = TrainConfig {
+        iterations: 60,
+        backend: BackendChoice::Gpu,
+        initial_surfels: 1500,
+        envmap_resolution: 16,
+        geometry_stage_end: 0.2,
+        material_stage_end: 0.3,
+        checkpoint_interval: 30,
+        eval_interval: 0,
+        mesh_interval: 20,
+        gridmap_interval: 10,
+        ..TrainConfig::default()
+    };
+    let never = std::sync::atomic::AtomicBool::new(false);
+    let last_loss = |events: &[TrainEvent]| {
+        events
+            .iter()
+            .rev()
+            .find_map(|e| match e {
+                TrainEvent::Step { loss, .. } => Some(*loss),
+                _ => None,
+            })
+            .unwrap()
+    };
+    let mut whole_events = Vec::new();
+    let whole = dir.path().join("whole");
+    train(&capture, &whole, &config, false, &never, &mut |e| {
+        whole_events.push(e.clone())
+    })
+    .unwrap();
+    let split = dir.path().join("split");
+    let cancel = std::sync::atomic::AtomicBool::new(false);
+    let outcome = train(&capture, &split, &config, false, &cancel, &mut |e| {
+        if matches!(e, TrainEvent::Checkpoint { iteration: 30 }) {
+            cancel.store(true, std::sync::atomic::Ordering::Relaxed);
+        }
+    })
+    .unwrap();
+    assert_eq!(outcome, TrainOutcome::Interrupted { iteration: 30 });
+    let (state, _) =
+        phygap::train::state::TrainState::load(&split.join(phygap::train::state::CHECKPOINT_FILE))
+            .unwrap();
+    assert_eq!(state.iteration, 30);
+    assert!(state.surfels.is_finite() && state.surfels.len() > 0);
+    assert!(state.adam.group("position").is_some_and(|g| g.step == 30));
+    assert!(state.adam.group("envmap").is_some_and(|g| g.step > 0));
+    let mut split_events = Vec::new();
+    let outcome = train(&capture, &split, &config, true, &never, &mut |e| {
+        split_events.push(e.clone())
+    })
+    .unwrap();
+    assert_eq!(outcome, TrainOutcome::Finished);
+    assert!(matches!(
+        split_events[0],
+        TrainEvent::Started {
+            resumed_from: Some(30),
+            ..
+        }
+    ));
+    let (a, b) = (last_loss(&whole_events), last_loss(&split_events));
+    assert!(
+        (a - b).abs() <= 0.02 * a,
+        "final loss {b} after resuming vs {a}"
+    );
+}

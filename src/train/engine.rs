@@ -15,7 +15,9 @@ use std::collections::BTreeMap;
 use super::state::TrainState;
 use super::step::{self, StepInputs, StepPlan};
 use super::{Run, TrainError};
-use crate::envmap::{EnvGrad, LightProbe, PreparedEnv};
+use std::sync::Arc;
+
+use crate::envmap::{CubeMap, EnvGrad, LightProbe, PrefilterPlan, PreparedEnv};
 use crate::events::Stage;
 use crate::gpu::{DeviceStep, DeviceTrainer, GpuError};
 use crate::gridmap::GridMap;
@@ -131,12 +133,23 @@ impl<'r> Engine<'r> {
         Ok(())
     }
 
-    /// The global light of the following steps.
-    pub(super) fn set_env(&mut self, env: &PreparedEnv) -> Result<(), TrainError> {
+    /// The learned environment of the following steps. The device engine prefilters it on the
+    /// device (the host engine's steps read the host's `PreparedEnv`).
+    pub(super) fn set_environment(
+        &mut self,
+        cube: &CubeMap,
+        plan: &Arc<PrefilterPlan>,
+    ) -> Result<(), TrainError> {
         if let Engine::Device(trainer) = self {
-            trainer.set_light(env)?;
+            trainer.set_envmap(cube, plan)?;
         }
         Ok(())
+    }
+
+    /// Whether [`Self::set_environment`] prefilters on the device (then the host's prefiltered
+    /// copy need not follow every update).
+    pub(super) fn prefilters_on_device(&self) -> bool {
+        matches!(self, Engine::Device(_))
     }
 
     /// GridMap's probes over the global light, or none.
@@ -147,18 +160,21 @@ impl<'r> Engine<'r> {
         Ok(())
     }
 
-    /// Takes the light's gradient summed since the last update.
-    pub(super) fn take_env_grad(
+    /// The gradient on the learned cube map's raw texels of the light's gradient summed since
+    /// the last update (`env` is the prefilter the host engine's steps were lit by), and starts
+    /// the sum again; `None` when no step was shaded.
+    pub(super) fn take_env_raw_grad(
         &mut self,
         pending: &mut Pending,
-    ) -> Result<Option<EnvGrad>, TrainError> {
+        env: &PreparedEnv,
+    ) -> Result<Option<Vec<f64>>, TrainError> {
         if pending.steps == 0 {
             return Ok(None);
         }
         pending.steps = 0;
         Ok(match self {
-            Engine::Host => pending.sum.take(),
-            Engine::Device(trainer) => Some(trainer.take_light_grad()?),
+            Engine::Host => pending.sum.take().map(|sum| env.backward(&sum)),
+            Engine::Device(trainer) => Some(trainer.take_envmap_grad()?),
         })
     }
 

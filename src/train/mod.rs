@@ -310,16 +310,25 @@ impl Run<'_> {
         let session_start = Instant::now();
         let earlier_sessions = state.elapsed_seconds;
         let elapsed = || earlier_sessions + session_start.elapsed().as_secs_f64();
+        // The host's prefiltered environment; with the device engine it is rebuilt from the
+        // learned map only when something on the host needs it (`env_current`).
         let mut env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        let mut env_current = true;
         engine.load(&state)?;
-        engine.set_env(&env)?;
+        engine.set_environment(&state.envmap, &self.plan)?;
         let mut pending = Pending::default();
         let mut occlusion = Occlusion::default();
         let report_every = (self.config.iterations / 300).clamp(1, 25);
         let iterations = self.config.iterations;
         while state.iteration < iterations {
             if cancel.load(Ordering::Relaxed) {
-                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+                self.flush_env(
+                    &mut state,
+                    &mut env,
+                    &mut env_current,
+                    &mut pending,
+                    &mut engine,
+                )?;
                 engine.sync(&mut state)?;
                 let iteration = state.iteration;
                 state.elapsed_seconds = elapsed();
@@ -334,6 +343,7 @@ impl Run<'_> {
             // are not fitted well enough to tell θ from θ + 90°.
             if it == self.config.polar_stage_start() && !state.polarizer_angles.is_empty() {
                 engine.sync(&mut state)?;
+                self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
                 state.polarizer_angles = angles::estimate(self, &state, &env)?;
             }
             if stage == Stage::Polar && self.config.gridmap {
@@ -342,24 +352,38 @@ impl Run<'_> {
                 let remesh = !occlusion.current || due(self.config.mesh_interval);
                 if remesh || due(self.config.gridmap_interval) {
                     engine.sync(&mut state)?;
+                    self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
                     self.rebuild_gridmap(&mut occlusion, &state, &env, remesh);
                     engine.set_gridmap(occlusion.grid.as_ref())?;
                 }
             }
             let mut rng = iteration_rng(self.config.seed, it);
             let target = rng.random_range(0..self.targets.len());
+            if !engine.prefilters_on_device() {
+                // Host steps are lit by the host's prefilter (stale only after a fallback).
+                self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
+            }
             let light = self.light(&occlusion, &env, stage);
             let outcome = match engine.step(self, &mut state, light, target, stage, &mut pending) {
                 Err(e) if Engine::is_oversized(&e) => {
                     tracing::warn!("{e}: continuing with host steps (split into bands)");
                     engine.fall_back_to_host(Some(&mut state), &mut pending)?;
+                    self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
+                    let light = self.light(&occlusion, &env, stage);
                     engine.step(self, &mut state, light, target, stage, &mut pending)?
                 }
                 other => other?,
             };
             if outcome.shaded
                 && (it + 1).is_multiple_of(self.config.envmap_prefilter_interval)
-                && self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?
+                && self.flush_env(
+                    &mut state,
+                    &mut env,
+                    &mut env_current,
+                    &mut pending,
+                    &mut engine,
+                )?
+                && env_current
             {
                 if let Some(grid) = &mut occlusion.grid {
                     grid.set_global(env.clone());
@@ -389,6 +413,7 @@ impl Run<'_> {
                 && done < iterations
             {
                 engine.sync(&mut state)?;
+                self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
                 if let Some(psnr) = self.test_psnr(&state, self.light(&occlusion, &env, stage))? {
                     reporter.emit(TrainEvent::Evaluated {
                         iteration: done,
@@ -422,9 +447,16 @@ impl Run<'_> {
             {
                 // A resumed run starts with no pending gradient and a freshly prefiltered map: do
                 // the same here, so the uninterrupted run and a resumed one stay bit-identical.
-                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+                self.flush_env(
+                    &mut state,
+                    &mut env,
+                    &mut env_current,
+                    &mut pending,
+                    &mut engine,
+                )?;
                 env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-                engine.set_env(&env)?;
+                env_current = true;
+                engine.set_environment(&state.envmap, &self.plan)?;
                 occlusion = Occlusion::default();
                 engine.set_gridmap(None)?;
                 engine.sync(&mut state)?;
@@ -433,7 +465,13 @@ impl Run<'_> {
                 reporter.emit(TrainEvent::Checkpoint { iteration: done });
             }
         }
-        self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+        self.flush_env(
+            &mut state,
+            &mut env,
+            &mut env_current,
+            &mut pending,
+            &mut engine,
+        )?;
         engine.sync(&mut state)?;
         let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
         state.elapsed_seconds = elapsed();
@@ -495,31 +533,56 @@ impl Run<'_> {
 
     /// Applies the light's gradient summed since the last update: one Adam step with the mean
     /// gradient and the learning rate scaled by the number of steps it covers (the displacement
-    /// K single steps would make), then prefilters the map again and hands it to the engine.
-    /// Both the transpose of the prefilter and the rebuild cost about as much as a whole step
-    /// without them, hence the batching. Returns whether there was a gradient to apply.
+    /// K single steps would make), then prefilters the map again: on the host (`env`), or on the
+    /// device for the device engine, which leaves `env` behind (`env_current` false). Both the
+    /// transpose of the prefilter and the rebuild cost about as much as a whole host step, hence
+    /// the batching. Returns whether there was a gradient to apply.
     fn flush_env(
         &self,
         state: &mut TrainState,
         env: &mut PreparedEnv,
+        env_current: &mut bool,
         pending: &mut Pending,
         engine: &mut Engine,
     ) -> Result<bool, TrainError> {
         let count = pending.steps;
-        let Some(sum) = engine.take_env_grad(pending)? else {
+        let Some(sum) = engine.take_env_raw_grad(pending, env)? else {
             return Ok(false);
         };
         let scale = 1.0 / f64::from(count);
-        let raw_grad: Vec<f64> = env.backward(&sum).iter().map(|g| g * scale).collect();
+        let raw_grad: Vec<f64> = sum.iter().map(|g| g * scale).collect();
         state.adam.step(
             ENVMAP_GROUP,
             &mut state.envmap.raw,
             &raw_grad,
             self.learning_rates.envmap * f64::from(count),
         )?;
-        *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-        engine.set_env(env)?;
+        if engine.prefilters_on_device() {
+            engine.set_environment(&state.envmap, &self.plan)?;
+            *env_current = false;
+        } else {
+            *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        }
         Ok(true)
+    }
+
+    /// Prefilters the learned map on the host again if it moved since (the device engine), and
+    /// hands it to GridMap as its global light.
+    fn refresh_env(
+        &self,
+        env: &mut PreparedEnv,
+        env_current: &mut bool,
+        state: &TrainState,
+        occlusion: &mut Occlusion,
+    ) -> Result<(), TrainError> {
+        if !*env_current {
+            *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+            if let Some(grid) = &mut occlusion.grid {
+                grid.set_global(env.clone());
+            }
+            *env_current = true;
+        }
+        Ok(())
     }
 
     /// Whether densification (clone, split, prune) is due after `it` iterations.

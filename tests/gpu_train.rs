@@ -760,7 +760,7 @@ fn an_interrupted_device_run_resumes_from_its_checkpoint() {
         phygap::train::state::TrainState::load(&split.join(phygap::train::state::CHECKPOINT_FILE))
             .unwrap();
     assert_eq!(state.iteration, 30);
-    assert!(state.surfels.is_finite() && state.surfels.len() > 0);
+    assert!(state.surfels.is_finite() && !state.surfels.is_empty());
     assert!(state.adam.group("position").is_some_and(|g| g.step == 30));
     assert!(state.adam.group("envmap").is_some_and(|g| g.step > 0));
     let mut split_events = Vec::new();

@@ -23,7 +23,8 @@ pub enum TrainEvent {
     Started {
         iterations: u32,
         mode: String,
-        /// The compute backend and what it runs on (e.g. `cpu (16 threads)`, `gpu on NVIDIA …`).
+        /// The compute backend, what it runs on and how the steps run (e.g. `cpu (16 threads);
+        /// steps on the host`, `gpu on NVIDIA …; whole steps on the device`).
         backend: String,
         train_views: usize,
         test_views: usize,

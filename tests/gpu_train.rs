@@ -175,24 +175,7 @@ fn compare(
         stage,
     )
     .unwrap();
-    let mut trainer = DeviceTrainer::new(
-        gpu,
-        settings,
-        scene.weights,
-        AdamConfig::default(),
-        &scene.lut,
-        std::slice::from_ref(target),
-        &[scene.camera],
-    )
-    .unwrap();
-    let n = scene.surfels.len();
-    trainer
-        .load(
-            &scene.surfels,
-            &Adam::new(AdamConfig::default()),
-            &DensifyStats::new(n),
-        )
-        .unwrap();
+    let mut trainer = trainer(gpu, scene, target);
     trainer.set_light(&scene.env).unwrap();
     trainer.set_gridmap(grid).unwrap();
     let plan = StepPlan::new(target, stage, &angles, &scene.weights);
@@ -263,6 +246,25 @@ fn compare(
         result.tile_entries
     );
     worst
+}
+
+/// A trainer of `target` seen by the scene's camera, holding the scene's surfels with fresh Adam
+/// moments and statistics.
+fn trainer<'g>(gpu: &'g GpuBackend, scene: &'g Scene, target: &ViewTarget) -> DeviceTrainer<'g> {
+    let mut trainer = DeviceTrainer::new(
+        gpu,
+        RasterSettings::default(),
+        scene.weights,
+        AdamConfig::default(),
+        &scene.lut,
+        std::slice::from_ref(target),
+        &[scene.camera],
+    )
+    .unwrap();
+    let fresh = Adam::new(AdamConfig::default());
+    let statistics = DensifyStats::new(scene.surfels.len());
+    trainer.load(&scene.surfels, &fresh, &statistics).unwrap();
+    trainer
 }
 
 fn scene(seed: u64) -> Scene {
@@ -345,22 +347,9 @@ fn the_update_is_adam_on_the_device_gradients() {
     let scene = scene(5);
     let mut rng = ChaCha8Rng::seed_from_u64(6);
     let target = target(&scene.camera, "full", &mut rng);
-    let settings = RasterSettings::default();
     let n = scene.surfels.len();
-    let mut trainer = DeviceTrainer::new(
-        &gpu,
-        settings,
-        scene.weights,
-        AdamConfig::default(),
-        &scene.lut,
-        std::slice::from_ref(&target),
-        &[scene.camera],
-    )
-    .unwrap();
+    let mut trainer = trainer(&gpu, &scene, &target);
     let adam = Adam::new(AdamConfig::default());
-    trainer
-        .load(&scene.surfels, &adam, &DensifyStats::new(n))
-        .unwrap();
     let plan = StepPlan::new(&target, Stage::Geometry, &BTreeMap::new(), &scene.weights);
     let rates = [
         Some(2e-3),
@@ -466,23 +455,10 @@ fn a_step_whose_entries_overflow_is_rerun_with_room() {
     let scene = scene(7);
     let mut rng = ChaCha8Rng::seed_from_u64(8);
     let target = target(&scene.camera, "full", &mut rng);
-    let n = scene.surfels.len();
     let plan = StepPlan::new(&target, Stage::Geometry, &BTreeMap::new(), &scene.weights);
     let run = |capacity: Option<u64>| {
-        let mut trainer = DeviceTrainer::new(
-            &gpu,
-            RasterSettings::default(),
-            scene.weights,
-            AdamConfig::default(),
-            &scene.lut,
-            std::slice::from_ref(&target),
-            &[scene.camera],
-        )
-        .unwrap();
+        let mut trainer = trainer(&gpu, &scene, &target);
         let adam = Adam::new(AdamConfig::default());
-        trainer
-            .load(&scene.surfels, &adam, &DensifyStats::new(n))
-            .unwrap();
         if let Some(c) = capacity {
             trainer.set_entry_capacity(c).unwrap();
         }
@@ -601,24 +577,8 @@ fn the_device_prefilter_matches_the_host_prefilter() {
         let cube = CubeMap::from_raw(size, raw).unwrap();
         let plan = prefilter_plan(size, fresnel).unwrap();
         scene.env = PreparedEnv::new(&cube, plan.clone()).unwrap();
-        let n = scene.surfels.len();
-        let trainer = |device_prefilter: bool| {
-            let mut t = DeviceTrainer::new(
-                &gpu,
-                RasterSettings::default(),
-                scene.weights,
-                AdamConfig::default(),
-                &scene.lut,
-                std::slice::from_ref(&target),
-                &[scene.camera],
-            )
-            .unwrap();
-            t.load(
-                &scene.surfels,
-                &Adam::new(AdamConfig::default()),
-                &DensifyStats::new(n),
-            )
-            .unwrap();
+        let lit_step = |device_prefilter: bool| {
+            let mut t = trainer(&gpu, &scene, &target);
             if device_prefilter {
                 t.set_envmap(&cube, &plan).unwrap();
             } else {
@@ -637,8 +597,8 @@ fn the_device_prefilter_matches_the_host_prefilter() {
                 plan_of_step.losses(&result.sums, &scene.weights, scene.camera.num_pixels()),
             )
         };
-        let (mut host_lit, host_losses) = trainer(false);
-        let (mut device_lit, device_losses) = trainer(true);
+        let (mut host_lit, host_losses) = lit_step(false);
+        let (mut device_lit, device_losses) = lit_step(true);
         let expected: Vec<f64> = scene
             .env
             .levels

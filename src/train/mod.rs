@@ -158,6 +158,40 @@ struct Occlusion {
     current: bool,
 }
 
+/// The learned environment prefiltered on the host. With the device engine the map moves on the
+/// device's prefilter, and the host's copy is rebuilt only when something on the host needs it
+/// (`current` false until then).
+struct HostEnv {
+    prepared: PreparedEnv,
+    current: bool,
+}
+
+impl HostEnv {
+    fn new(state: &TrainState, plan: &Arc<PrefilterPlan>) -> Result<Self, TrainError> {
+        Ok(HostEnv {
+            prepared: PreparedEnv::new(&state.envmap, plan.clone())?,
+            current: true,
+        })
+    }
+
+    /// Prefilters the learned map again if it moved since, and hands it to GridMap as its
+    /// global light.
+    fn refresh(
+        &mut self,
+        state: &TrainState,
+        plan: &Arc<PrefilterPlan>,
+        occlusion: &mut Occlusion,
+    ) -> Result<(), TrainError> {
+        if !self.current {
+            *self = HostEnv::new(state, plan)?;
+            if let Some(grid) = &mut occlusion.grid {
+                grid.set_global(self.prepared.clone());
+            }
+        }
+        Ok(())
+    }
+}
+
 /// Everything fixed during a run.
 struct Run<'a> {
     capture: &'a Capture,
@@ -310,10 +344,7 @@ impl Run<'_> {
         let session_start = Instant::now();
         let earlier_sessions = state.elapsed_seconds;
         let elapsed = || earlier_sessions + session_start.elapsed().as_secs_f64();
-        // The host's prefiltered environment; with the device engine it is rebuilt from the
-        // learned map only when something on the host needs it (`env_current`).
-        let mut env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-        let mut env_current = true;
+        let mut env = HostEnv::new(&state, &self.plan)?;
         engine.load(&state)?;
         engine.set_environment(&state.envmap, &self.plan)?;
         let mut pending = Pending::default();
@@ -322,13 +353,7 @@ impl Run<'_> {
         let iterations = self.config.iterations;
         while state.iteration < iterations {
             if cancel.load(Ordering::Relaxed) {
-                self.flush_env(
-                    &mut state,
-                    &mut env,
-                    &mut env_current,
-                    &mut pending,
-                    &mut engine,
-                )?;
+                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
                 engine.sync(&mut state)?;
                 let iteration = state.iteration;
                 state.elapsed_seconds = elapsed();
@@ -343,8 +368,8 @@ impl Run<'_> {
             // are not fitted well enough to tell θ from θ + 90°.
             if it == self.config.polar_stage_start() && !state.polarizer_angles.is_empty() {
                 engine.sync(&mut state)?;
-                self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
-                state.polarizer_angles = angles::estimate(self, &state, &env)?;
+                env.refresh(&state, &self.plan, &mut occlusion)?;
+                state.polarizer_angles = angles::estimate(self, &state, &env.prepared)?;
             }
             if stage == Stage::Polar && self.config.gridmap {
                 let since = it - self.config.polar_stage_start();
@@ -352,8 +377,8 @@ impl Run<'_> {
                 let remesh = !occlusion.current || due(self.config.mesh_interval);
                 if remesh || due(self.config.gridmap_interval) {
                     engine.sync(&mut state)?;
-                    self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
-                    self.rebuild_gridmap(&mut occlusion, &state, &env, remesh);
+                    env.refresh(&state, &self.plan, &mut occlusion)?;
+                    self.rebuild_gridmap(&mut occlusion, &state, &env.prepared, remesh);
                     engine.set_gridmap(occlusion.grid.as_ref())?;
                 }
             }
@@ -361,32 +386,26 @@ impl Run<'_> {
             let target = rng.random_range(0..self.targets.len());
             if !engine.prefilters_on_device() {
                 // Host steps are lit by the host's prefilter (stale only after a fallback).
-                self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
+                env.refresh(&state, &self.plan, &mut occlusion)?;
             }
-            let light = self.light(&occlusion, &env, stage);
+            let light = self.light(&occlusion, &env.prepared, stage);
             let outcome = match engine.step(self, &mut state, light, target, stage, &mut pending) {
                 Err(e) if Engine::is_oversized(&e) => {
                     tracing::warn!("{e}: continuing with host steps (split into bands)");
                     engine.fall_back_to_host(Some(&mut state), &mut pending)?;
-                    self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
-                    let light = self.light(&occlusion, &env, stage);
+                    env.refresh(&state, &self.plan, &mut occlusion)?;
+                    let light = self.light(&occlusion, &env.prepared, stage);
                     engine.step(self, &mut state, light, target, stage, &mut pending)?
                 }
                 other => other?,
             };
             if outcome.shaded
                 && (it + 1).is_multiple_of(self.config.envmap_prefilter_interval)
-                && self.flush_env(
-                    &mut state,
-                    &mut env,
-                    &mut env_current,
-                    &mut pending,
-                    &mut engine,
-                )?
-                && env_current
+                && self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?
+                && env.current
             {
                 if let Some(grid) = &mut occlusion.grid {
-                    grid.set_global(env.clone());
+                    grid.set_global(env.prepared.clone());
                 }
             }
             self.apply_angle_gradients(&mut state, &outcome.angles, stage)?;
@@ -413,8 +432,10 @@ impl Run<'_> {
                 && done < iterations
             {
                 engine.sync(&mut state)?;
-                self.refresh_env(&mut env, &mut env_current, &state, &mut occlusion)?;
-                if let Some(psnr) = self.test_psnr(&state, self.light(&occlusion, &env, stage))? {
+                env.refresh(&state, &self.plan, &mut occlusion)?;
+                if let Some(psnr) =
+                    self.test_psnr(&state, self.light(&occlusion, &env.prepared, stage))?
+                {
                     reporter.emit(TrainEvent::Evaluated {
                         iteration: done,
                         test_psnr: psnr,
@@ -447,15 +468,8 @@ impl Run<'_> {
             {
                 // A resumed run starts with no pending gradient and a freshly prefiltered map: do
                 // the same here, so the uninterrupted run and a resumed one stay bit-identical.
-                self.flush_env(
-                    &mut state,
-                    &mut env,
-                    &mut env_current,
-                    &mut pending,
-                    &mut engine,
-                )?;
-                env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-                env_current = true;
+                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+                env = HostEnv::new(&state, &self.plan)?;
                 engine.set_environment(&state.envmap, &self.plan)?;
                 occlusion = Occlusion::default();
                 engine.set_gridmap(None)?;
@@ -465,13 +479,7 @@ impl Run<'_> {
                 reporter.emit(TrainEvent::Checkpoint { iteration: done });
             }
         }
-        self.flush_env(
-            &mut state,
-            &mut env,
-            &mut env_current,
-            &mut pending,
-            &mut engine,
-        )?;
+        self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
         engine.sync(&mut state)?;
         let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
         state.elapsed_seconds = elapsed();
@@ -534,19 +542,18 @@ impl Run<'_> {
     /// Applies the light's gradient summed since the last update: one Adam step with the mean
     /// gradient and the learning rate scaled by the number of steps it covers (the displacement
     /// K single steps would make), then prefilters the map again: on the host (`env`), or on the
-    /// device for the device engine, which leaves `env` behind (`env_current` false). Both the
-    /// transpose of the prefilter and the rebuild cost about as much as a whole host step, hence
-    /// the batching. Returns whether there was a gradient to apply.
+    /// device for the device engine, which leaves `env` behind. Both the transpose of the
+    /// prefilter and the rebuild cost about as much as a whole host step, hence the batching.
+    /// Returns whether there was a gradient to apply.
     fn flush_env(
         &self,
         state: &mut TrainState,
-        env: &mut PreparedEnv,
-        env_current: &mut bool,
+        env: &mut HostEnv,
         pending: &mut Pending,
         engine: &mut Engine,
     ) -> Result<bool, TrainError> {
         let count = pending.steps;
-        let Some(sum) = engine.take_env_raw_grad(pending, env)? else {
+        let Some(sum) = engine.take_env_raw_grad(pending, &env.prepared)? else {
             return Ok(false);
         };
         let scale = 1.0 / f64::from(count);
@@ -559,30 +566,11 @@ impl Run<'_> {
         )?;
         if engine.prefilters_on_device() {
             engine.set_environment(&state.envmap, &self.plan)?;
-            *env_current = false;
+            env.current = false;
         } else {
-            *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+            *env = HostEnv::new(state, &self.plan)?;
         }
         Ok(true)
-    }
-
-    /// Prefilters the learned map on the host again if it moved since (the device engine), and
-    /// hands it to GridMap as its global light.
-    fn refresh_env(
-        &self,
-        env: &mut PreparedEnv,
-        env_current: &mut bool,
-        state: &TrainState,
-        occlusion: &mut Occlusion,
-    ) -> Result<(), TrainError> {
-        if !*env_current {
-            *env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-            if let Some(grid) = &mut occlusion.grid {
-                grid.set_global(env.clone());
-            }
-            *env_current = true;
-        }
-        Ok(())
     }
 
     /// Whether densification (clone, split, prune) is due after `it` iterations.

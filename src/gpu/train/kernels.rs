@@ -2,9 +2,16 @@
 //! parameters they read. The rasterization and shading kernels are the [`super::GpuBackend`]'s.
 
 use bytemuck::{Pod, Zeroable};
+use glam::DVec3;
 
-use super::super::device::Device;
-use super::super::GpuError;
+use super::buffers::{FrameBuffers, GROUP_SLOTS};
+use super::DeviceStep;
+use crate::gpu::device::Device;
+use crate::gpu::GpuError;
+use crate::loss::LossWeights;
+use crate::optim::AdamConfig;
+use crate::raster::RasterSettings;
+use crate::render::SHADE_ALPHA_MIN;
 
 const SCAN: &str = include_str!("../../../shaders/scan.wgsl");
 const TRAIN_COMMON: &str = include_str!("../../../shaders/train_common.wgsl");
@@ -96,6 +103,70 @@ pub(super) struct TrainParamsGpu {
     pub(super) gauss: [f32; 12],
 }
 
+fn v4(v: DVec3) -> [f32; 4] {
+    [v.x as f32, v.y as f32, v.z as f32, 0.0]
+}
+
+impl TrainParamsGpu {
+    /// The parameters of `step` on `frame`: which terms and weights apply (the step's plan),
+    /// the polarizer angle, the camera, and SSIM's window.
+    pub(super) fn new(
+        step: &DeviceStep,
+        frame: &FrameBuffers,
+        weights: &LossWeights,
+        settings: &RasterSettings,
+    ) -> Self {
+        let (camera, plan) = (step.camera, step.plan);
+        let when = |on: bool, value: f64| if on { value as f32 } else { 0.0 };
+        let (cos2, sin2) = plan
+            .theta
+            .map_or((1.0, 0.0), |t| ((2.0 * t).cos(), (2.0 * t).sin()));
+        let r = camera.rotation_opencv();
+        let window = crate::loss::ssim::gaussian_kernel();
+        TrainParamsGpu {
+            dims: [
+                frame.width,
+                frame.height,
+                frame.pixels as u32,
+                frame.groups(),
+            ],
+            mode: [
+                u32::from(plan.shaded),
+                u32::from(plan.stokes_loss),
+                u32::from(plan.theta.is_some()),
+                0,
+            ],
+            theta: [
+                cos2 as f32,
+                sin2 as f32,
+                plan.unpolarized_scale as f32,
+                when(plan.extra_l1, weights.lambda_stokes),
+            ],
+            weights: [
+                weights.lambda_ssim as f32,
+                when(plan.stokes_loss, weights.lambda_stokes),
+                weights.lambda_mask as f32,
+                when(plan.normal_smooth, weights.lambda_normal_smooth),
+            ],
+            weights2: [
+                when(plan.depth_normal, weights.lambda_depth_normal),
+                settings.normalize_alpha_min as f32,
+                SHADE_ALPHA_MIN as f32,
+                0.0,
+            ],
+            rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
+            origin: v4(camera.origin()),
+            intr: [
+                camera.fx as f32,
+                camera.fy as f32,
+                camera.cx as f32,
+                camera.cy as f32,
+            ],
+            gauss: std::array::from_fn(|k| window.get(k).map_or(0.0, |&v| v as f32)),
+        }
+    }
+}
+
 /// `AdamParams` of train_update.wgsl: per raw slot, its group's rate, bias corrections and
 /// whether it is trained.
 #[repr(C)]
@@ -107,4 +178,43 @@ pub(super) struct AdamParamsGpu {
     pub(super) bias1: [f32; 16],
     pub(super) bias2: [f32; 16],
     pub(super) trained: [u32; 16],
+}
+
+impl AdamParamsGpu {
+    /// One Adam step of `surfels` surfels on `frame`'s view: each group's rate (`rates`, `None`
+    /// for a frozen group) and the bias corrections of its next step (`steps`: the steps each
+    /// group has taken, `None` before its first).
+    pub(super) fn new(
+        config: &AdamConfig,
+        surfels: u32,
+        frame: &FrameBuffers,
+        rates: &[Option<f64>; 7],
+        steps: &[(&str, Option<u64>); 7],
+    ) -> Self {
+        let mut params = AdamParamsGpu {
+            counts: [surfels, 0, 0, 0],
+            betas: [
+                config.beta1 as f32,
+                config.beta2 as f32,
+                config.eps as f32,
+                (0.5 * f64::from(frame.width.max(frame.height))) as f32,
+            ],
+            ..AdamParamsGpu::default()
+        };
+        for ((&(_, slots), rate), &(_, taken)) in GROUP_SLOTS.iter().zip(rates).zip(steps) {
+            let Some(lr) = *rate else {
+                continue;
+            };
+            let t = i32::try_from(taken.unwrap_or(0) + 1).unwrap_or(i32::MAX);
+            let bias1 = 1.0 / (1.0 - config.beta1.powi(t));
+            let bias2 = 1.0 / (1.0 - config.beta2.powi(t));
+            for &slot in slots {
+                params.lr[slot] = lr as f32;
+                params.bias1[slot] = bias1 as f32;
+                params.bias2[slot] = bias2 as f32;
+                params.trained[slot] = 1;
+            }
+        }
+        params
+    }
 }

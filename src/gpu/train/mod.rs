@@ -28,18 +28,15 @@
 
 mod buffers;
 mod kernels;
+mod step;
 
 use std::sync::Arc;
 
-use glam::DVec3;
 use tracing::info_span;
 
 use super::device::Device;
 use super::prefilter::DevicePrefilter;
-use super::raster::{
-    varying_bits, GpuBackend, KeyBits, ParamsGpu, SortDispatch, SortInputs, ENTRY_BYTES,
-    NUM_RAW_GRAD, TILE,
-};
+use super::raster::{GpuBackend, ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
 use super::shade::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
 use super::GpuError;
 use crate::brdf_lut::BrdfLut;
@@ -50,7 +47,6 @@ use crate::gridmap::GridMap;
 use crate::loss::LossWeights;
 use crate::optim::{Adam, AdamConfig};
 use crate::raster::RasterSettings;
-use crate::render::SHADE_ALPHA_MIN;
 use crate::shading::ShadingError;
 use crate::surfels::Surfels;
 use crate::train::step::{LossSums, StepPlan};
@@ -146,10 +142,6 @@ fn target_values(target: &ViewTarget) -> Vec<f32> {
         );
     }
     out
-}
-
-fn v4(v: DVec3) -> [f32; 4] {
-    [v.x as f32, v.y as f32, v.z as f32, 0.0]
 }
 
 impl<'g> DeviceTrainer<'g> {
@@ -466,77 +458,12 @@ impl<'g> DeviceTrainer<'g> {
 
     /// The step's uniform parameters.
     fn write_params(&self, step: &DeviceStep, frame: &FrameBuffers, surfels: u32) {
-        let queue = self.device().queue();
+        let device = self.device();
+        let queue = device.queue();
         let camera = step.camera;
-        let plan = step.plan;
-        let w = &self.weights;
         let raster = ParamsGpu::whole_image(camera, &self.settings, surfels);
         queue.write_buffer(&frame.raster_params, 0, bytemuck::bytes_of(&raster));
-        let r = camera.rotation_opencv();
-        let (cos2, sin2) = plan
-            .theta
-            .map_or((1.0, 0.0), |t| ((2.0 * t).cos(), (2.0 * t).sin()));
-        let train = TrainParamsGpu {
-            dims: [
-                frame.width,
-                frame.height,
-                frame.pixels as u32,
-                frame.groups(),
-            ],
-            mode: [
-                u32::from(plan.shaded),
-                u32::from(plan.stokes_loss),
-                u32::from(plan.theta.is_some()),
-                0,
-            ],
-            theta: [
-                cos2 as f32,
-                sin2 as f32,
-                plan.unpolarized_scale as f32,
-                if plan.extra_l1 {
-                    w.lambda_stokes as f32
-                } else {
-                    0.0
-                },
-            ],
-            weights: [
-                w.lambda_ssim as f32,
-                if plan.stokes_loss {
-                    w.lambda_stokes as f32
-                } else {
-                    0.0
-                },
-                w.lambda_mask as f32,
-                if plan.normal_smooth {
-                    w.lambda_normal_smooth as f32
-                } else {
-                    0.0
-                },
-            ],
-            weights2: [
-                if plan.depth_normal {
-                    w.lambda_depth_normal as f32
-                } else {
-                    0.0
-                },
-                self.settings.normalize_alpha_min as f32,
-                SHADE_ALPHA_MIN as f32,
-                0.0,
-            ],
-            rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
-            origin: v4(camera.origin()),
-            intr: [
-                camera.fx as f32,
-                camera.fy as f32,
-                camera.cx as f32,
-                camera.cy as f32,
-            ],
-            gauss: std::array::from_fn(|k| {
-                crate::loss::ssim::gaussian_kernel()
-                    .get(k)
-                    .map_or(0.0, |&v| v as f32)
-            }),
-        };
+        let train = TrainParamsGpu::new(step, frame, &self.weights, &self.settings);
         queue.write_buffer(&frame.train_params, 0, bytemuck::bytes_of(&train));
         if let Some(light) = &self.light {
             let shade = light
@@ -548,371 +475,12 @@ impl<'g> DeviceTrainer<'g> {
         let scan = ScanParamsGpu {
             n: surfels,
             capacity: capacity.min(u64::from(u32::MAX)) as u32,
-            max_groups: self
-                .device()
-                .wgpu()
-                .limits()
-                .max_compute_workgroups_per_dimension,
+            max_groups: device.wgpu().limits().max_compute_workgroups_per_dimension,
             unused: 0,
         };
         queue.write_buffer(&self.scan_params, 0, bytemuck::bytes_of(&scan));
-        let mut adam = AdamParamsGpu {
-            counts: [surfels, 0, 0, 0],
-            betas: [
-                self.adam.beta1 as f32,
-                self.adam.beta2 as f32,
-                self.adam.eps as f32,
-                (0.5 * f64::from(frame.width.max(frame.height))) as f32,
-            ],
-            ..AdamParamsGpu::default()
-        };
-        for ((&(_, slots), rate), &(_, steps)) in
-            GROUP_SLOTS.iter().zip(step.rates).zip(&self.group_steps)
-        {
-            let Some(lr) = rate else {
-                continue;
-            };
-            // The bias corrections of the step this update makes (t = steps so far + 1).
-            let t = i32::try_from(steps.unwrap_or(0) + 1).unwrap_or(i32::MAX);
-            let bias1 = 1.0 / (1.0 - self.adam.beta1.powi(t));
-            let bias2 = 1.0 / (1.0 - self.adam.beta2.powi(t));
-            for &slot in slots {
-                adam.lr[slot] = lr as f32;
-                adam.bias1[slot] = bias1 as f32;
-                adam.bias2[slot] = bias2 as f32;
-                adam.trained[slot] = 1;
-            }
-        }
+        let adam = AdamParamsGpu::new(&self.adam, surfels, frame, &step.rates, &self.group_steps);
         queue.write_buffer(&self.adam_params, 0, bytemuck::bytes_of(&adam));
-    }
-
-    /// Encodes, submits and reads back one attempt at a step: the step status.
-    fn run(&self, step: &DeviceStep) -> Result<Vec<u32>, GpuError> {
-        let device = self.device();
-        let (Some(s), Some(e), Some(f)) = (&self.surfels, &self.entries, &self.frame) else {
-            return Err(GpuError::Device("the trainer's buffers are missing".into()));
-        };
-        let raster = self.gpu.raster();
-        let k = &self.kernels;
-        let n = s.count as u64;
-        self.write_params(step, f, s.count as u32);
-        let mut encoder = device.wgpu().create_command_encoder(&Default::default());
-        encoder.clear_buffer(&self.status, 0, None);
-        encoder.clear_buffer(&s.acc, 0, None);
-        encoder.clear_buffer(&f.ranges, 0, None);
-        encoder.clear_buffer(&f.stokes, 0, None);
-        encoder.clear_buffer(&f.shade_grads, 0, None);
-        let target = &self.targets[step.view].0;
-        encoder.copy_buffer_to_buffer(target, 0, &f.target, 0, f.pixels * TARGET_FLOATS * 4);
-        let bind = |pipeline: &wgpu::ComputePipeline, buffers: &[(u32, &wgpu::Buffer)]| {
-            device.bind(pipeline, buffers)
-        };
-        let per_pixel = |encoder: &mut wgpu::CommandEncoder,
-                         label: &'static str,
-                         pipeline: &wgpu::ComputePipeline,
-                         buffers: &[(u32, &wgpu::Buffer)]| {
-            let mut pass = device.begin_pass(encoder, label);
-            pass.set_pipeline(pipeline);
-            pass.set_bind_group(0, &bind(pipeline, buffers), &[]);
-            pass.dispatch_workgroups(f.grid.0, f.grid.1, 1);
-        };
-        let tiles = |encoder: &mut wgpu::CommandEncoder,
-                     label: &'static str,
-                     pipeline: &wgpu::ComputePipeline,
-                     buffers: &[(u32, &wgpu::Buffer)]| {
-            let mut pass = device.begin_pass(encoder, label);
-            pass.set_pipeline(pipeline);
-            pass.set_bind_group(0, &bind(pipeline, buffers), &[]);
-            pass.dispatch_workgroups(f.width.div_ceil(TILE), f.height.div_ceil(TILE), 1);
-        };
-
-        // Projection, binning and sort.
-        let rp = &f.raster_params;
-        let group = bind(
-            &raster.project,
-            &[(0, rp), (1, &s.raw), (2, &s.proj), (3, &s.tile_counts)],
-        );
-        device.dispatch_1d(&mut encoder, "project", &raster.project, &group, n)?;
-        let blocks = n.div_ceil(kernels::SCAN_BLOCK);
-        let (bx, by) = device.workgroup_grid(blocks.max(1))?;
-        {
-            let sp = &self.scan_params;
-            let blocks_group = bind(
-                &k.scan_blocks,
-                &[
-                    (0, sp),
-                    (1, &s.tile_counts),
-                    (2, &s.offsets),
-                    (3, &s.block_sums),
-                ],
-            );
-            let sums_group = bind(
-                &k.scan_sums,
-                &[
-                    (0, sp),
-                    (3, &s.block_sums),
-                    (4, &self.status),
-                    (5, &self.dispatch),
-                ],
-            );
-            let add_group = bind(&k.scan_add, &[(0, sp), (2, &s.offsets), (3, &s.block_sums)]);
-            let mut pass = device.begin_pass(&mut encoder, "scan");
-            pass.set_pipeline(&k.scan_blocks);
-            pass.set_bind_group(0, &blocks_group, &[]);
-            pass.dispatch_workgroups(bx, by, 1);
-            pass.set_pipeline(&k.scan_sums);
-            pass.set_bind_group(0, &sums_group, &[]);
-            pass.dispatch_workgroups(1, 1, 1);
-            pass.set_pipeline(&k.scan_add);
-            pass.set_bind_group(0, &add_group, &[]);
-            pass.dispatch_workgroups(bx, by, 1);
-        }
-        let group = bind(
-            &raster.emit,
-            &[(0, rp), (1, &s.proj), (2, &s.offsets), (3, &e.entries[0])],
-        );
-        device.dispatch_1d(&mut encoder, "emit", &raster.emit, &group, n)?;
-        let tile_count = f.width.div_ceil(TILE) * f.height.div_ceil(TILE);
-        let sorted = self.gpu.encode_sort(
-            &mut encoder,
-            e.entries.clone(),
-            &SortInputs {
-                hist: &e.hist,
-                count: &self.status,
-                bits: KeyBits {
-                    depth: DEPTH_BITS,
-                    tile: varying_bits(0, tile_count.max(1) - 1),
-                },
-                dispatch: SortDispatch::Indirect {
-                    args: &self.dispatch,
-                    offset: 0,
-                },
-            },
-        )?;
-        {
-            let group = bind(
-                &raster.tile_ranges,
-                &[(3, &sorted), (4, &f.ranges), (5, &self.status)],
-            );
-            let mut pass = device.begin_pass(&mut encoder, "tile_ranges");
-            pass.set_pipeline(&raster.tile_ranges);
-            pass.set_bind_group(0, &group, &[]);
-            pass.dispatch_workgroups_indirect(&self.dispatch, 12);
-        }
-        tiles(
-            &mut encoder,
-            "rasterize",
-            &raster.rasterize,
-            &[
-                (0, rp),
-                (1, &sorted),
-                (2, &f.ranges),
-                (3, &s.proj),
-                (4, &f.gbuf),
-                (5, &f.final_t),
-                (6, &f.contrib),
-                (7, &f.evals),
-            ],
-        );
-
-        // G-buffers to shading and losses.
-        let tp = &f.train_params;
-        per_pixel(
-            &mut encoder,
-            "prepare_pixels",
-            &k.prepare_pixels,
-            &[
-                (0, tp),
-                (1, &f.gbuf),
-                (2, &f.shade_in),
-                (3, &f.active),
-                (4, &f.depth_normal),
-            ],
-        );
-        let shading = match (&self.light, step.plan.shaded) {
-            (Some(light), true) => {
-                let kernels = if self.probes.is_some() {
-                    &self.gpu.shading().gridmap
-                } else {
-                    &self.gpu.shading().global
-                };
-                let mut buffers = vec![
-                    (0, &f.shade_params),
-                    (3, &f.shade_in),
-                    (4, &f.active),
-                    (5, &f.stokes),
-                ];
-                buffers.extend(light.buffers.bindings());
-                buffers.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
-                per_pixel(&mut encoder, "shade", &kernels.forward, &buffers);
-                Some((light, kernels))
-            }
-            _ => None,
-        };
-        per_pixel(
-            &mut encoder,
-            "compose",
-            &k.compose,
-            &[(0, tp), (1, &f.gbuf), (2, &f.stokes), (4, &f.pred)],
-        );
-        per_pixel(
-            &mut encoder,
-            "ssim_moments_h",
-            &k.ssim_moments_h,
-            &[(0, tp), (3, &f.target), (4, &f.pred), (5, &f.blur_a)],
-        );
-        per_pixel(
-            &mut encoder,
-            "ssim_moments_v",
-            &k.ssim_moments_v,
-            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b), (7, &f.partials)],
-        );
-        per_pixel(
-            &mut encoder,
-            "ssim_adjoint_h",
-            &k.ssim_adjoint_h,
-            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b)],
-        );
-        per_pixel(
-            &mut encoder,
-            "loss_chain",
-            &k.loss_chain,
-            &[
-                (0, tp),
-                (1, &f.gbuf),
-                (2, &f.stokes),
-                (3, &f.target),
-                (4, &f.pred),
-                (5, &f.blur_a),
-                (7, &f.partials),
-                (8, &f.d_stokes),
-                (9, &f.up_partial),
-                (10, &f.dn_grad),
-                (12, &f.depth_normal),
-            ],
-        );
-        {
-            let group = bind(
-                &k.reduce_losses,
-                &[(0, tp), (7, &f.partials), (11, &self.status)],
-            );
-            let mut pass = device.begin_pass(&mut encoder, "reduce_losses");
-            pass.set_pipeline(&k.reduce_losses);
-            pass.set_bind_group(0, &group, &[]);
-            pass.dispatch_workgroups(1, 1, 1);
-        }
-
-        // Backward.
-        if let Some((light, kernels)) = shading {
-            encoder.clear_buffer(&light.step_grad, 0, None);
-            let mut buffers = vec![
-                (0, &f.shade_params),
-                (3, &f.shade_in),
-                (4, &f.active),
-                (5, &f.d_stokes),
-                (6, &f.shade_grads),
-                (8, &light.step_grad),
-            ];
-            buffers.extend(light.buffers.bindings());
-            buffers.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
-            per_pixel(&mut encoder, "shade_backward", &kernels.backward, &buffers);
-        }
-        per_pixel(
-            &mut encoder,
-            "depth_normal_backward",
-            &k.depth_normal_backward,
-            &[
-                (0, tp),
-                (1, &f.gbuf),
-                (5, &f.dn_grad),
-                (6, &self.status),
-                (7, &f.gdxy),
-            ],
-        );
-        per_pixel(
-            &mut encoder,
-            "assemble_upstream",
-            &k.assemble_upstream,
-            &[
-                (0, tp),
-                (3, &f.active),
-                (5, &f.dn_grad),
-                (6, &self.status),
-                (7, &f.gdxy),
-                (8, &f.up_partial),
-                (9, &f.shade_grads),
-                (10, &f.upstream),
-            ],
-        );
-        tiles(
-            &mut encoder,
-            "rasterize_backward",
-            &raster.rasterize_backward,
-            &[
-                (0, rp),
-                (1, &sorted),
-                (2, &f.ranges),
-                (3, &s.proj),
-                (4, &f.gbuf),
-                (5, &f.upstream),
-                (6, &f.final_t),
-                (7, &f.contrib),
-                (8, &s.acc),
-            ],
-        );
-        let group = bind(
-            &raster.project_backward,
-            &[
-                (0, rp),
-                (1, &s.raw),
-                (2, &s.proj),
-                (3, &s.acc),
-                (4, &s.raw_grad),
-            ],
-        );
-        device.dispatch_1d(
-            &mut encoder,
-            "project_backward",
-            &raster.project_backward,
-            &group,
-            n,
-        )?;
-
-        // Update.
-        let group = bind(
-            &k.adam,
-            &[
-                (0, &self.adam_params),
-                (1, &s.raw),
-                (2, &s.moment1),
-                (3, &s.moment2),
-                (4, &s.raw_grad),
-                (5, &s.grad_sum),
-                (6, &s.seen),
-                (7, &self.status),
-            ],
-        );
-        device.dispatch_1d(&mut encoder, "adam", &k.adam, &group, n)?;
-        if let Some((light, _)) = shading {
-            let group = bind(
-                &k.accumulate_light,
-                &[
-                    (7, &self.status),
-                    (8, &light.step_grad),
-                    (9, &light.pending),
-                ],
-            );
-            let values = light.host.gradient_bytes() / 4;
-            device.dispatch_1d(
-                &mut encoder,
-                "accumulate_light",
-                &k.accumulate_light,
-                &group,
-                values,
-            )?;
-        }
-        let data = device.submit_and_read(encoder, &[(&self.status, STATUS_WORDS as u64 * 4)])?;
-        Ok(bytemuck::pod_collect_to_vec(&data[0]))
     }
 
     /// The light's texel values as the shading kernels read them (every level, then every

@@ -1,0 +1,420 @@
+//! The passes of one device step, encoded in order into one command encoder and submitted
+//! together: binning (projection, the device scan, emission, the indirect radix sort and tile
+//! ranges), rasterization and shading, the losses, the backward passes, and the update. Each
+//! pass is one compute pass (timed when profiling); the bindings of each kernel are listed where
+//! it is dispatched (the pipelines' layouts are derived from the WGSL, so each list names exactly
+//! what the kernel reads and writes).
+
+use super::buffers::{EntryBuffers, FrameBuffers, SurfelBuffers, TARGET_FLOATS};
+use super::kernels::{SCAN_BLOCK, STATUS_WORDS};
+use super::{DeviceStep, DeviceTrainer, LightState, DEPTH_BITS};
+use crate::gpu::device::Device;
+use crate::gpu::raster::{varying_bits, KeyBits, SortDispatch, SortInputs, TILE};
+use crate::gpu::shade::{LightPipelines, ProbeBuffers};
+use crate::gpu::GpuError;
+
+/// Bindings of one dispatch: (binding number, buffer).
+type Bindings<'b> = [(u32, &'b wgpu::Buffer)];
+
+/// One step's command encoder and the dispatch shapes its passes use.
+struct Passes<'a> {
+    device: &'a Device,
+    frame: &'a FrameBuffers,
+    encoder: wgpu::CommandEncoder,
+}
+
+impl Passes<'_> {
+    fn dispatch(
+        &mut self,
+        label: &'static str,
+        pipeline: &wgpu::ComputePipeline,
+        bindings: &Bindings,
+        grid: (u32, u32),
+    ) {
+        let group = self.device.bind(pipeline, bindings);
+        let mut pass = self.device.begin_pass(&mut self.encoder, label);
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, &group, &[]);
+        pass.dispatch_workgroups(grid.0, grid.1, 1);
+    }
+
+    /// One thread per pixel.
+    fn per_pixel(
+        &mut self,
+        label: &'static str,
+        pipeline: &wgpu::ComputePipeline,
+        bindings: &Bindings,
+    ) {
+        let grid = self.frame.grid;
+        self.dispatch(label, pipeline, bindings, grid);
+    }
+
+    /// One 8×8 workgroup per tile.
+    fn per_tile(
+        &mut self,
+        label: &'static str,
+        pipeline: &wgpu::ComputePipeline,
+        bindings: &Bindings,
+    ) {
+        let grid = (
+            self.frame.width.div_ceil(TILE),
+            self.frame.height.div_ceil(TILE),
+        );
+        self.dispatch(label, pipeline, bindings, grid);
+    }
+
+    /// One thread per item (surfel, light value).
+    fn per_item(
+        &mut self,
+        label: &'static str,
+        pipeline: &wgpu::ComputePipeline,
+        bindings: &Bindings,
+        items: u64,
+    ) -> Result<(), GpuError> {
+        let group = self.device.bind(pipeline, bindings);
+        self.device
+            .dispatch_1d(&mut self.encoder, label, pipeline, &group, items)
+    }
+}
+
+impl DeviceTrainer<'_> {
+    /// Encodes, submits and reads back one attempt at a step: the step status.
+    pub(super) fn run(&self, step: &DeviceStep) -> Result<Vec<u32>, GpuError> {
+        let device = self.device();
+        let (Some(s), Some(e), Some(f)) = (&self.surfels, &self.entries, &self.frame) else {
+            return Err(GpuError::Device("the trainer's buffers are missing".into()));
+        };
+        self.write_params(step, f, s.count as u32);
+        let mut passes = Passes {
+            device,
+            frame: f,
+            encoder: device.wgpu().create_command_encoder(&Default::default()),
+        };
+        let encoder = &mut passes.encoder;
+        for buffer in [&self.status, &s.acc, &f.ranges, &f.stokes, &f.shade_grads] {
+            encoder.clear_buffer(buffer, 0, None);
+        }
+        let target = &self.targets[step.view].0;
+        encoder.copy_buffer_to_buffer(target, 0, &f.target, 0, f.pixels * TARGET_FLOATS * 4);
+
+        let sorted = self.encode_binning(&mut passes, s, e)?;
+        let shading = self.encode_forward(&mut passes, s, &sorted, step.plan.shaded);
+        self.encode_losses(&mut passes);
+        self.encode_backward(&mut passes, s, &sorted, shading)?;
+        self.encode_update(&mut passes, s, shading)?;
+        let data =
+            device.submit_and_read(passes.encoder, &[(&self.status, STATUS_WORDS as u64 * 4)])?;
+        Ok(bytemuck::pod_collect_to_vec(&data[0]))
+    }
+
+    /// Projection, the device scan of the tile counts (which also writes the entry total and the
+    /// indirect dispatch sizes), emission, the radix sort and the tile ranges. Returns the
+    /// buffer that holds the sorted entries.
+    fn encode_binning(
+        &self,
+        passes: &mut Passes,
+        s: &SurfelBuffers,
+        e: &EntryBuffers,
+    ) -> Result<wgpu::Buffer, GpuError> {
+        let device = self.device();
+        let raster = self.gpu.raster();
+        let k = &self.kernels;
+        let f = passes.frame;
+        let rp = &f.raster_params;
+        let n = s.count as u64;
+        passes.per_item(
+            "project",
+            &raster.project,
+            &[(0, rp), (1, &s.raw), (2, &s.proj), (3, &s.tile_counts)],
+            n,
+        )?;
+        let blocks = device.workgroup_grid(n.div_ceil(SCAN_BLOCK).max(1))?;
+        let sp = &self.scan_params;
+        passes.dispatch(
+            "scan",
+            &k.scan_blocks,
+            &[
+                (0, sp),
+                (1, &s.tile_counts),
+                (2, &s.offsets),
+                (3, &s.block_sums),
+            ],
+            blocks,
+        );
+        passes.dispatch(
+            "scan",
+            &k.scan_sums,
+            &[
+                (0, sp),
+                (3, &s.block_sums),
+                (4, &self.status),
+                (5, &self.dispatch),
+            ],
+            (1, 1),
+        );
+        passes.dispatch(
+            "scan",
+            &k.scan_add,
+            &[(0, sp), (2, &s.offsets), (3, &s.block_sums)],
+            blocks,
+        );
+        passes.per_item(
+            "emit",
+            &raster.emit,
+            &[(0, rp), (1, &s.proj), (2, &s.offsets), (3, &e.entries[0])],
+            n,
+        )?;
+        let tiles = f.width.div_ceil(TILE) * f.height.div_ceil(TILE);
+        let sorted = self.gpu.encode_sort(
+            &mut passes.encoder,
+            e.entries.clone(),
+            &SortInputs {
+                hist: &e.hist,
+                count: &self.status,
+                bits: KeyBits {
+                    depth: DEPTH_BITS,
+                    tile: varying_bits(0, tiles.max(1) - 1),
+                },
+                dispatch: SortDispatch::Indirect {
+                    args: &self.dispatch,
+                    offset: 0,
+                },
+            },
+        )?;
+        let group = device.bind(
+            &raster.tile_ranges,
+            &[(3, &sorted), (4, &f.ranges), (5, &self.status)],
+        );
+        let mut pass = device.begin_pass(&mut passes.encoder, "tile_ranges");
+        pass.set_pipeline(&raster.tile_ranges);
+        pass.set_bind_group(0, &group, &[]);
+        pass.dispatch_workgroups_indirect(&self.dispatch, 12);
+        Ok(sorted)
+    }
+
+    /// Rasterization, the shader's inputs and depth normals, and (when `shaded`) PolarDR. Returns
+    /// the light and kernels the step shades with.
+    fn encode_forward<'s>(
+        &'s self,
+        passes: &mut Passes,
+        s: &SurfelBuffers,
+        sorted: &wgpu::Buffer,
+        shaded: bool,
+    ) -> Option<(&'s LightState, &'s LightPipelines)> {
+        let raster = self.gpu.raster();
+        let f = passes.frame;
+        passes.per_tile(
+            "rasterize",
+            &raster.rasterize,
+            &[
+                (0, &f.raster_params),
+                (1, sorted),
+                (2, &f.ranges),
+                (3, &s.proj),
+                (4, &f.gbuf),
+                (5, &f.final_t),
+                (6, &f.contrib),
+                (7, &f.evals),
+            ],
+        );
+        passes.per_pixel(
+            "prepare_pixels",
+            &self.kernels.prepare_pixels,
+            &[
+                (0, &f.train_params),
+                (1, &f.gbuf),
+                (2, &f.shade_in),
+                (3, &f.active),
+                (4, &f.depth_normal),
+            ],
+        );
+        let light = self.light.as_ref().filter(|_| shaded)?;
+        let kernels = if self.probes.is_some() {
+            &self.gpu.shading().gridmap
+        } else {
+            &self.gpu.shading().global
+        };
+        let mut bindings = vec![
+            (0, &f.shade_params),
+            (3, &f.shade_in),
+            (4, &f.active),
+            (5, &f.stokes),
+        ];
+        bindings.extend(light.buffers.bindings());
+        bindings.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
+        passes.per_pixel("shade", &kernels.forward, &bindings);
+        Some((light, kernels))
+    }
+
+    /// The prediction, SSIM's moments and adjoints, every other loss term with its gradient,
+    /// and the reduction of the partial sums into the step status.
+    fn encode_losses(&self, passes: &mut Passes) {
+        let k = &self.kernels;
+        let f = passes.frame;
+        let tp = &f.train_params;
+        passes.per_pixel(
+            "compose",
+            &k.compose,
+            &[(0, tp), (1, &f.gbuf), (2, &f.stokes), (4, &f.pred)],
+        );
+        passes.per_pixel(
+            "ssim_moments_h",
+            &k.ssim_moments_h,
+            &[(0, tp), (3, &f.target), (4, &f.pred), (5, &f.blur_a)],
+        );
+        passes.per_pixel(
+            "ssim_moments_v",
+            &k.ssim_moments_v,
+            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b), (7, &f.partials)],
+        );
+        passes.per_pixel(
+            "ssim_adjoint_h",
+            &k.ssim_adjoint_h,
+            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b)],
+        );
+        passes.per_pixel(
+            "loss_chain",
+            &k.loss_chain,
+            &[
+                (0, tp),
+                (1, &f.gbuf),
+                (2, &f.stokes),
+                (3, &f.target),
+                (4, &f.pred),
+                (5, &f.blur_a),
+                (7, &f.partials),
+                (8, &f.d_stokes),
+                (9, &f.up_partial),
+                (10, &f.dn_grad),
+                (12, &f.depth_normal),
+            ],
+        );
+        passes.dispatch(
+            "reduce_losses",
+            &k.reduce_losses,
+            &[(0, tp), (7, &f.partials), (11, &self.status)],
+            (1, 1),
+        );
+    }
+
+    /// The shader's backward pass, the depth normal's, the upstream gradient of every G-buffer,
+    /// and the rasterizer's and projection's backward passes.
+    fn encode_backward(
+        &self,
+        passes: &mut Passes,
+        s: &SurfelBuffers,
+        sorted: &wgpu::Buffer,
+        shading: Option<(&LightState, &LightPipelines)>,
+    ) -> Result<(), GpuError> {
+        let k = &self.kernels;
+        let f = passes.frame;
+        let tp = &f.train_params;
+        if let Some((light, kernels)) = shading {
+            passes.encoder.clear_buffer(&light.step_grad, 0, None);
+            let mut bindings = vec![
+                (0, &f.shade_params),
+                (3, &f.shade_in),
+                (4, &f.active),
+                (5, &f.d_stokes),
+                (6, &f.shade_grads),
+                (8, &light.step_grad),
+            ];
+            bindings.extend(light.buffers.bindings());
+            bindings.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
+            passes.per_pixel("shade_backward", &kernels.backward, &bindings);
+        }
+        passes.per_pixel(
+            "depth_normal_backward",
+            &k.depth_normal_backward,
+            &[
+                (0, tp),
+                (1, &f.gbuf),
+                (5, &f.dn_grad),
+                (6, &self.status),
+                (7, &f.gdxy),
+            ],
+        );
+        passes.per_pixel(
+            "assemble_upstream",
+            &k.assemble_upstream,
+            &[
+                (0, tp),
+                (3, &f.active),
+                (5, &f.dn_grad),
+                (6, &self.status),
+                (7, &f.gdxy),
+                (8, &f.up_partial),
+                (9, &f.shade_grads),
+                (10, &f.upstream),
+            ],
+        );
+        let raster = self.gpu.raster();
+        let rp = &f.raster_params;
+        passes.per_tile(
+            "rasterize_backward",
+            &raster.rasterize_backward,
+            &[
+                (0, rp),
+                (1, sorted),
+                (2, &f.ranges),
+                (3, &s.proj),
+                (4, &f.gbuf),
+                (5, &f.upstream),
+                (6, &f.final_t),
+                (7, &f.contrib),
+                (8, &s.acc),
+            ],
+        );
+        passes.per_item(
+            "project_backward",
+            &raster.project_backward,
+            &[
+                (0, rp),
+                (1, &s.raw),
+                (2, &s.proj),
+                (3, &s.acc),
+                (4, &s.raw_grad),
+            ],
+            s.count as u64,
+        )
+    }
+
+    /// Adam with the densification statistics, and the step's light gradient added into the
+    /// sum waiting for the next environment update.
+    fn encode_update(
+        &self,
+        passes: &mut Passes,
+        s: &SurfelBuffers,
+        shading: Option<(&LightState, &LightPipelines)>,
+    ) -> Result<(), GpuError> {
+        let k = &self.kernels;
+        passes.per_item(
+            "adam",
+            &k.adam,
+            &[
+                (0, &self.adam_params),
+                (1, &s.raw),
+                (2, &s.moment1),
+                (3, &s.moment2),
+                (4, &s.raw_grad),
+                (5, &s.grad_sum),
+                (6, &s.seen),
+                (7, &self.status),
+            ],
+            s.count as u64,
+        )?;
+        if let Some((light, _)) = shading {
+            passes.per_item(
+                "accumulate_light",
+                &k.accumulate_light,
+                &[
+                    (7, &self.status),
+                    (8, &light.step_grad),
+                    (9, &light.pending),
+                ],
+                light.host.gradient_bytes() / 4,
+            )?;
+        }
+        Ok(())
+    }
+}

@@ -2,7 +2,7 @@
 // which add the light's gradient into its texel sums. Compiled after shade_backward.wgsl.
 
 fn light_specular_backward(
-    x: vec3<f32>,
+    at: LightPoint,
     dir: vec3<f32>,
     roughness: f32,
     grad_out: vec3<f32>,
@@ -11,7 +11,7 @@ fn light_specular_backward(
 }
 
 fn light_irradiance_backward(
-    x: vec3<f32>,
+    at: LightPoint,
     normal: vec3<f32>,
     ior: f32,
     grad_out: vec3<f32>,

@@ -38,6 +38,17 @@ struct Blend {
     inv_total: f32,
 }
 
+// The anchor and BVH node counts of the uniform block, bounded by their buffers' lengths: a loop
+// bound or branch on uniform values alone makes lavapipe (Mesa 22) recompile the kernel at every
+// dispatch to inline them; a bound that also reads a buffer length keeps the kernel as compiled.
+fn anchor_count() -> u32 {
+    return min(params.grid_counts.x, arrayLength(&anchors));
+}
+
+fn node_count() -> u32 {
+    return min(params.grid_counts.z, arrayLength(&bvh_links));
+}
+
 fn raw_weight(x: vec3<f32>, k: u32) -> f32 {
     let d = x - anchors[k].xyz;
     return 1.0 / (dot(d, d) + WEIGHT_EPSILON);
@@ -45,7 +56,7 @@ fn raw_weight(x: vec3<f32>, k: u32) -> f32 {
 
 fn anchor_blend(x: vec3<f32>) -> Blend {
     var total = 0.0;
-    for (var k = 0u; k < params.grid_counts.x; k++) {
+    for (var k = 0u; k < anchor_count(); k++) {
         total += raw_weight(x, k);
     }
     return Blend(x, 1.0 / total);
@@ -68,7 +79,7 @@ struct BlendedTaps {
 
 fn blended_taps(b: Blend, taps: Taps) -> BlendedTaps {
     var out = BlendedTaps(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
-    for (var k = 0u; k < params.grid_counts.x; k++) {
+    for (var k = 0u; k < anchor_count(); k++) {
         let w = raw_weight(b.x, k) * b.inv_total;
         out.t0 += w * probe_texel(taps.texel.x, k);
         out.t1 += w * probe_texel(taps.texel.y, k);
@@ -85,8 +96,7 @@ fn blended_sample(b: Blend, taps: Taps) -> vec3<f32> {
 }
 
 // Σ_k w_k E_k(dir, r).
-fn blended_specular(x: vec3<f32>, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
-    let b = anchor_blend(x);
+fn blended_specular(b: Blend, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
     let blend = level_blend(roughness);
     let l0 = u32(blend.x);
     let lo = blended_sample(b, cube_taps(l0, level_first(l0), dir));
@@ -95,8 +105,7 @@ fn blended_specular(x: vec3<f32>, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
 }
 
 // Σ_k w_k E_d,k(n).
-fn blended_irradiance(x: vec3<f32>, normal: vec3<f32>, ior: f32) -> vec3<f32> {
-    let b = anchor_blend(x);
+fn blended_irradiance(b: Blend, normal: vec3<f32>, ior: f32) -> vec3<f32> {
     let coarsest = params.light_layout.x - 1u;
     let blend = irradiance_blend(ior);
     let first = blended_sample(b, cube_taps(coarsest, irradiance_first(blend.a), normal));
@@ -166,7 +175,7 @@ fn slot_normal(s: u32, u: f32, v: f32) -> vec3<f32> {
 // The closest hit of origin + t·dir: (normal at the hit, unnormalized; t), or t = −1.
 fn closest_hit(origin: vec3<f32>, dir: vec3<f32>) -> vec4<f32> {
     var best = vec4<f32>(0.0, 0.0, 0.0, -1.0);
-    if params.grid_counts.z == 0u {
+    if node_count() == 0u {
         return best;
     }
     let inv_dir = safe_inverse(dir);
@@ -250,13 +259,24 @@ fn occluded(x: vec3<f32>, dir: vec3<f32>) -> bool {
     return false;
 }
 
-fn light_specular(x: vec3<f32>, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
-    if occluded(x, dir) {
-        return blended_specular(x, dir, roughness);
+// What the light needs to know of a pixel's surface point, found once per pixel (the forward
+// and backward lookups share it): the anchor weights, and whether the mirror ray is blocked.
+struct LightPoint {
+    blend: Blend,
+    blocked: bool,
+}
+
+fn light_point(x: vec3<f32>, mirror: vec3<f32>) -> LightPoint {
+    return LightPoint(anchor_blend(x), occluded(x, mirror));
+}
+
+fn light_specular(at: LightPoint, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
+    if at.blocked {
+        return blended_specular(at.blend, dir, roughness);
     }
     return specular_light(dir, roughness);
 }
 
-fn light_irradiance(x: vec3<f32>, normal: vec3<f32>, ior: f32) -> vec3<f32> {
-    return blended_irradiance(x, normal, ior);
+fn light_irradiance(at: LightPoint, normal: vec3<f32>, ior: f32) -> vec3<f32> {
+    return blended_irradiance(at.blend, normal, ior);
 }

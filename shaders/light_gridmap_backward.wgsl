@@ -18,15 +18,15 @@ fn blended_sample_backward(
 }
 
 fn light_specular_backward(
-    x: vec3<f32>,
+    at: LightPoint,
     dir: vec3<f32>,
     roughness: f32,
     grad_out: vec3<f32>,
 ) -> vec4<f32> {
-    if !occluded(x, dir) {
+    if !at.blocked {
         return specular_backward(dir, roughness, grad_out);
     }
-    let weights = anchor_blend(x);
+    let weights = at.blend;
     let blend = level_blend(roughness);
     let l0 = u32(blend.x);
     let lo = blended_sample_backward(
@@ -37,12 +37,12 @@ fn light_specular_backward(
 }
 
 fn light_irradiance_backward(
-    x: vec3<f32>,
+    at: LightPoint,
     normal: vec3<f32>,
     ior: f32,
     grad_out: vec3<f32>,
 ) -> vec4<f32> {
-    let weights = anchor_blend(x);
+    let weights = at.blend;
     let coarsest = params.light_layout.x - 1u;
     let blend = irradiance_blend(ior);
     if blend.a == blend.b || blend.t == 0.0 {

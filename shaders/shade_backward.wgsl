@@ -95,7 +95,7 @@ fn shade_backward(
     let g_albedo = g_diff * f.transmitted * f.irradiance;
     let g_irradiance = g_diff * f.transmitted * px.albedo;
     let g_fresnel = -dot(g_diff, px.albedo * f.irradiance);
-    let irr = light_irradiance_backward(px.position, f.n, px.ior, g_irradiance);
+    let irr = light_irradiance_backward(f.light, f.n, px.ior, g_irradiance);
     g_n += irr.xyz;
     g_eta += irr.w;
     g_mu += g_fresnel * f.dfresnel_dmu;
@@ -103,7 +103,7 @@ fn shade_backward(
 
     // Specular = (F0 A + B) L_s(2μn − o, r).
     let g_ws = dot(g_spec, f.radiance);
-    let spec = light_specular_backward(px.position, f.mirror, px.roughness, g_spec * f.w_s);
+    let spec = light_specular_backward(f.light, f.mirror, px.roughness, g_spec * f.w_s);
     let g_mirror = spec.xyz;
     var g_roughness = spec.w;
     g_f0 += g_ws * f.lut.a.x;

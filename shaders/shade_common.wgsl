@@ -1,6 +1,7 @@
 // PolarDR shading of one pixel (a port of `forward` in src/shading/mod.rs, in f32): the BRDF
 // table, and lookups in the global environment light (the prefiltered specular mip chain and the
-// irradiance map(s) of a `PreparedEnv`). The light a pixel sees comes from `light_specular` and
+// irradiance map(s) of a `PreparedEnv`). The light a pixel sees comes from `light_point` (what the
+// light needs of the surface point, found once per pixel), `light_specular` and
 // `light_irradiance`, defined by the light file compiled with this one (light_global.wgsl, or
 // light_gridmap.wgsl for GridMap's local probes). Shared by shade.wgsl (forward) and
 // shade_backward.wgsl; no entry points. Threading: one thread per pixel of the current chunk of
@@ -318,28 +319,28 @@ struct IrradianceBlend {
     dt: f32,
 }
 
-// `PrefilterPlan::irradiance_blend`: maps a and b, weight of b, d weight / d IoR.
+// `PrefilterPlan::irradiance_blend`: maps a and b, weight of b, d weight / d IoR. No branch or
+// loop bound depends on the uniform block alone: lavapipe (Mesa 22) would recompile the kernel
+// at every dispatch to inline such values, and a dispatch would then cost a compile (≈1 s).
 fn irradiance_blend(ior: f32) -> IrradianceBlend {
     let nodes = u32(params.rough.z);
-    if nodes < 2u {
-        return IrradianceBlend(0u, 0u, 0.0, 0.0);
-    }
-    var k = nodes - 2u;
-    for (var i = 0u; i + 1u < nodes; i++) {
-        if ior < ior_node(i + 1u) {
-            k = i;
-            break;
-        }
+    // The segment [k, k + 1] holding the IoR: the inner nodes at or below it (nodes ascend).
+    var k = 0u;
+    for (var i = 1u; i + 1u < MAX_IORS; i++) {
+        k += select(0u, 1u, i + 1u < nodes && ior_node(i) <= ior);
     }
     let span = ior_node(k + 1u) - ior_node(k);
     let t = (ior - ior_node(k)) / span;
-    if t <= 0.0 {
-        return IrradianceBlend(k, k + 1u, 0.0, 0.0);
-    }
-    if t >= 1.0 {
-        return IrradianceBlend(k, k + 1u, 1.0, 0.0);
-    }
-    return IrradianceBlend(k, k + 1u, t, 1.0 / span);
+    let outside = t <= 0.0 || t >= 1.0;
+    let weight = select(select(t, 1.0, t >= 1.0), 0.0, t <= 0.0);
+    // A single map (or none): nothing to blend.
+    let single = nodes < 2u;
+    return IrradianceBlend(
+        k,
+        select(k + 1u, 0u, single),
+        select(weight, 0.0, single),
+        select(1.0 / span, 0.0, outside || single),
+    );
 }
 
 // First texel of irradiance map `k` in `light` (every map is on the coarsest level's grid).
@@ -403,6 +404,8 @@ struct Shaded {
     df0: f32,
     w_s: f32,
     mirror: vec3<f32>,
+    // The light's view of the surface point (the backward lookups reuse it).
+    light: LightPoint,
     radiance: vec3<f32>,
     // 1 − F, the transmitted fraction of the diffuse term.
     transmitted: f32,
@@ -439,7 +442,8 @@ fn shade_pixel(px: Pixel) -> Shaded {
     s.lut = lut_lookup(s.mu, px.roughness);
     s.w_s = s.f0 * s.lut.a.x + s.lut.b.x;
     s.mirror = 2.0 * s.mu * s.n - px.view;
-    s.radiance = light_specular(px.position, s.mirror, px.roughness);
+    s.light = light_point(px.position, s.mirror);
+    s.radiance = light_specular(s.light, s.mirror, px.roughness);
     s.specular = s.w_s * s.radiance;
 
     let one_minus_mu = 1.0 - s.mu;
@@ -451,7 +455,7 @@ fn shade_pixel(px: Pixel) -> Shaded {
     s.transmitted = (1.0 - s.f0) * s.mu * (1.0 + x * (1.0 + x * (1.0 + x * (1.0 + x))));
     s.dfresnel_dmu = -5.0 * (1.0 - s.f0) * pow4;
     s.dfresnel_df0 = 1.0 - pow5;
-    s.irradiance = light_irradiance(px.position, s.n, eta);
+    s.irradiance = light_irradiance(s.light, s.n, eta);
     s.diffuse = s.transmitted * px.albedo * s.irradiance;
 
     s.rho = polarization_ratios(s.mu, eta);

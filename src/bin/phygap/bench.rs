@@ -146,16 +146,19 @@ fn print_passes(passes: &[phygap::raster::StageTime]) {
     }
 }
 
+/// The backend `choice` resolves to, timing each device pass when `stages` is asked for.
+fn bench_backend(choice: BackendChoice, stages: bool) -> Result<Box<dyn phygap::raster::Backend>> {
+    let options = GpuOptions {
+        profile: stages,
+        ..GpuOptions::default()
+    };
+    Ok(select_with(choice, options)?)
+}
+
 pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.what {
         BenchWhat::Raster(a) => {
-            let backend = select_with(
-                a.backend,
-                GpuOptions {
-                    profile: a.stages,
-                    ..GpuOptions::default()
-                },
-            )?;
+            let backend = bench_backend(a.backend, a.stages)?;
             let rows = bench_raster(backend.as_ref(), &a.surfels, a.width, a.height, a.repeats)?;
             if a.json {
                 println!("{}", serde_json::to_string_pretty(&rows)?);
@@ -181,13 +184,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             }
         }
         BenchWhat::Train(a) => {
-            let backend = select_with(
-                a.backend,
-                GpuOptions {
-                    profile: a.stages,
-                    ..GpuOptions::default()
-                },
-            )?;
+            let backend = bench_backend(a.backend, a.stages)?;
             let mut config = crate::train::read_config(a.config.as_deref())?;
             config.iterations = a.iterations;
             let stage = match a.stage {

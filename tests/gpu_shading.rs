@@ -8,7 +8,7 @@
 use glam::DVec3;
 use phygap::brdf_lut::BrdfLut;
 use phygap::camera::Camera;
-use phygap::envmap::{CubeMap, EnvGrad, LightProbe, PreparedEnv};
+use phygap::envmap::{EnvGrad, LightProbe, PreparedEnv};
 use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions};
 use phygap::raster::Backend;
 use phygap::shading::{self, GBufferGrad, ShadingBuffers, StokesImage, StokesImageGrad};
@@ -16,7 +16,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 mod common;
-use common::{gpu, random_camera, random_env, worst};
+use common::{gpu, random_camera, random_cube, random_env, worst};
 
 /// Random G-buffers of `pixels` pixels: raw normals of any length and direction (some facing
 /// away, a few zero), roughness and IoR beyond both ends of the tables' ranges, 10% inactive.
@@ -425,10 +425,7 @@ fn gridmap_shading_matches_cpu() {
     let bvh = Bvh::build(&mesh);
     for (seed, fresnel) in [(21u64, false), (22, true)] {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let raw = (0..CubeMap::num_values(16))
-            .map(|_| rng.random_range(-3.0..2.0))
-            .collect();
-        let cube = CubeMap::from_raw(16, raw).unwrap();
+        let cube = random_cube(&mut rng, 16);
         let env = PreparedEnv::new(&cube, prefilter_plan(16, fresnel).unwrap()).unwrap();
         let grid = GridMap::build(&mesh, &surfels, &cube, env).unwrap();
         let camera = Camera::look_at(

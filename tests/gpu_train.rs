@@ -26,7 +26,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 mod common;
-use common::{gpu, random_env, shell};
+use common::{gpu, random_cube, random_env, shell};
 
 /// A target of `camera`'s size: the photometric image and S1/S2 smooth functions of the pixel
 /// (so SSIM sees structure), the mask the disc the shell covers.
@@ -306,7 +306,6 @@ fn a_device_step_matches_the_host_step() {
 /// back-projects from its depth.
 #[test]
 fn a_device_step_under_gridmap_matches_the_host_step() {
-    use phygap::envmap::CubeMap;
     use phygap::gridmap::GridMap;
     use phygap::reconstruction::prefilter_plan;
     let Some(gpu) = gpu(GpuOptions::default()) else {
@@ -314,10 +313,7 @@ fn a_device_step_under_gridmap_matches_the_host_step() {
     };
     let mut scene = scene(3);
     let mut rng = ChaCha8Rng::seed_from_u64(4);
-    let raw = (0..CubeMap::num_values(16))
-        .map(|_| rng.random_range(-3.0..2.0))
-        .collect();
-    let cube = CubeMap::from_raw(16, raw).unwrap();
+    let cube = random_cube(&mut rng, 16);
     scene.env = PreparedEnv::new(&cube, prefilter_plan(16, false).unwrap()).unwrap();
     scene.camera = Camera::look_at(
         40,
@@ -560,7 +556,6 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
 /// chain (D = 64) with Fresnel-weighted irradiance (five irradiance kernels) and for a small one.
 #[test]
 fn the_device_prefilter_matches_the_host_prefilter() {
-    use phygap::envmap::CubeMap;
     use phygap::reconstruction::prefilter_plan;
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
@@ -571,10 +566,7 @@ fn the_device_prefilter_matches_the_host_prefilter() {
     let angles = BTreeMap::new();
     let plan_of_step = StepPlan::new(&target, Stage::Polar, &angles, &scene.weights);
     for (size, fresnel) in [(64, true), (16, false)] {
-        let raw = (0..CubeMap::num_values(size))
-            .map(|_| rng.random_range(-3.0..2.0))
-            .collect();
-        let cube = CubeMap::from_raw(size, raw).unwrap();
+        let cube = random_cube(&mut rng, size);
         let plan = prefilter_plan(size, fresnel).unwrap();
         scene.env = PreparedEnv::new(&cube, plan.clone()).unwrap();
         let lit_step = |device_prefilter: bool| {

@@ -107,9 +107,14 @@ pub fn random_env(rng: &mut ChaCha8Rng, fresnel_irradiance: bool, fine: bool) ->
         levels_per_size: if fine { 2 } else { 1 },
         ..MipChainSpec::default()
     };
-    let raw = (0..CubeMap::num_values(16))
+    let cube = random_cube(rng, 16);
+    PreparedEnv::new(&cube, PrefilterPlan::new(spec).unwrap()).unwrap()
+}
+
+/// A cube map of face size `size` with raw texels uniform in [−3, 2).
+pub fn random_cube(rng: &mut ChaCha8Rng, size: usize) -> CubeMap {
+    let raw = (0..CubeMap::num_values(size))
         .map(|_| rng.random_range(-3.0..2.0))
         .collect();
-    let cube = CubeMap::from_raw(16, raw).unwrap();
-    PreparedEnv::new(&cube, PrefilterPlan::new(spec).unwrap()).unwrap()
+    CubeMap::from_raw(size, raw).unwrap()
 }

@@ -39,8 +39,9 @@ struct Blend {
 }
 
 // The anchor and BVH node counts of the uniform block, bounded by their buffers' lengths: a loop
-// bound or branch on uniform values alone makes lavapipe (Mesa 22) recompile the kernel at every
-// dispatch to inline them; a bound that also reads a buffer length keeps the kernel as compiled.
+// bound on uniform values alone made lavapipe (Mesa 22) recompile the kernel at every dispatch to
+// inline them (the node check, a branch, is kept off them as a precaution); a bound that also
+// reads a buffer length keeps the kernel as compiled.
 fn anchor_count() -> u32 {
     return min(params.grid_counts.x, arrayLength(&anchors));
 }

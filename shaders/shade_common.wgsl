@@ -319,9 +319,9 @@ struct IrradianceBlend {
     dt: f32,
 }
 
-// `PrefilterPlan::irradiance_blend`: maps a and b, weight of b, d weight / d IoR. No branch or
-// loop bound depends on the uniform block alone: lavapipe (Mesa 22) would recompile the kernel
-// at every dispatch to inline such values, and a dispatch would then cost a compile (≈1 s).
+// `PrefilterPlan::irradiance_blend`: maps a and b, weight of b, d weight / d IoR. No loop bound
+// (nor branch) depends on the uniform block alone: lavapipe (Mesa 22) recompiled the kernel at
+// every dispatch to inline such a bound, and a dispatch then cost a compile (≈1 s).
 fn irradiance_blend(ior: f32) -> IrradianceBlend {
     let nodes = u32(params.rough.z);
     // The segment [k, k + 1] holding the IoR: the inner nodes at or below it (nodes ascend).

@@ -34,6 +34,7 @@ pub mod raster;
 pub mod reconstruction;
 pub mod relight;
 pub mod render;
+pub mod scorecard;
 pub mod shading;
 pub mod surfels;
 pub mod synth;

@@ -8,11 +8,9 @@ use anyhow::Result;
 use clap::Args;
 
 use phygap::capture;
-use phygap::evaluate;
-use phygap::meshing::{self, DEFAULT_MESH_RESOLUTION};
+use phygap::evaluate::EvalReport;
 use phygap::model::Model;
-use phygap::reconstruction::Reconstruction;
-use phygap::relight;
+use phygap::scorecard::{self, GroundTruth};
 
 #[derive(Args, Debug)]
 pub struct EvalArgs {
@@ -38,38 +36,32 @@ pub fn run(args: &EvalArgs) -> Result<()> {
     let capture = capture::load(&args.capture)?;
     let mut model = Model::load(&args.model)?;
     crate::override_gridmap(&mut model, args.gridmap);
-    let reconstruction = Reconstruction::new(model.clone())?;
-    let mut report = reconstruction.evaluate(&capture)?;
-    report.train_seconds = Some(reconstruction.model.info.train_seconds);
-    if let Some(envmap) = &args.relight_envmap {
-        // GridMap's mesh depends on the surfels alone: the relit copy reuses it.
-        let relit = reconstruction.relit(relight::relight_cube(&model, envmap, 0.0)?)?;
-        (report.relight_psnr, report.relight_ssim) =
-            evaluate::relight_metrics(&relit.scene(), &capture)?;
+    let truth = GroundTruth {
+        relight_envmap: args.relight_envmap.clone(),
+        mesh: args.gt_mesh.clone(),
+    };
+    let report = scorecard::score(&model, &capture, &truth)?;
+    if !args.json {
+        print_table(&report);
     }
-    if let Some(gt) = &args.gt_mesh {
-        let mesh = meshing::extract_from_model(&model, DEFAULT_MESH_RESOLUTION)?;
-        report.chamfer = Some(evaluate::chamfer_to_gt(&mesh, gt)?);
-    }
-    let json = serde_json::to_string_pretty(&report)?;
-    if args.json {
-        println!("{json}");
-    } else {
-        let fmt = |v: Option<f64>| v.map_or("n/a".to_owned(), |v| format!("{v:.4}"));
-        println!("test views      {}", report.test_views);
-        println!("S0 PSNR (dB)    {}", fmt(report.psnr));
-        println!("S0 SSIM         {}", fmt(report.ssim));
-        println!("normal MAE (°)  {}", fmt(report.normal_mae_deg));
-        println!("AoLP MAE (°)    {}", fmt(report.aolp_mae_deg));
-        println!("DoLP MAE        {}", fmt(report.dolp_mae));
-        println!("albedo MAE      {}", fmt(report.albedo_mae));
-        println!("roughness MAE   {}", fmt(report.roughness_mae));
-        println!("IoR MAE         {}", fmt(report.ior_mae));
-        println!("relit PSNR (dB) {}", fmt(report.relight_psnr));
-        println!("relit SSIM      {}", fmt(report.relight_ssim));
-        println!("Chamfer-L1      {}", fmt(report.chamfer));
-        println!("surfels         {}", report.num_surfels);
-        println!("{json}");
-    }
+    println!("{}", serde_json::to_string_pretty(&report)?);
     Ok(())
+}
+
+/// The report as aligned lines for a person (the JSON follows it).
+pub fn print_table(report: &EvalReport) {
+    let fmt = |v: Option<f64>| v.map_or("n/a".to_owned(), |v| format!("{v:.4}"));
+    println!("test views      {}", report.test_views);
+    println!("S0 PSNR (dB)    {}", fmt(report.psnr));
+    println!("S0 SSIM         {}", fmt(report.ssim));
+    println!("normal MAE (°)  {}", fmt(report.normal_mae_deg));
+    println!("AoLP MAE (°)    {}", fmt(report.aolp_mae_deg));
+    println!("DoLP MAE        {}", fmt(report.dolp_mae));
+    println!("albedo MAE      {}", fmt(report.albedo_mae));
+    println!("roughness MAE   {}", fmt(report.roughness_mae));
+    println!("IoR MAE         {}", fmt(report.ior_mae));
+    println!("relit PSNR (dB) {}", fmt(report.relight_psnr));
+    println!("relit SSIM      {}", fmt(report.relight_ssim));
+    println!("Chamfer-L1      {}", fmt(report.chamfer));
+    println!("surfels         {}", report.num_surfels);
 }

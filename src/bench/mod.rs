@@ -1,11 +1,16 @@
 //! Timings for `phygap bench`: the rasterizer backends on a synthetic object (surfels tangent to
 //! the unit sphere, seen from distance 4 with a 40° field of view, the framing of the shared
-//! captures), GridMap's periodic rebuild on a trained model, and training steps per second on a
-//! capture ([`bench_train`]: a short run of the real schedule held in one stage).
+//! captures), GridMap's periodic rebuild on a trained model, training steps per second on a
+//! capture ([`bench_train`]: a short run of the real schedule held in one stage), and a whole
+//! run's time to quality ([`bench_quality`]).
 //!
 //! Surfels sit on a Fibonacci lattice of the sphere with scale `0.6 × spacing`, so the shell is
 //! covered with overlap; both hemispheres are rasterized (surfels are two-sided), as in training.
 //! Timings are medians over `repeats` runs after one warm-up run.
+
+mod quality;
+
+pub use quality::{bench_quality, PsnrReading, QualityError, QualityRun};
 
 use std::time::Instant;
 

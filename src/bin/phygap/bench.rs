@@ -1,5 +1,5 @@
 //! `phygap bench ...`: timing of the compute backends on synthetic scenes, of GridMap's rebuild
-//! on a trained model, and of training steps on a capture.
+//! on a trained model, of training steps on a capture, and of a whole run to its quality.
 
 use anyhow::Result;
 use clap::{Args, Subcommand};
@@ -8,7 +8,7 @@ use phygap::backend::select_with;
 use phygap::gpu::GpuOptions;
 use std::path::PathBuf;
 
-use phygap::bench::{bench_gridmap, bench_raster, bench_train, BenchStage};
+use phygap::bench::{bench_gridmap, bench_quality, bench_raster, bench_train, BenchStage};
 use phygap::config::BackendChoice;
 use phygap::model::Model;
 
@@ -26,6 +26,35 @@ enum BenchWhat {
     Gridmap(GridMapBenchArgs),
     /// Training steps per second on a capture, the run held in one stage.
     Train(TrainBenchArgs),
+    /// Time to quality: a whole training run (default settings unless told), its wall time, the
+    /// test PSNR along the way and every metric at the end.
+    Quality(QualityBenchArgs),
+}
+
+#[derive(Args)]
+struct QualityBenchArgs {
+    /// Capture folder (`transforms.json`); its `scene.json` relight map and `mesh.ply`, where
+    /// present, add the relit and Chamfer metrics.
+    capture: PathBuf,
+    #[arg(long, value_enum)]
+    backend: Option<BackendChoice>,
+    /// Optimization steps (default: the default schedule's).
+    #[arg(long)]
+    iterations: Option<u32>,
+    /// Training settings (JSON, as `phygap train --config`).
+    #[arg(long)]
+    config: Option<PathBuf>,
+    /// Keep the model in this folder (default: a scratch folder, removed afterwards).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Relighting map of the capture's `relight_s0` views (default: from `scene.json`).
+    #[arg(long)]
+    relight_envmap: Option<PathBuf>,
+    /// Ground-truth mesh (default: the capture's `mesh.ply`).
+    #[arg(long)]
+    gt_mesh: Option<PathBuf>,
+    #[arg(long)]
+    json: bool,
 }
 
 #[derive(Args)]
@@ -216,6 +245,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 }
             }
         }
+        BenchWhat::Quality(a) => run_quality(a)?,
         BenchWhat::Gridmap(a) => {
             let t = bench_gridmap(&Model::load(&a.model)?, a.repeats)?;
             if a.json {
@@ -235,5 +265,49 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             }
         }
     }
+    Ok(())
+}
+
+/// `phygap bench quality`: trains with a progress bar, then prints the timing and the scorecard.
+fn run_quality(a: &QualityBenchArgs) -> Result<()> {
+    let mut config = crate::train::read_config(a.config.as_deref())?;
+    if let Some(v) = a.iterations {
+        config.iterations = v;
+    }
+    if let Some(v) = a.backend {
+        config.backend = v;
+    }
+    config.validate()?;
+    let mut truth = phygap::scorecard::GroundTruth::discover(&a.capture);
+    truth.relight_envmap = a.relight_envmap.clone().or(truth.relight_envmap);
+    truth.mesh = a.gt_mesh.clone().or(truth.mesh);
+    let scratch = std::env::temp_dir().join(format!("phygap-bench-quality-{}", std::process::id()));
+    let model_dir = a.out.clone().unwrap_or_else(|| scratch.clone());
+    let bar = crate::train::progress_bar(config.iterations);
+    let result = bench_quality(&a.capture, &model_dir, &config, &truth, &mut |e| {
+        crate::train::show_event(&bar, e)
+    });
+    if a.out.is_none() {
+        // A scratch folder: failing to remove it loses nothing.
+        let _ = std::fs::remove_dir_all(&scratch);
+    }
+    let run = result?;
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&run)?);
+        return Ok(());
+    }
+    println!("backend         {}", run.backend);
+    println!(
+        "wall time       {:.1} s training ({} steps), {:.1} s scoring",
+        run.train_wall_seconds, run.iterations, run.score_wall_seconds
+    );
+    println!("test PSNR along the run:");
+    for r in &run.progress {
+        println!(
+            "  step {:>6}  {:>7.1} s  {:>6.2} dB",
+            r.iteration, r.seconds, r.test_psnr
+        );
+    }
+    crate::eval::print_table(&run.metrics);
     Ok(())
 }

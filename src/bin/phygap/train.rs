@@ -23,7 +23,7 @@ pub struct TrainArgs {
     /// Model folder to write.
     #[arg(long)]
     pub out: PathBuf,
-    /// Optimization steps (default 15000).
+    /// Optimization steps (default 6000).
     #[arg(long)]
     pub iterations: Option<u32>,
     /// Measurement used for the loss (default: chosen from the capture).
@@ -95,47 +95,8 @@ pub fn run(args: &TrainArgs) -> Result<()> {
         ctrlc::set_handler(move || cancel.store(true, Ordering::Relaxed))
             .context("cannot install the Ctrl-C handler")?;
     }
-    let bar = ProgressBar::new(u64::from(config.iterations));
-    bar.set_style(
-        ProgressStyle::with_template(
-            "{spinner} [{elapsed_precise}] {bar:30} {pos}/{len} {msg} (eta {eta})",
-        )
-        .expect("valid template"),
-    );
-    let mut test_psnr: Option<f64> = None;
-    let mut on_event = |event: &TrainEvent| match event {
-        TrainEvent::Started {
-            mode,
-            backend,
-            train_views,
-            resumed_from,
-            ..
-        } => {
-            bar.println(format!(
-                "training: mode {mode}, backend {backend}, {train_views} training views{}",
-                resumed_from.map_or(String::new(), |it| format!(", resumed at {it}"))
-            ));
-            bar.set_position(u64::from(resumed_from.unwrap_or(0)));
-        }
-        TrainEvent::Step {
-            iteration,
-            stage,
-            loss,
-            num_surfels,
-            ..
-        } => {
-            bar.set_position(u64::from(*iteration));
-            bar.set_message(format!(
-                "{stage:?} loss {loss:.4} surfels {num_surfels}{}",
-                test_psnr.map_or(String::new(), |p| format!(" test PSNR {p:.2} dB"))
-            ));
-        }
-        TrainEvent::Evaluated { test_psnr: p, .. } => test_psnr = Some(*p),
-        TrainEvent::Checkpoint { .. } => {}
-        TrainEvent::Finished { seconds, .. } => {
-            bar.finish_with_message(format!("done in {seconds:.1} s"));
-        }
-    };
+    let bar = progress_bar(config.iterations);
+    let mut on_event = |event: &TrainEvent| show_event(&bar, event);
     let outcome = train::train(
         &capture,
         &args.out,
@@ -161,4 +122,58 @@ pub fn run(args: &TrainArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The training progress bar: iteration, stage, loss, surfels, test PSNR and the run's own ETA
+/// (which knows that PolarDR steps cost more than geometry steps).
+pub fn progress_bar(iterations: u32) -> ProgressBar {
+    let bar = ProgressBar::new(u64::from(iterations));
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:30} {pos}/{len} {msg}")
+            .expect("valid template"),
+    );
+    bar
+}
+
+/// Shows one training event on `bar`.
+pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
+    match event {
+        TrainEvent::Started {
+            mode,
+            backend,
+            train_views,
+            resumed_from,
+            ..
+        } => {
+            bar.println(format!(
+                "training: mode {mode}, backend {backend}, {train_views} training views{}",
+                resumed_from.map_or(String::new(), |it| format!(", resumed at {it}"))
+            ));
+            bar.set_position(u64::from(resumed_from.unwrap_or(0)));
+        }
+        TrainEvent::Step {
+            iteration,
+            stage,
+            loss,
+            num_surfels,
+            eta_seconds,
+            ..
+        } => {
+            bar.set_position(u64::from(*iteration));
+            let eta = eta_seconds.max(0.0).round() as u64;
+            bar.set_message(format!(
+                "{stage:?} loss {loss:.4} surfels {num_surfels} (eta {}:{:02})",
+                eta / 60,
+                eta % 60
+            ));
+        }
+        TrainEvent::Evaluated {
+            iteration,
+            test_psnr,
+        } => bar.println(format!("step {iteration}: test PSNR {test_psnr:.2} dB")),
+        TrainEvent::Checkpoint { .. } => {}
+        TrainEvent::Finished { seconds, .. } => {
+            bar.finish_with_message(format!("done in {seconds:.1} s"));
+        }
+    }
 }

@@ -19,6 +19,7 @@
 
 mod angles;
 mod engine;
+mod eta;
 pub mod state;
 pub mod step;
 pub mod targets;
@@ -56,6 +57,7 @@ use crate::surfels::init::init_from_visual_hull;
 use crate::surfels::Surfels;
 
 use engine::{Engine, Pending};
+use eta::Eta;
 use state::{TrainState, CHECKPOINT_FILE};
 use targets::{learned_groups, resolve_mode, ViewTarget};
 
@@ -116,6 +118,24 @@ pub fn stage_of(it: u32, config: &TrainConfig) -> Stage {
     } else {
         Stage::Polar
     }
+}
+
+/// The most surfels densification may grow to: `surfels_per_mask_pixel` times the mean object
+/// area (mask pixels) of the training views, within `initial_surfels..=max_surfels`. Surfels
+/// beyond a few per pixel of the object add cost to every step and no detail the images hold (the
+/// knot grew to 13 per pixel under the 300k cap alone).
+fn surfel_budget(config: &TrainConfig, targets: &[ViewTarget]) -> usize {
+    let cap = config.max_surfels as usize;
+    if config.surfels_per_mask_pixel <= 0.0 || targets.is_empty() {
+        return cap;
+    }
+    let mask_pixels: f64 = targets
+        .iter()
+        .map(|t| t.mask.iter().sum::<f64>())
+        .sum::<f64>()
+        / targets.len() as f64;
+    let budget = (config.surfels_per_mask_pixel * mask_pixels).round() as usize;
+    budget.clamp(config.initial_surfels as usize, cap)
 }
 
 /// The generator of iteration `it`: a pure function of the seed and the iteration.
@@ -265,6 +285,7 @@ pub fn train_on(
         });
     }
     let bounds = capture.object_bounds();
+    let max_surfels = surfel_budget(config, &targets);
     let run = Run {
         capture,
         config,
@@ -278,7 +299,7 @@ pub fn train_on(
             bounds.radius,
             config.densify_grad_threshold,
             config.prune_opacity,
-            config.max_surfels as usize,
+            max_surfels,
         ),
         backend,
         model_dir,
@@ -351,6 +372,7 @@ impl Run<'_> {
         let mut occlusion = Occlusion::default();
         let report_every = (self.config.iterations / 300).clamp(1, 25);
         let iterations = self.config.iterations;
+        let mut eta = Eta::start(state.iteration);
         while state.iteration < iterations {
             if cancel.load(Ordering::Relaxed) {
                 self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
@@ -414,8 +436,7 @@ impl Run<'_> {
             let done = state.iteration;
             if done.is_multiple_of(report_every) || done == iterations {
                 let seconds = elapsed();
-                let done_this_session = f64::from(done - resumed_from.unwrap_or(0)).max(1.0);
-                let rate = session_start.elapsed().as_secs_f64() / done_this_session;
+                eta.observe(done, stage);
                 reporter.emit(TrainEvent::Step {
                     iteration: done,
                     iterations,
@@ -424,7 +445,7 @@ impl Run<'_> {
                     losses: outcome.losses.clone(),
                     num_surfels: state.surfels.len(),
                     elapsed_seconds: seconds,
-                    eta_seconds: rate * f64::from(iterations - done),
+                    eta_seconds: eta.remaining(done, self.config),
                 });
             }
             if self.config.eval_interval > 0
@@ -797,6 +818,36 @@ mod tests {
             ..TrainConfig::default()
         };
         (crate::capture::load(&capture_dir).unwrap(), config)
+    }
+
+    #[test]
+    fn the_surfel_budget_follows_the_object_area() {
+        let target = |mask_pixels: usize| ViewTarget {
+            view: 0,
+            photometric: Vec::new(),
+            stokes: None,
+            polarizer: None,
+            mask: (0..10_000)
+                .map(|i| f64::from(u8::from(i < mask_pixels)))
+                .collect(),
+        };
+        let config = TrainConfig {
+            initial_surfels: 1_000,
+            max_surfels: 30_000,
+            surfels_per_mask_pixel: 4.0,
+            ..TrainConfig::default()
+        };
+        // Mean object area 2,500 pixels → 10,000 surfels.
+        let views = [target(2_000), target(3_000)];
+        assert_eq!(surfel_budget(&config, &views), 10_000);
+        // Within initial_surfels..=max_surfels.
+        assert_eq!(surfel_budget(&config, &[target(100)]), 1_000);
+        assert_eq!(surfel_budget(&config, &[target(9_000)]), 30_000);
+        let off = TrainConfig {
+            surfels_per_mask_pixel: 0.0,
+            ..config
+        };
+        assert_eq!(surfel_budget(&off, &views), 30_000);
     }
 
     #[test]

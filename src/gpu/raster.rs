@@ -49,7 +49,7 @@ use crate::raster::{
     StageTime,
 };
 use crate::shading::{
-    self, GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
+    self, GBufferGrad, SavedShading, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
 };
 use crate::surfels::{SurfelGrads, Surfels};
 
@@ -1135,6 +1135,17 @@ impl Backend for GpuBackend {
             Some(lighting) => self.shade_on_device(camera, buffers, lighting, lut),
             None => shading::shade_image(camera, buffers, light, lut),
         }
+    }
+
+    /// The device keeps nothing between the passes: [`Self::shade`].
+    fn shade_saved(
+        &self,
+        camera: &Camera,
+        buffers: &ShadingBuffers,
+        light: &dyn LightProbe,
+        lut: &BrdfLut,
+    ) -> Result<(StokesImage, Option<SavedShading>), ShadingError> {
+        Ok((self.shade(camera, buffers, light, lut)?, None))
     }
 
     fn shade_backward(

@@ -26,7 +26,7 @@ use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::envmap::{EnvGrad, LightProbe};
 use crate::shading::{
-    self, GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
+    self, GBufferGrad, SavedShading, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
 };
 use crate::surfels::{SurfelGrads, Surfels};
 
@@ -296,6 +296,38 @@ pub trait Backend: Send + Sync {
         lut: &BrdfLut,
     ) -> Result<StokesImage, ShadingError> {
         shading::shade_image(camera, buffers, light, lut)
+    }
+    /// [`Self::shade`] for a training step, which calls [`Self::shade_backward_saved`] next:
+    /// the host's shader keeps its forward intermediates ([`shading::shade_image_saved`]) so the
+    /// backward pass does not look the light up again; a backend that shades on its own device
+    /// keeps nothing (`None`).
+    fn shade_saved(
+        &self,
+        camera: &Camera,
+        buffers: &ShadingBuffers,
+        light: &dyn LightProbe,
+        lut: &BrdfLut,
+    ) -> Result<(StokesImage, Option<SavedShading>), ShadingError> {
+        let (image, saved) = shading::shade_image_saved(camera, buffers, light, lut)?;
+        Ok((image, Some(saved)))
+    }
+    /// Backward of [`Self::shade_saved`]: from its intermediates where it kept them, else
+    /// [`Self::shade_backward`].
+    fn shade_backward_saved(
+        &self,
+        camera: &Camera,
+        buffers: &ShadingBuffers,
+        light: &dyn LightProbe,
+        lut: &BrdfLut,
+        saved: Option<&SavedShading>,
+        upstream: &StokesImageGrad,
+    ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
+        match saved {
+            Some(saved) => {
+                shading::shade_image_backward_saved(camera, buffers, light, lut, saved, upstream)
+            }
+            None => self.shade_backward(camera, buffers, light, lut, upstream),
+        }
     }
     /// Backward of [`Self::shade`] ([`shading::shade_image_backward`], the default).
     fn shade_backward(

@@ -420,6 +420,25 @@ fn image_batch_matches_per_pixel_shading() {
         },
     )
     .unwrap();
+    // The training step's path keeps the forward intermediates: the same numbers, bit for bit.
+    let (img_saved, saved) = shade_image_saved(&camera, &buffers, &env, &lut).unwrap();
+    assert_eq!(img_saved, img);
+    let (gbuf_saved, env_saved) = shade_image_backward_saved(
+        &camera,
+        &buffers,
+        &env,
+        &lut,
+        &saved,
+        &StokesImageGrad {
+            s0: &s0,
+            s1: &s1,
+            s2: &s2,
+        },
+    )
+    .unwrap();
+    assert_eq!(gbuf_saved, gbuf);
+    assert_eq!(env_saved.levels, env_grad.levels);
+    assert_eq!(env_saved.irradiance, env_grad.irradiance);
     let mut expected_env = env.zero_grad();
     for p in 0..n {
         if !active[p] {

@@ -207,10 +207,11 @@ pub fn run(
         None
     } else {
         let inputs = ShadingInputs::new(g, camera);
-        let image = scene
-            .backend
-            .shade(camera, &inputs.buffers(g), scene.light, scene.lut)?;
-        Some((inputs, image))
+        let (image, saved) =
+            scene
+                .backend
+                .shade_saved(camera, &inputs.buffers(g), scene.light, scene.lut)?;
+        Some((inputs, image, saved))
     };
 
     // Photometric prediction, α-premultiplied like the capture.
@@ -219,7 +220,7 @@ pub fn run(
         let a = g.alpha[p];
         let colour = match &shaded {
             None => DVec3::from_array(g.albedo[p]) * unpolarized_scale,
-            Some((_, s)) => match theta {
+            Some((_, s, _)) => match theta {
                 None => s.s0[p] * unpolarized_scale,
                 Some(t) => 0.5 * (s.s0[p] + s.s1[p] * (2.0 * t).cos() + s.s2[p] * (2.0 * t).sin()),
             },
@@ -233,7 +234,7 @@ pub fn run(
     // Stokes loss on S1/S2 (full views) or the extra L1 on I(θ) (partial views), PolarDR stage only.
     let mut grad_s12: Option<(Vec<f64>, Vec<f64>)> = None;
     if plan.stokes_loss || plan.extra_l1 {
-        if let (Some((t1, t2)), Some((_, s))) = (&target.stokes, &shaded) {
+        if let (Some((t1, t2)), Some((_, s, _))) = (&target.stokes, &shaded) {
             let premul = |v: &[DVec3]| -> Vec<f64> {
                 v.iter()
                     .zip(&g.alpha)
@@ -303,7 +304,7 @@ pub fn run(
                 up.alpha[p] += k * albedo.dot(gp);
             }
         }
-        Some((inputs_px, s)) => {
+        Some((inputs_px, s, saved)) => {
             let mut d0 = vec![DVec3::ZERO; pixels];
             let mut d1 = vec![DVec3::ZERO; pixels];
             let mut d2 = vec![DVec3::ZERO; pixels];
@@ -333,11 +334,12 @@ pub fn run(
                     up.alpha[p] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
                 }
             }
-            let (gb, env_g) = scene.backend.shade_backward(
+            let (gb, env_g) = scene.backend.shade_backward_saved(
                 camera,
                 &inputs_px.buffers(g),
                 scene.light,
                 scene.lut,
+                saved.as_ref(),
                 &StokesImageGrad {
                     s0: &d0,
                     s1: &d1,

@@ -1,7 +1,9 @@
 //! Synthetic full-Stokes captures rendered by the project's own PolarDR: analytic shapes (sphere,
-//! torus) ray-marched through their signed distance, lit by a procedural HDR sky, written in the
+//! torus, a four-legged horned creature with thin limbs) ray-marched through their signed
+//! distance, with a plain or a checkered albedo, lit by a procedural HDR sky, written in the
 //! capture format with ground-truth G-buffers. They make README's main command and the core's
-//! tests work on a fresh clone without `../shared`.
+//! tests work on a fresh clone without `../shared`, and give objects beyond the shared captures
+//! to check the training defaults on.
 //!
 //! Threading: views are rendered in parallel with rayon, one view per task.
 
@@ -31,6 +33,48 @@ pub enum Shape {
     Sphere,
     /// Torus of radii 0.7 and 0.3 lying in the XY plane (concave, self-occluding).
     Torus,
+    /// A four-legged animal made of capsules: a body, neck and head, legs 0.11 wide, two horns
+    /// 0.07 wide and a tail 0.06 wide (thin parts a few pixels across, like real figurines).
+    Creature,
+}
+
+/// The albedo pattern of a synthetic object.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Texture {
+    /// One albedo everywhere.
+    #[default]
+    Plain,
+    /// A 3D checkerboard of cells 0.2 wide alternating the albedo and a pale complement.
+    Checker,
+}
+
+/// The capsules of [`Shape::Creature`]: segment ends and radius.
+const CREATURE: [(DVec3, DVec3, f64); 12] = {
+    const fn v(x: f64, y: f64, z: f64) -> DVec3 {
+        DVec3::new(x, y, z)
+    }
+    [
+        (v(-0.45, 0.0, 0.1), v(0.3, 0.0, 0.15), 0.28), // body
+        (v(0.3, 0.0, 0.2), v(0.58, 0.0, 0.36), 0.12),  // neck
+        (v(0.6, 0.0, 0.36), v(0.72, 0.0, 0.32), 0.15), // head
+        (v(0.3, 0.15, 0.0), v(0.32, 0.18, -0.75), 0.055), // legs
+        (v(0.3, -0.15, 0.0), v(0.32, -0.18, -0.75), 0.055),
+        (v(-0.4, 0.15, 0.0), v(-0.42, 0.18, -0.75), 0.055),
+        (v(-0.4, -0.15, 0.0), v(-0.42, -0.18, -0.75), 0.055),
+        (v(0.62, 0.08, 0.46), v(0.64, 0.2, 0.72), 0.035), // horns
+        (v(0.62, -0.08, 0.46), v(0.64, -0.2, 0.72), 0.035),
+        (v(-0.62, 0.0, 0.2), v(-0.86, 0.0, 0.36), 0.03), // tail
+        (v(0.8, 0.07, 0.36), v(0.84, 0.07, 0.36), 0.03), // eyes
+        (v(0.8, -0.07, 0.36), v(0.84, -0.07, 0.36), 0.03),
+    ]
+};
+
+/// Distance from `p` to a capsule (segment `a`–`b` of radius `r`).
+fn capsule_distance(p: DVec3, a: DVec3, b: DVec3, r: f64) -> f64 {
+    let ab = b - a;
+    let t = ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
+    (p - (a + ab * t)).length() - r
 }
 
 /// What to render.
@@ -45,6 +89,7 @@ pub struct SynthOptions {
     pub albedo: DVec3,
     pub roughness: f64,
     pub ior: f64,
+    pub texture: Texture,
 }
 
 impl Default for SynthOptions {
@@ -56,6 +101,7 @@ impl Default for SynthOptions {
             albedo: DVec3::new(0.55, 0.2, 0.08),
             roughness: 0.3,
             ior: 1.5,
+            texture: Texture::Plain,
         }
     }
 }
@@ -83,6 +129,25 @@ fn signed_distance(shape: Shape, p: DVec3) -> f64 {
             let ring = (p.x * p.x + p.y * p.y).sqrt() - 0.7;
             (ring * ring + p.z * p.z).sqrt() - 0.3
         }
+        Shape::Creature => CREATURE
+            .iter()
+            .map(|&(a, b, r)| capsule_distance(p, a, b, r))
+            .fold(f64::INFINITY, f64::min),
+    }
+}
+
+/// The albedo at surface point `p`.
+fn albedo_at(options: &SynthOptions, p: DVec3) -> DVec3 {
+    match options.texture {
+        Texture::Plain => options.albedo,
+        Texture::Checker => {
+            let cell = (p / 0.2).floor();
+            if (cell.x + cell.y + cell.z).rem_euclid(2.0) < 1.0 {
+                options.albedo
+            } else {
+                DVec3::splat(0.85) - options.albedo * 0.6
+            }
+        }
     }
 }
 
@@ -93,6 +158,12 @@ fn surface_normal(shape: Shape, p: DVec3) -> DVec3 {
         Shape::Torus => {
             let radial = DVec3::new(p.x, p.y, 0.0).normalize_or_zero() * 0.7;
             (p - radial).normalize()
+        }
+        Shape::Creature => {
+            // The union's distance is smooth away from seams: its central-difference gradient.
+            let h = 1e-6;
+            let d = |e: DVec3| signed_distance(shape, p + e) - signed_distance(shape, p - e);
+            DVec3::new(d(DVec3::X * h), d(DVec3::Y * h), d(DVec3::Z * h)).normalize()
         }
     }
 }
@@ -207,6 +278,7 @@ fn render_view(
             };
             let p = origin + d * t;
             let n = surface_normal(options.shape, p);
+            let albedo = albedo_at(options, p);
             let (stokes_x, stokes_y) = camera.stokes_frame(d);
             let input = PixelInput {
                 position: p,
@@ -214,7 +286,7 @@ fn render_view(
                 view: -d,
                 stokes_x,
                 stokes_y,
-                albedo: options.albedo,
+                albedo,
                 roughness: options.roughness,
                 ior: options.ior,
             };
@@ -226,7 +298,7 @@ fn render_view(
             v.mask.data[px] = 1.0;
             v.normal.data[px * 3..px * 3 + 3].copy_from_slice(&n.as_vec3().to_array());
             v.depth.data[px] = camera.to_camera(p).z as f32;
-            v.albedo.data[px * 3..px * 3 + 3].copy_from_slice(&options.albedo.as_vec3().to_array());
+            v.albedo.data[px * 3..px * 3 + 3].copy_from_slice(&albedo.as_vec3().to_array());
             v.roughness.data[px] = (options.roughness * options.roughness) as f32;
             v.ior.data[px] = options.ior as f32;
         }
@@ -338,6 +410,7 @@ pub fn synth(out_dir: &Path, options: &SynthOptions) -> Result<(), SynthError> {
         "fl_x": cam.fx, "fl_y": cam.fy, "cx": cam.cx, "cy": cam.cy,
         "generator": "phygap synth",
         "shape": options.shape,
+        "texture": options.texture,
         "env_map": {"train_test": "env/sky.exr", "relight": "env/relight.exr"},
         "material": {
             "albedo_rgb_linear": options.albedo.to_array(),
@@ -367,6 +440,37 @@ mod tests {
         assert!((t - 3.7).abs() < 1e-8);
         let n = surface_normal(Shape::Torus, DVec3::new(0.7, 0.0, 0.3));
         assert!(n.abs_diff_eq(DVec3::Z, 1e-12));
+    }
+
+    #[test]
+    fn the_creature_has_thin_legs_inside_the_bounding_sphere() {
+        // A ray along +y through the nearer front leg's middle hits that leg's near side.
+        let leg = DVec3::new(0.31, -0.165, -0.4);
+        let t = trace(Shape::Creature, leg + DVec3::new(0.0, -3.0, 0.0), DVec3::Y).unwrap();
+        let hit = leg + DVec3::new(0.0, -3.0, 0.0) + DVec3::Y * t;
+        assert!((hit.y - (leg.y - 0.055)).abs() < 2e-3, "{hit}");
+        // Just beside the leg: a miss (it is 0.11 wide).
+        let beside = DVec3::new(0.31 + 0.08, -3.0, -0.4);
+        assert!(trace(Shape::Creature, beside, DVec3::Y).is_none());
+        // Every capsule lies inside the 1.05 sphere the tracer clips to.
+        for (a, b, r) in CREATURE {
+            assert!(a.length() + r < 1.05 && b.length() + r < 1.05);
+        }
+        let n = surface_normal(Shape::Creature, hit);
+        assert!(n.dot(-DVec3::Y) > 0.95, "{n}");
+    }
+
+    #[test]
+    fn the_checker_alternates_two_albedos() {
+        let options = SynthOptions {
+            texture: Texture::Checker,
+            ..SynthOptions::default()
+        };
+        let a = albedo_at(&options, DVec3::new(0.05, 0.05, 0.05));
+        let b = albedo_at(&options, DVec3::new(0.25, 0.05, 0.05));
+        assert_eq!(a, options.albedo);
+        assert!((a - b).abs().max_element() > 0.2);
+        assert_eq!(albedo_at(&options, DVec3::new(0.25, 0.25, 0.05)), a);
     }
 
     #[test]

@@ -1,12 +1,12 @@
-//! `phygap synth --out DIR [--shape sphere|torus] [--views N] [--size PX]`: render a small
-//! full-Stokes sample capture with the project's own renderer.
+//! `phygap synth --out DIR [--shape sphere|torus|creature] [--texture plain|checker] [--views N]
+//! [--size PX]`: render a small full-Stokes sample capture with the project's own renderer.
 
 use std::path::PathBuf;
 
 use anyhow::Result;
 use clap::Args;
 
-use phygap::synth::{self, Shape, SynthOptions};
+use phygap::synth::{self, Shape, SynthOptions, Texture};
 
 #[derive(Args, Debug)]
 pub struct SynthArgs {
@@ -15,6 +15,9 @@ pub struct SynthArgs {
     pub out: PathBuf,
     #[arg(long, value_enum, default_value = "sphere")]
     pub shape: Shape,
+    /// Albedo pattern.
+    #[arg(long, value_enum, default_value = "plain")]
+    pub texture: Texture,
     /// Number of views (every 8th is a test view).
     #[arg(long, default_value_t = 24)]
     pub views: usize,
@@ -28,6 +31,7 @@ pub fn run(args: &SynthArgs) -> Result<()> {
         shape: args.shape,
         views: args.views,
         size: args.size,
+        texture: args.texture,
         ..SynthOptions::default()
     };
     synth::synth(&args.out, &options)?;

@@ -4,12 +4,12 @@
 # capture, train it, and list the results. The service keeps running afterwards (Ctrl-C stops it).
 #
 # Settings (environment): PHYGAP_PORT (8080), PHYGAP_DATA_DIR (./phygap-data),
-# PHYGAP_QUICKSTART_ITERATIONS (3000).
+# PHYGAP_QUICKSTART_ITERATIONS (default: the default training schedule's).
 set -euo pipefail
 cd "$(dirname "$0")"
 port=${PHYGAP_PORT:-8080}
 data=${PHYGAP_DATA_DIR:-./phygap-data}
-iterations=${PHYGAP_QUICKSTART_ITERATIONS:-3000}
+iterations=${PHYGAP_QUICKSTART_ITERATIONS:-}
 base="http://127.0.0.1:$port"
 
 cargo build --release --workspace --bins
@@ -32,15 +32,18 @@ done
 json_field() { sed -n "s/.*\"$1\":\"\\([^\"]*\\)\".*/\\1/p"; }
 capture=$(curl -fsS --data-binary @"$data/sample-capture.tar" "$base/v1/captures" | json_field id)
 echo "uploaded capture $capture"
+config=${iterations:+"\"iterations\":$iterations"}
 job=$(curl -fsS -H 'content-type: application/json' \
-  -d "{\"capture_id\":\"$capture\",\"config\":{\"iterations\":$iterations}}" \
+  -d "{\"capture_id\":\"$capture\",\"config\":{$config}}" \
   "$base/v1/jobs" | json_field id)
-echo "submitted job $job ($iterations iterations); progress:"
+echo "submitted job $job (${iterations:-default} iterations); progress:"
 while true; do
   status=$(curl -fsS "$base/v1/jobs/$job")
   state=$(echo "$status" | json_field state)
   iteration=$(echo "$status" | sed -n 's/.*"iteration":\([0-9]*\).*/\1/p')
-  printf '\r  %-10s iteration %s/%s   ' "$state" "${iteration:-0}" "$iterations"
+  total=$(echo "$status" | sed -n 's/.*"iterations":\([0-9]*\).*/\1/p')
+  eta=$(echo "$status" | sed -n 's/.*"eta_seconds":\([0-9]*\).*/\1/p')
+  printf '\r  %-10s iteration %s/%s  eta %ss   ' "$state" "${iteration:-0}" "${total:-?}" "${eta:-?}"
   case "$state" in succeeded|failed|cancelled) echo; break ;; esac
   sleep 2
 done

@@ -13,14 +13,27 @@ use crate::surfels::{Surfel, Surfels};
 
 /// `../shared/data` beside the repository, or `None` after printing the skip notice that tests
 /// reading the shared captures give when it is absent (the project passes from a clone alone).
+///
+/// # Panics
+/// Under `CI=true`, where the folder is always provided: a missing one must fail the run, not
+/// pass every test that needs it.
 pub fn shared_data_dir() -> Option<PathBuf> {
     let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data"));
     if dir.is_dir() {
         Some(dir.to_path_buf())
     } else {
+        assert!(
+            !running_in_ci(),
+            "../shared/data not found, and CI=true: CI always has it"
+        );
         println!("skipping: ../shared/data not found");
         None
     }
+}
+
+/// Whether the tests run under CI (`CI=true`), where nothing they need may be missing.
+pub fn running_in_ci() -> bool {
+    std::env::var("CI").is_ok_and(|v| v == "true" || v == "1")
 }
 
 /// Upstream gradients of a `width × height` G-buffer, every entry uniform in [−1, 1), drawn

@@ -13,7 +13,7 @@ use rand_chacha::ChaCha8Rng;
 
 /// Whether this runs under CI (`CI=true`), where a missing adapter is a failure.
 pub fn in_ci() -> bool {
-    std::env::var("CI").is_ok_and(|v| v == "true" || v == "1")
+    phygap::testing::running_in_ci()
 }
 
 /// The gpu backend, or `None` (after printing why) where no adapter exists outside CI.

@@ -124,6 +124,10 @@ pub struct TrainConfig {
     pub mesh_interval: u32,
     /// Steps between GridMap rebuilds.
     pub gridmap_interval: u32,
+    /// Steps after an opacity reset before GridMap's mesh and probes are rebuilt again (a mesh
+    /// extracted from freshly reset, nearly transparent surfels is empty); a remesh that falls due
+    /// meanwhile runs when they are over.
+    pub opacity_recovery_steps: u32,
 }
 
 impl Default for TrainConfig {
@@ -168,6 +172,7 @@ impl Default for TrainConfig {
             eval_interval: 1_000,
             mesh_interval: 1_000,
             gridmap_interval: 300,
+            opacity_recovery_steps: 300,
         }
     }
 }

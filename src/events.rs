@@ -44,6 +44,9 @@ pub enum TrainEvent {
     },
     /// Test-view PSNR (sRGB 8-bit S0 inside the mask).
     Evaluated { iteration: u32, test_psnr: f64 },
+    /// Something went wrong that the run works around (e.g. GridMap's mesh could not be
+    /// extracted and the previous one is kept); the message says what and how.
+    Warning { iteration: u32, message: String },
     /// A checkpoint was written; training can resume from here.
     Checkpoint { iteration: u32 },
     /// The run finished; the model folder is complete.

@@ -734,3 +734,71 @@ fn an_interrupted_device_run_resumes_from_its_checkpoint() {
         "final loss {b} after resuming vs {a}"
     );
 }
+
+/// GridMap's mesh on a device run (issue: "GridMap mesh extraction failed: the TSDF has no zero
+/// crossing" during PolarDR on a GPU). The cause was the schedule, not the device: the remesh that
+/// follows an opacity reset fuses nearly transparent surfels, whose rendered opacity never reaches
+/// the TSDF's ½. A 200-step device run whose reset (after 110 steps) falls on a remesh shows the
+/// failure without the wait and none with it; every remesh renders depth through the per-call
+/// rasterizer while the trainer owns the device.
+#[test]
+fn a_device_run_remeshes_gridmap_without_failures() {
+    use phygap::config::TrainConfig;
+    use phygap::events::TrainEvent;
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let options = phygap::synth::SynthOptions {
+        shape: phygap::synth::Shape::Torus,
+        views: 9,
+        size: 24,
+        ..Default::default()
+    };
+    phygap::synth::synth(&dir.path().join("capture"), &options).unwrap();
+    let capture = phygap::capture::load(&dir.path().join("capture")).unwrap();
+    let run = |recovery: u32| {
+        let config = TrainConfig {
+            iterations: 200,
+            initial_surfels: 1500,
+            envmap_resolution: 16,
+            geometry_stage_end: 0.2,
+            material_stage_end: 0.3,
+            checkpoint_interval: 0,
+            eval_interval: 0,
+            mesh_interval: 50,
+            gridmap_interval: 25,
+            opacity_reset_interval: 110,
+            opacity_recovery_steps: recovery,
+            ..TrainConfig::default()
+        };
+        let cancel = std::sync::atomic::AtomicBool::new(false);
+        let mut warnings = Vec::new();
+        let mut description = String::new();
+        phygap::train::train_on(
+            &gpu,
+            &capture,
+            &dir.path().join(format!("model{recovery}")),
+            &config,
+            false,
+            &cancel,
+            &mut |e| match e {
+                TrainEvent::Started { backend, .. } => description = backend.clone(),
+                TrainEvent::Warning { iteration, message } => {
+                    warnings.push((*iteration, message.clone()))
+                }
+                _ => {}
+            },
+        )
+        .unwrap();
+        assert!(
+            description.ends_with("whole steps on the device"),
+            "{description}"
+        );
+        warnings
+    };
+    let failed = run(0);
+    assert_eq!(failed.len(), 1, "{failed:?}");
+    assert_eq!(failed[0].0, 110);
+    assert_eq!(run(80), []);
+}

@@ -133,6 +133,9 @@ pub struct Progress {
     /// The compute backend the latest run trains on (absent in rows written before it existed).
     #[serde(default)]
     pub backend: Option<String>,
+    /// The run's latest warning (e.g. a GridMap mesh that could not be extracted), if any.
+    #[serde(default)]
+    pub warning: Option<String>,
 }
 
 /// A job as stored.

@@ -37,6 +37,8 @@ pub struct QualityRun {
     pub score_wall_seconds: f64,
     /// The run's test PSNR at each evaluation (every `eval_interval` steps and at the end).
     pub progress: Vec<PsnrReading>,
+    /// The run's warnings (e.g. a GridMap mesh that could not be extracted), with their step.
+    pub warnings: Vec<String>,
     /// Every metric of the final model (relit and mesh metrics where `truth` has them).
     pub metrics: EvalReport,
 }
@@ -69,6 +71,7 @@ pub fn bench_quality(
     let capture = crate::capture::load(capture_dir)?;
     let mut backend = String::new();
     let mut progress = Vec::new();
+    let mut warnings = Vec::new();
     let mut elapsed = 0.0;
     let never = AtomicBool::new(false);
     let outcome = train::train(&capture, model_dir, config, false, &never, &mut |event| {
@@ -85,6 +88,9 @@ pub fn bench_quality(
                 seconds: elapsed,
                 test_psnr: *test_psnr,
             }),
+            TrainEvent::Warning { iteration, message } => {
+                warnings.push(format!("step {iteration}: {message}"));
+            }
             _ => {}
         }
         on_event(event);
@@ -101,6 +107,7 @@ pub fn bench_quality(
         train_wall_seconds,
         score_wall_seconds: start.elapsed().as_secs_f64() - train_wall_seconds,
         progress,
+        warnings,
         metrics,
     })
 }

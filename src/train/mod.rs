@@ -393,14 +393,25 @@ impl Run<'_> {
                 env.refresh(&state, &self.plan, &mut occlusion)?;
                 state.polarizer_angles = angles::estimate(self, &state, &env.prepared)?;
             }
-            if stage == Stage::Polar && self.config.gridmap {
+            // GridMap waits while the opacities recover from a reset: its mesh is fused from
+            // rendered opacity ≥ ½, which no surfel at opacity 0.01 gives.
+            if stage == Stage::Polar && self.config.gridmap && !self.recovering_from_reset(it) {
                 let since = it - self.config.polar_stage_start();
                 let due = |interval: u32| interval > 0 && since.is_multiple_of(interval);
-                let remesh = !occlusion.current || due(self.config.mesh_interval);
+                let remesh = !occlusion.current
+                    || due(self.config.mesh_interval)
+                    || self.deferred_remesh_due(it);
                 if remesh || due(self.config.gridmap_interval) {
                     engine.sync(&mut state)?;
                     env.refresh(&state, &self.plan, &mut occlusion)?;
-                    self.rebuild_gridmap(&mut occlusion, &state, &env.prepared, remesh);
+                    let warning =
+                        self.rebuild_gridmap(&mut occlusion, &state, &env.prepared, remesh);
+                    if let Some(message) = warning {
+                        reporter.emit(TrainEvent::Warning {
+                            iteration: it,
+                            message,
+                        });
+                    }
                     engine.set_gridmap(occlusion.grid.as_ref())?;
                 }
             }
@@ -510,7 +521,12 @@ impl Run<'_> {
         let last_stage = stage_of(iterations.saturating_sub(1), self.config);
         let mut occlusion = Occlusion::default();
         if last_stage == Stage::Polar && self.config.gridmap {
-            self.rebuild_gridmap(&mut occlusion, &state, &env, true);
+            if let Some(message) = self.rebuild_gridmap(&mut occlusion, &state, &env, true) {
+                reporter.emit(TrainEvent::Warning {
+                    iteration: state.iteration,
+                    message,
+                });
+            }
         }
         self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)?;
         Ok(TrainOutcome::Finished)
@@ -614,6 +630,41 @@ impl Run<'_> {
         reset > 0 && it.is_multiple_of(reset) && it <= until
     }
 
+    /// The last opacity reset the state at the start of iteration `it` has had: a reset "at r"
+    /// is applied after `r` steps, so iteration `r` is the first to see it.
+    fn last_reset(&self, it: u32) -> Option<u32> {
+        let interval = self.config.opacity_reset_interval;
+        if interval == 0 {
+            return None;
+        }
+        let until = (self.config.densify_until * f64::from(self.config.iterations)).round() as u32;
+        let last = it.min(until) / interval * interval;
+        (last > 0).then_some(last)
+    }
+
+    /// Whether iteration `it` falls in the `opacity_recovery_steps` after a reset.
+    fn recovering_from_reset(&self, it: u32) -> bool {
+        self.last_reset(it)
+            .is_some_and(|r| it < r + self.config.opacity_recovery_steps)
+    }
+
+    /// Whether iteration `it` ends a recovery window inside which a PolarDR-stage remesh fell
+    /// due (it runs now instead). A pure function of `it`, so a resumed run does the same.
+    fn deferred_remesh_due(&self, it: u32) -> bool {
+        let (recovery, interval) = (
+            self.config.opacity_recovery_steps,
+            self.config.mesh_interval,
+        );
+        let Some(reset) = self.last_reset(it) else {
+            return false;
+        };
+        if recovery == 0 || interval == 0 || it != reset + recovery {
+            return false;
+        }
+        let start = self.config.polar_stage_start();
+        (reset.max(start)..it).any(|i| (i - start).is_multiple_of(interval))
+    }
+
     /// Densify/prune and opacity reset on their schedules (METHOD.md §7).
     fn refine(
         &self,
@@ -650,34 +701,55 @@ impl Run<'_> {
     }
 
     /// Extracts the mesh of the current surfels (with `remesh`, else keeps the last one) and
-    /// rebuilds GridMap's probes under the current environment. A failure (no surface yet, say)
-    /// is logged and leaves the run on the global light until the next scheduled rebuild.
+    /// rebuilds GridMap's probes under the current environment. A failed extraction keeps the
+    /// previous mesh; without one, or when the probes fail, the run stays on the global light
+    /// until the next scheduled rebuild. Returns what failed, for the run's warning event.
     fn rebuild_gridmap(
         &self,
         occlusion: &mut Occlusion,
         state: &TrainState,
         env: &PreparedEnv,
         remesh: bool,
-    ) {
+    ) -> Option<String> {
         let _span = tracing::info_span!("gridmap_rebuild", iteration = state.iteration).entered();
         occlusion.current = true;
+        let mut warning = None;
         if remesh {
             let cameras: Vec<_> = self.train_cameras().into_iter().map(|(_, c)| c).collect();
-            occlusion.mesh = meshing::mesh_from_surfels(
+            match meshing::mesh_from_surfels(
                 &state.surfels,
                 &cameras,
                 self.backend,
                 &self.settings,
                 GRIDMAP_MESH_RESOLUTION,
-            )
-            .inspect_err(|e| tracing::warn!("GridMap mesh extraction failed: {e}"))
-            .ok();
+            ) {
+                Ok(mesh) => occlusion.mesh = Some(mesh),
+                Err(e) => {
+                    let kept = if occlusion.mesh.is_some() {
+                        "keeping the previous mesh"
+                    } else {
+                        "on the global light until the next rebuild"
+                    };
+                    warning = Some(format!("GridMap mesh extraction failed ({kept}): {e}"));
+                }
+            }
         }
-        occlusion.grid = occlusion.mesh.as_ref().and_then(|mesh| {
-            GridMap::build(mesh, &state.surfels, &state.envmap, env.clone())
-                .inspect_err(|e| tracing::warn!("GridMap build failed: {e}"))
-                .ok()
-        });
+        occlusion.grid = match occlusion.mesh.as_ref() {
+            None => None,
+            Some(mesh) => match GridMap::build(mesh, &state.surfels, &state.envmap, env.clone()) {
+                Ok(grid) => Some(grid),
+                Err(e) => {
+                    warning = Some(format!(
+                        "GridMap build failed (on the global light until the next rebuild): {e}"
+                    ));
+                    None
+                }
+            },
+        };
+        if let Some(message) = &warning {
+            tracing::warn!("{message}");
+        }
+        warning
     }
 
     /// The light of a stage: GridMap over the environment in the PolarDR stage when it is on and
@@ -818,6 +890,107 @@ mod tests {
             ..TrainConfig::default()
         };
         (crate::capture::load(&capture_dir).unwrap(), config)
+    }
+
+    /// Events of a 200-step torus run whose opacity reset (after 110 steps) falls on a remesh
+    /// of the PolarDR stage (from step 60, every 50 steps), with `recovery` steps of waiting.
+    fn run_with_reset_on_a_remesh(recovery: u32) -> Vec<TrainEvent> {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let config = TrainConfig {
+            iterations: 200,
+            checkpoint_interval: 0,
+            mesh_interval: 50,
+            gridmap_interval: 25,
+            opacity_reset_interval: 110,
+            opacity_recovery_steps: recovery,
+            ..config
+        };
+        let mut events = Vec::new();
+        let never = AtomicBool::new(false);
+        train(
+            &capture,
+            &dir.path().join("m"),
+            &config,
+            false,
+            &never,
+            &mut |e| events.push(e.clone()),
+        )
+        .unwrap();
+        events
+    }
+
+    fn warnings(events: &[TrainEvent]) -> Vec<(u32, String)> {
+        events
+            .iter()
+            .filter_map(|e| match e {
+                TrainEvent::Warning { iteration, message } => Some((*iteration, message.clone())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn gridmap_waits_for_the_opacities_to_recover_from_a_reset() {
+        // Remeshing right after the reset finds nearly transparent surfels: the mesh fails (the
+        // defect seen on the device and the host alike), the previous mesh is kept and said so.
+        let failed = warnings(&run_with_reset_on_a_remesh(0));
+        assert_eq!(failed.len(), 1, "{failed:?}");
+        assert_eq!(failed[0].0, 110);
+        assert!(
+            failed[0].1.contains("keeping the previous mesh"),
+            "{}",
+            failed[0].1
+        );
+        // Waiting 80 steps defers that remesh to step 190, which succeeds, as does the final one.
+        assert_eq!(warnings(&run_with_reset_on_a_remesh(80)), []);
+    }
+
+    #[test]
+    fn the_recovery_window_and_the_deferred_remesh_are_functions_of_the_iteration() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, _) = torus_run(dir.path());
+        let config = TrainConfig {
+            iterations: 1_000,
+            material_stage_end: 0.3,
+            densify_until: 0.8,
+            opacity_reset_interval: 300,
+            opacity_recovery_steps: 40,
+            mesh_interval: 100,
+            ..TrainConfig::default()
+        };
+        let targets: Vec<ViewTarget> = capture
+            .train_views()
+            .enumerate()
+            .map(|(i, v)| ViewTarget::new(i, v, Mode::Full))
+            .collect();
+        let run = Run {
+            capture: &capture,
+            config: &config,
+            mode: Mode::Full,
+            backend: &crate::raster::cpu::CpuBackend,
+            settings: RasterSettings::default(),
+            lut: BrdfLut::shared(),
+            plan: prefilter_plan(16, false).unwrap(),
+            targets,
+            learning_rates: LearningRates::from_config(&config, 1.0),
+            densify_rules: DensifyRules::for_extent(1.0, 2e-4, 0.05, 1_000),
+            model_dir: dir.path(),
+        };
+        // Resets after 300 and 600 steps (900 is past densify_until = 800).
+        assert_eq!(run.last_reset(299), None);
+        assert_eq!(run.last_reset(300), Some(300));
+        assert_eq!(run.last_reset(950), Some(600));
+        let waiting: Vec<u32> = (0..1_000)
+            .filter(|&i| run.recovering_from_reset(i))
+            .collect();
+        assert_eq!(
+            waiting,
+            [(300..340).collect::<Vec<_>>(), (600..640).collect()].concat()
+        );
+        // PolarDR from 300: remeshes due at 300 and 600 fall in the windows and run at 340, 640.
+        let deferred: Vec<u32> = (0..1_000).filter(|&i| run.deferred_remesh_due(i)).collect();
+        assert_eq!(deferred, [340, 640]);
     }
 
     #[test]

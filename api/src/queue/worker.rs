@@ -147,6 +147,9 @@ pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
         }
         TrainEvent::Evaluated { test_psnr, .. } => progress.test_psnr = Some(*test_psnr),
         TrainEvent::Checkpoint { iteration } => progress.checkpoint_iteration = Some(*iteration),
+        TrainEvent::Warning { iteration, message } => {
+            progress.warning = Some(format!("iteration {iteration}: {message}"));
+        }
         TrainEvent::Finished { iteration, .. } => {
             progress.iteration = *iteration;
             progress.eta_seconds = Some(0.0);
@@ -416,6 +419,17 @@ mod tests {
             },
         );
         apply_event(&mut p, &TrainEvent::Checkpoint { iteration: 150 });
+        apply_event(
+            &mut p,
+            &TrainEvent::Warning {
+                iteration: 160,
+                message: "GridMap mesh extraction failed".into(),
+            },
+        );
+        assert_eq!(
+            p.warning.as_deref(),
+            Some("iteration 160: GridMap mesh extraction failed")
+        );
         assert_eq!(
             (p.test_psnr, p.checkpoint_iteration),
             (Some(27.5), Some(150))

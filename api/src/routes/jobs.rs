@@ -45,6 +45,7 @@ pub struct JobView {
     attempts: u32,
     resumed_from: Option<u32>,
     backend: Option<String>,
+    warning: Option<String>,
     cancel_requested: bool,
     #[serde(skip_serializing_if = "Option::is_none")]
     config: Option<TrainConfig>,
@@ -76,6 +77,7 @@ impl From<JobRecord> for JobView {
             attempts: job.attempts,
             resumed_from: job.progress.resumed_from,
             backend: job.progress.backend,
+            warning: job.progress.warning,
             cancel_requested: job.cancel_requested,
             config,
         }

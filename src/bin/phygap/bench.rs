@@ -308,6 +308,9 @@ fn run_quality(a: &QualityBenchArgs) -> Result<()> {
             r.iteration, r.seconds, r.test_psnr
         );
     }
+    for w in &run.warnings {
+        println!("warning: {w}");
+    }
     crate::eval::print_table(&run.metrics);
     Ok(())
 }

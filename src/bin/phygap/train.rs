@@ -171,6 +171,9 @@ pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
             iteration,
             test_psnr,
         } => bar.println(format!("step {iteration}: test PSNR {test_psnr:.2} dB")),
+        TrainEvent::Warning { iteration, message } => {
+            bar.println(format!("warning at step {iteration}: {message}"));
+        }
         TrainEvent::Checkpoint { .. } => {}
         TrainEvent::Finished { seconds, .. } => {
             bar.finish_with_message(format!("done in {seconds:.1} s"));

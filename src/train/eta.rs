@@ -18,10 +18,11 @@ use crate::events::Stage;
 /// device engine's shaded steps cost relatively less, so its estimate starts high and corrects
 /// itself as soon as a stage is measured.
 const SHADED_OVER_GEOMETRY: f64 = 1.7;
-const POLAR_OVER_MATERIAL: f64 = 1.5;
+const POLAR_OVER_MATERIAL: f64 = 1.4;
 
-/// Weight of the newest interval in a stage's moving average.
-const SMOOTHING: f64 = 0.2;
+/// Weight of the newest interval in a stage's moving average (reports come every ~20 steps, so
+/// the average spans a few hundred steps: GridMap's periodic rebuilds are spread over it).
+const SMOOTHING: f64 = 0.05;
 
 /// Per-stage step times of the run so far and the remaining time they imply.
 pub(super) struct Eta {

@@ -43,6 +43,11 @@ pub struct ServeArgs {
     #[arg(long, default_value_t = 1024, env = "PHYGAP_MAX_UPLOAD_MB",
           value_parser = clap::value_parser!(u64).range(1..=1_048_576))]
     pub max_upload_mb: u64,
+    /// PostgreSQL database for captures, jobs and the queue, shared by every process serving
+    /// the same data dir (`postgres://user:password@host:5432/phygap`); default: the embedded
+    /// SQLite file in the data dir.
+    #[arg(long, env = "PHYGAP_DATABASE_URL", hide_env_values = true)]
+    pub database_url: Option<String>,
 }
 
 impl ServeArgs {
@@ -52,6 +57,7 @@ impl ServeArgs {
         config.workers = self.workers;
         config.token = self.token.clone().filter(|t| !t.is_empty());
         config.max_upload_bytes = self.max_upload_mb << 20;
+        config.database_url = self.database_url.clone().filter(|url| !url.is_empty());
         config
     }
 }

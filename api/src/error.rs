@@ -108,7 +108,17 @@ impl IntoResponse for ApiError {
 
 impl From<crate::store::StoreError> for ApiError {
     fn from(e: crate::store::StoreError) -> Self {
-        ApiError::internal("accessing the job store", e)
+        match e {
+            crate::store::StoreError::Unavailable(detail) => {
+                tracing::error!(%detail, "the job store is unavailable");
+                ApiError::new(
+                    StatusCode::SERVICE_UNAVAILABLE,
+                    "store_unavailable",
+                    "the job database is unavailable; nothing was changed, try again shortly",
+                )
+            }
+            other => ApiError::internal("accessing the job store", other),
+        }
     }
 }
 

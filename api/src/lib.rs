@@ -1,12 +1,14 @@
-//! The phygap reconstruction service: a JSON HTTP API (axum) over a durable job queue (SQLite),
+//! The phygap reconstruction service: a JSON HTTP API (axum) over a durable job queue (SQLite or
+//! PostgreSQL),
 //! local artifact storage and a pool of workers that run the reconstruction core through the
 //! [`pipeline::Pipeline`] trait. HTTP handlers only validate, store and enqueue; all heavy work
 //! (archive extraction, capture loading, training, export, relighting) runs on tokio's blocking
 //! pool, one blocking thread per running job.
 //!
-//! Layout of `--data-dir`: `phygap.sqlite3` (captures, jobs, queue, progress), `captures/ID/`
+//! Layout of `--data-dir`: `phygap.sqlite3` (captures, jobs, queue, progress; unless a PostgreSQL
+//! `--database-url` holds them, shared by every process using the same data dir), `captures/ID/`
 //! (extracted captures), `jobs/ID/model/` (checkpoints), `jobs/ID/input/` (relight inputs),
-//! `artifacts/ID/` (downloadable results), `tmp/` (uploads in progress; emptied at start).
+//! `artifacts/ID/` (downloadable results), `tmp/` (uploads in progress; leftovers removed at start).
 
 pub mod archive;
 pub mod artifacts;
@@ -35,7 +37,7 @@ use crate::artifacts::{ArtifactError, ArtifactStore, FsArtifacts};
 use crate::metrics::Metrics;
 use crate::pipeline::Pipeline;
 use crate::queue::{CancelReason, Runtime};
-use crate::store::{SqliteStore, Store, StoreError};
+use crate::store::{PostgresStore, SqliteStore, Store, StoreError};
 
 /// Settings of one service instance.
 #[derive(Clone, Debug)]
@@ -56,6 +58,9 @@ pub struct ServiceConfig {
     pub max_attempts: u32,
     /// How often idle workers look for jobs queued by other processes.
     pub poll_interval: Duration,
+    /// A PostgreSQL database shared with other processes (`postgres://…`); without one, the
+    /// embedded SQLite file in the data dir.
+    pub database_url: Option<String>,
 }
 
 impl ServiceConfig {
@@ -71,6 +76,7 @@ impl ServiceConfig {
             lease: Duration::from_secs(30),
             max_attempts: 5,
             poll_interval: Duration::from_secs(1),
+            database_url: None,
         }
     }
 }
@@ -158,22 +164,47 @@ fn prepare_dir(path: &Path) -> Result<(), StartError> {
     })
 }
 
+/// How old a leftover must be before a process sharing its database and data dir with others
+/// removes it at start: older than any upload still in flight in another process.
+const SHARED_LEFTOVER_AGE: Duration = Duration::from_secs(3600);
+
+/// Whether `path` was last modified at least `min_age` ago (always, for a zero age).
+fn older_than(path: &Path, min_age: Duration) -> bool {
+    min_age.is_zero()
+        || std::fs::metadata(path)
+            .and_then(|m| m.modified())
+            .is_ok_and(|modified| modified.elapsed().is_ok_and(|age| age >= min_age))
+}
+
 /// Removes what a crash can leave behind: partial uploads, and capture folders whose database row
-/// was never written (or was deleted).
-fn sweep_leftovers(paths: &Paths, store: &dyn Store) -> Result<(), StartError> {
+/// was never written (or was deleted). Only leftovers older than `min_age` go (a shared data dir
+/// may hold another process's uploads in progress).
+async fn sweep_leftovers(
+    paths: &Paths,
+    store: &dyn Store,
+    min_age: Duration,
+) -> Result<(), StartError> {
     let io = |path: &Path| {
         let path = path.to_owned();
         move |source| StartError::Io { path, source }
     };
-    if paths.tmp.exists() {
-        std::fs::remove_dir_all(&paths.tmp).map_err(io(&paths.tmp))?;
-    }
     prepare_dir(&paths.tmp)?;
-    let known: std::collections::HashSet<String> = store.capture_ids()?.into_iter().collect();
+    for entry in std::fs::read_dir(&paths.tmp).map_err(io(&paths.tmp))? {
+        let path = entry.map_err(io(&paths.tmp))?.path();
+        if older_than(&path, min_age) {
+            let removed = if path.is_dir() {
+                std::fs::remove_dir_all(&path)
+            } else {
+                std::fs::remove_file(&path)
+            };
+            removed.map_err(io(&path))?;
+        }
+    }
+    let known: std::collections::HashSet<String> = store.capture_ids().await?.into_iter().collect();
     for entry in std::fs::read_dir(&paths.captures).map_err(io(&paths.captures))? {
         let entry = entry.map_err(io(&paths.captures))?;
         let name = entry.file_name().to_string_lossy().into_owned();
-        if !known.contains(&name) {
+        if !known.contains(&name) && older_than(&entry.path(), min_age) {
             tracing::warn!(
                 capture_id = name,
                 "removing a capture folder without a record"
@@ -194,8 +225,17 @@ impl Server {
         for dir in [&paths.root, &paths.captures, &paths.jobs, &paths.artifacts] {
             prepare_dir(dir)?;
         }
-        let store: Arc<dyn Store> = Arc::new(SqliteStore::open(&paths.database)?);
-        sweep_leftovers(&paths, store.as_ref())?;
+        let (store, leftover_age): (Arc<dyn Store>, _) = match &config.database_url {
+            None => (
+                Arc::new(SqliteStore::open(&paths.database)?),
+                Duration::ZERO,
+            ),
+            Some(url) => (
+                Arc::new(PostgresStore::connect(url).await?),
+                SHARED_LEFTOVER_AGE,
+            ),
+        };
+        sweep_leftovers(&paths, store.as_ref(), leftover_age).await?;
         let artifacts: Arc<dyn ArtifactStore> =
             Arc::new(FsArtifacts::new(paths.artifacts.clone())?);
         let listener = tokio::net::TcpListener::bind(config.bind)

@@ -13,9 +13,9 @@ use phygap_api::store::{JobState, SqliteStore, Store};
 
 const CHILD_DIR_VAR: &str = "PHYGAP_API_TEST_CHILD_DATA_DIR";
 
-fn stored_state(data_dir: &Path, id: &str) -> (JobState, u32) {
+async fn stored_state(data_dir: &Path, id: &str) -> (JobState, u32) {
     let store = SqliteStore::open(&data_dir.join("phygap.sqlite3")).unwrap();
-    let job = store.job(id).unwrap().unwrap();
+    let job = store.job(id).await.unwrap().unwrap();
     (job.state, job.progress.iteration)
 }
 
@@ -24,7 +24,7 @@ async fn queued_job_runs_after_restart() {
     let (dir, t) = TestServer::start_fresh_with(|config| config.workers = 0).await;
     let id = t.start_training(20, 10).await;
     t.server.shutdown().await;
-    assert_eq!(stored_state(dir.path(), &id).0, JobState::Queued);
+    assert_eq!(stored_state(dir.path(), &id).await.0, JobState::Queued);
 
     let t = TestServer::start_on(dir.path()).await;
     let done = t.wait_succeeded(&id).await;
@@ -41,7 +41,7 @@ async fn graceful_shutdown_requeues_a_running_job_which_then_resumes() {
     let id = t.start_training(300, 1000).await;
     t.wait_iteration(&id, 30).await;
     t.server.shutdown().await;
-    let (state, iteration) = stored_state(dir.path(), &id);
+    let (state, iteration) = stored_state(dir.path(), &id).await;
     assert_eq!(state, JobState::Queued, "a shutdown is not a cancel");
     assert!((30..300).contains(&iteration), "{iteration}");
 
@@ -102,7 +102,7 @@ async fn killed_server_job_resumes_on_the_next_server() {
     child_api.wait_iteration(&id, 60).await;
     child.kill().unwrap(); // SIGKILL: no shutdown, no checkpoint at the interruption
     child.wait().unwrap();
-    let (state, killed_at) = stored_state(dir.path(), &id);
+    let (state, killed_at) = stored_state(dir.path(), &id).await;
     assert_eq!(state, JobState::Running, "the dead process left it running");
 
     let t = TestServer::start_on(dir.path()).await;

@@ -438,6 +438,10 @@ async fn bad_uploads_are_rejected_and_leave_no_state() {
         let (got_code, message) = error_code(&response);
         assert_eq!(got_code, code, "{label}: {message}");
         assert!(message.contains(needle), "{label}: {message}");
+        assert!(
+            !message.contains(&*dir.path().to_string_lossy()),
+            "{label}: the message shows a server path: {message}"
+        );
         assert_eq!(
             count_files(&dir.path().join("tmp")),
             0,
@@ -449,7 +453,13 @@ async fn bad_uploads_are_rejected_and_leave_no_state() {
             "{label}: capture files left"
         );
         assert!(
-            t.server.state().store.capture_ids().unwrap().is_empty(),
+            t.server
+                .state()
+                .store
+                .capture_ids()
+                .await
+                .unwrap()
+                .is_empty(),
             "{label}: record left"
         );
     }
@@ -463,7 +473,7 @@ async fn bad_uploads_are_rejected_and_leave_no_state() {
     assert_eq!(count_files(&dir.path().join("tmp")), 0);
     // And a good upload still works afterwards.
     t.upload_capture().await;
-    assert_eq!(t.server.state().store.capture_ids().unwrap().len(), 1);
+    assert_eq!(t.server.state().store.capture_ids().await.unwrap().len(), 1);
     t.server.shutdown().await;
 }
 

@@ -41,6 +41,7 @@ async fn worker_loop(state: AppState, index: usize) {
         match state
             .store
             .claim(state.runtime.owner(), now_ms(), lease_deadline(&state))
+            .await
         {
             Ok(Some(job)) => {
                 let span = tracing::info_span!("job", job_id = %job.id, kind = job.spec.kind(), worker = index);
@@ -64,6 +65,7 @@ async fn reaper_loop(state: AppState) {
         match state
             .store
             .requeue_expired(now_ms(), state.config.max_attempts)
+            .await
         {
             Ok(ids) if !ids.is_empty() => {
                 for id in &ids {
@@ -222,6 +224,7 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
         match state
             .store
             .finish(&job.id, state.runtime.owner(), finish, now_ms())
+            .await
         {
             Ok(()) => {}
             Err(StoreError::LeaseLost(_)) => {
@@ -261,12 +264,16 @@ async fn heartbeat_loop(
             _ = tokio::time::sleep(beat) => false,
         };
         let progress = live.snapshot();
-        match state.store.heartbeat(
-            &job_id,
-            state.runtime.owner(),
-            &progress,
-            lease_deadline(&state),
-        ) {
+        match state
+            .store
+            .heartbeat(
+                &job_id,
+                state.runtime.owner(),
+                &progress,
+                lease_deadline(&state),
+            )
+            .await
+        {
             Ok(true) => control.cancel(CancelReason::User),
             Ok(false) => {}
             Err(StoreError::LeaseLost(_)) => {

@@ -18,8 +18,8 @@ pub struct ArtifactList {
     artifacts: Vec<ArtifactInfo>,
 }
 
-fn require_job(state: &AppState, id: &str) -> Result<(), ApiError> {
-    match state.store.job(id)? {
+async fn require_job(state: &AppState, id: &str) -> Result<(), ApiError> {
+    match state.store.job(id).await? {
         Some(_) => Ok(()),
         None => Err(ApiError::not_found("job", id)),
     }
@@ -30,7 +30,7 @@ pub async fn list(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<Json<ArtifactList>, ApiError> {
-    require_job(&state, &id)?;
+    require_job(&state, &id).await?;
     let artifacts = state.artifacts.list(&id)?;
     Ok(Json(ArtifactList {
         job_id: id,
@@ -94,7 +94,7 @@ pub async fn download(
     Path((id, name)): Path<(String, String)>,
     headers: HeaderMap,
 ) -> Result<Response, ApiError> {
-    require_job(&state, &id)?;
+    require_job(&state, &id).await?;
     let info = state
         .artifacts
         .stat(&id, &name)?

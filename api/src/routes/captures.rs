@@ -136,26 +136,41 @@ fn archive_error(e: ArchiveError) -> ApiError {
     }
 }
 
+/// A capture extracted, validated and moved to its folder, before its record is written.
+struct Filed {
+    record: CaptureRecord,
+    dir: PathBuf,
+    /// The upload's temporary folder, removed once the capture is recorded (or rejected).
+    staging: TempDir,
+}
+
+/// Names the files of a validation message relative to the archive (the server's own folders
+/// are no business of the client's).
+fn relative_to_archive(message: &str, extracted: &FsPath) -> String {
+    let prefix = format!("{}{}", extracted.display(), std::path::MAIN_SEPARATOR);
+    message.replace(&prefix, "")
+}
+
 /// Extracts, validates and files an uploaded archive (blocking).
-fn ingest(
+fn extract_and_file(
     state: &AppState,
     staging: TempDir,
     id: &str,
     archive: &FsPath,
     size_bytes: u64,
-) -> Result<CaptureRecord, ApiError> {
-    let root = crate::archive::extract(
-        archive,
-        &staging.path().join("capture"),
-        &state.config.extract_limits,
-    )
-    .map_err(archive_error)?;
-    let info = state.pipeline.inspect(&root).map_err(|e| match e {
-        PipelineError::InvalidCapture(m) => ApiError::unprocessable("invalid_capture", m),
-        other => ApiError::unprocessable("invalid_capture", other.to_string()),
+) -> Result<Filed, ApiError> {
+    let extracted = staging.path().join("capture");
+    let root = crate::archive::extract(archive, &extracted, &state.config.extract_limits)
+        .map_err(archive_error)?;
+    let info = state.pipeline.inspect(&root).map_err(|e| {
+        let message = match e {
+            PipelineError::InvalidCapture(m) => m,
+            other => other.to_string(),
+        };
+        ApiError::unprocessable("invalid_capture", relative_to_archive(&message, &extracted))
     })?;
-    let final_dir = state.paths.capture_dir(id);
-    std::fs::rename(&root, &final_dir).map_err(|e| ApiError::internal("filing the capture", e))?;
+    let dir = state.paths.capture_dir(id);
+    std::fs::rename(&root, &dir).map_err(|e| ApiError::internal("filing the capture", e))?;
     let record = CaptureRecord {
         id: id.to_owned(),
         views: info.views,
@@ -164,12 +179,36 @@ fn ingest(
         size_bytes,
         created_at: now_ms(),
     };
-    if let Err(e) = state.store.insert_capture(&record) {
-        let _ = std::fs::remove_dir_all(&final_dir);
+    Ok(Filed {
+        record,
+        dir,
+        staging,
+    })
+}
+
+/// Extracts and validates an upload on the blocking pool, then records it; a capture whose
+/// record cannot be written is removed again.
+async fn ingest(
+    state: AppState,
+    staging: TempDir,
+    id: String,
+    archive: PathBuf,
+    size_bytes: u64,
+) -> Result<CaptureRecord, ApiError> {
+    let blocking_state = state.clone();
+    let filed = tokio::task::spawn_blocking(move || {
+        let span = tracing::info_span!("capture_upload", capture_id = %id);
+        let _entered = span.enter();
+        extract_and_file(&blocking_state, staging, &id, &archive, size_bytes)
+    })
+    .await
+    .map_err(|e| ApiError::internal("processing the upload", e))??;
+    if let Err(e) = state.store.insert_capture(&filed.record).await {
+        let _ = tokio::fs::remove_dir_all(&filed.dir).await;
         return Err(e.into());
     }
-    drop(staging);
-    Ok(record)
+    drop(filed.staging);
+    Ok(filed.record)
 }
 
 /// `POST /v1/captures`: body is a `.zip` or `.tar` archive.
@@ -195,16 +234,11 @@ pub async fn upload(
             "the request body is empty; send a .zip or .tar archive",
         ));
     }
-    // The rest runs to completion even if the client disconnects, so the temporary folder is
-    // always cleaned up by the blocking task that owns it.
-    let task_state = state.clone();
-    let record = tokio::task::spawn_blocking(move || {
-        let span = tracing::info_span!("capture_upload", capture_id = %id);
-        let _entered = span.enter();
-        ingest(&task_state, staging, &id, &archive, size)
-    })
-    .await
-    .map_err(|e| ApiError::internal("processing the upload", e))??;
+    // The rest runs to completion in its own task even if the client disconnects, so the
+    // capture is either recorded or removed, and the temporary folder always cleaned up.
+    let record = tokio::spawn(ingest(state.clone(), staging, id, archive, size))
+        .await
+        .map_err(|e| ApiError::internal("processing the upload", e))??;
     tracing::info!(capture_id = %record.id, views = record.views, "capture accepted");
     Ok((StatusCode::CREATED, Json(record.into())))
 }
@@ -216,7 +250,8 @@ pub async fn show(
 ) -> Result<Json<CaptureView>, ApiError> {
     let record = state
         .store
-        .capture(&id)?
+        .capture(&id)
+        .await?
         .ok_or_else(|| ApiError::not_found("capture", &id))?;
     Ok(Json(record.into()))
 }
@@ -226,7 +261,7 @@ pub async fn remove(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<StatusCode, ApiError> {
-    match state.store.delete_capture(&id)? {
+    match state.store.delete_capture(&id).await? {
         DeleteOutcome::NotFound => Err(ApiError::not_found("capture", &id)),
         DeleteOutcome::InUse => Err(ApiError::conflict(
             "capture_in_use",

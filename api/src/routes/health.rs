@@ -10,7 +10,7 @@ use crate::AppState;
 
 /// `GET /healthz`: 200 while the store answers.
 pub async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::Value>, ApiError> {
-    state.store.ping().map_err(|e| {
+    state.store.ping().await.map_err(|e| {
         tracing::error!(error = %e, "health check: store unavailable");
         ApiError::new(
             StatusCode::SERVICE_UNAVAILABLE,
@@ -23,7 +23,7 @@ pub async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::V
 
 /// `GET /metrics`: Prometheus text format.
 pub async fn metrics(State(state): State<AppState>) -> Result<Response, ApiError> {
-    let counts = state.store.counts()?;
+    let counts = state.store.counts().await?;
     let body = state.metrics.render(counts, state.config.workers);
     Ok((
         [(

@@ -109,10 +109,11 @@ fn idempotency_key(headers: &HeaderMap) -> Result<Option<String>, ApiError> {
     Ok(Some(key.to_owned()))
 }
 
-fn load_job(state: &AppState, id: &str) -> Result<JobRecord, ApiError> {
+async fn load_job(state: &AppState, id: &str) -> Result<JobRecord, ApiError> {
     state
         .store
-        .job(id)?
+        .job(id)
+        .await?
         .ok_or_else(|| ApiError::not_found("job", id))
 }
 
@@ -132,7 +133,7 @@ pub async fn submit(
         .config
         .validate()
         .map_err(|e| ApiError::unprocessable("invalid_config", e.to_string()))?;
-    if state.store.capture(&request.capture_id)?.is_none() {
+    if state.store.capture(&request.capture_id).await?.is_none() {
         return Err(ApiError::unprocessable(
             "unknown_capture",
             format!("capture `{}` does not exist", request.capture_id),
@@ -153,6 +154,7 @@ pub async fn submit(
     let (record, created) = state
         .store
         .submit(&job, key.as_deref().map(|k| (k, hash.as_str())))
+        .await
         .map_err(|e| match e {
             StoreError::IdempotencyConflict(_) => {
                 ApiError::unprocessable("idempotency_key_reused", e.to_string())
@@ -188,7 +190,7 @@ pub async fn list(
 ) -> Result<Json<JobList>, ApiError> {
     let Query(query) = query.map_err(|e| ApiError::bad_request("invalid_query", e.body_text()))?;
     let limit = query.limit.unwrap_or(100).clamp(1, 1000);
-    let jobs = state.store.list_jobs(limit)?;
+    let jobs = state.store.list_jobs(limit).await?;
     Ok(Json(JobList {
         jobs: jobs.into_iter().map(JobView::from).collect(),
     }))
@@ -199,7 +201,7 @@ pub async fn show(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<Json<JobView>, ApiError> {
-    Ok(Json(load_job(&state, &id)?.into()))
+    Ok(Json(load_job(&state, &id).await?.into()))
 }
 
 /// `POST /v1/jobs/{id}/cancel`: a queued job is cancelled at once; a running one checkpoints and
@@ -209,7 +211,7 @@ pub async fn cancel(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<Json<JobView>, ApiError> {
-    let before = load_job(&state, &id)?;
+    let before = load_job(&state, &id).await?;
     if before.state.is_terminal() {
         return Err(ApiError::conflict(
             "job_finished",
@@ -218,7 +220,8 @@ pub async fn cancel(
     }
     let job = state
         .store
-        .request_cancel(&id, now_ms())?
+        .request_cancel(&id, now_ms())
+        .await?
         .ok_or_else(|| ApiError::not_found("job", &id))?;
     state.runtime.cancel(&id, CancelReason::User);
     state.runtime.changed(&id);
@@ -263,7 +266,7 @@ async fn next_event(mut cursor: EventsCursor) -> Option<(Result<Event, Infallibl
             return None;
         }
         cursor.first = false;
-        let job = match cursor.state.store.job(&cursor.id) {
+        let job = match cursor.state.store.job(&cursor.id).await {
             Ok(Some(job)) => job,
             Ok(None) => return None,
             Err(e) => {
@@ -293,7 +296,7 @@ pub async fn events(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<Sse<impl Stream<Item = Result<Event, Infallible>>>, ApiError> {
-    load_job(&state, &id)?;
+    load_job(&state, &id).await?;
     let cursor = EventsCursor {
         changes: state.runtime.subscribe(),
         state,
@@ -355,7 +358,7 @@ pub async fn relight(
     multipart: Result<Multipart, axum::extract::multipart::MultipartRejection>,
 ) -> Result<(StatusCode, Json<JobView>), ApiError> {
     crate::routes::captures::check_content_length(&headers, state.config.max_upload_bytes)?;
-    let parent = load_job(&state, &parent_id)?;
+    let parent = load_job(&state, &parent_id).await?;
     if !matches!(parent.spec, JobSpec::Train { .. }) || parent.state != JobState::Succeeded {
         return Err(ApiError::conflict(
             "model_not_ready",
@@ -450,7 +453,7 @@ pub async fn relight(
         iterations: 0,
         created_at: now_ms(),
     };
-    let record = match state.store.submit(&job, None) {
+    let record = match state.store.submit(&job, None).await {
         Ok((record, _)) => record,
         Err(e) => {
             let _ = std::fs::remove_dir_all(state.paths.jobs.join(&id));

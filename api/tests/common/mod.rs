@@ -4,6 +4,8 @@
 
 #![allow(dead_code)]
 
+pub mod postgres;
+
 use std::io::Write;
 use std::path::Path;
 use std::sync::Arc;

@@ -1,0 +1,383 @@
+//! Durable records of captures and jobs, and the job queue itself. [`Store`] is the seam between
+//! the service and the database that holds them: [`SqliteStore`] is the embedded default (one
+//! file beside the data), [`PostgresStore`] the shared one that API replicas and workers on many
+//! machines use together. Both pass the same test-suite (`api/tests/store.rs`).
+//!
+//! Queue protocol: a worker claims the oldest `queued` job with one `UPDATE ... RETURNING`, which
+//! writes its owner token and a lease deadline. While it runs, heartbeats (carrying progress)
+//! extend the lease; every write by a worker is conditional on still owning the job, so a worker
+//! whose lease was taken over can never finish or overwrite a job another worker now runs. Jobs
+//! whose lease expired (their process died) are put back to `queued` by [`Store::requeue_expired`].
+
+mod postgres;
+mod sqlite;
+
+pub use postgres::PostgresStore;
+pub use sqlite::SqliteStore;
+
+use std::collections::BTreeMap;
+
+use phygap::config::TrainConfig;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+/// Failures of the store.
+#[derive(Debug, Error)]
+pub enum StoreError {
+    #[error("sqlite: {0}")]
+    Sqlite(#[from] rusqlite::Error),
+    #[error("postgres: {0}")]
+    Postgres(tokio_postgres::Error),
+    #[error("invalid database URL: {0}")]
+    InvalidUrl(String),
+    /// The database cannot be reached (connection refused or lost, pool exhausted): the request
+    /// may succeed later, and nothing stored was changed by it.
+    #[error("the job database is unavailable: {0}")]
+    Unavailable(String),
+    #[error("the job database's schema: {0}")]
+    Migration(String),
+    #[error("corrupt `{column}` of job `{id}`: {problem}")]
+    Corrupt {
+        id: String,
+        column: &'static str,
+        problem: String,
+    },
+    #[error("job `{0}` is no longer owned by this worker (its lease expired and was taken over)")]
+    LeaseLost(String),
+    #[error("idempotency key `{0}` was already used for a different request")]
+    IdempotencyConflict(String),
+    #[error("the store's lock was poisoned by a panic")]
+    Poisoned,
+}
+
+/// Life cycle of a job: `queued → running → succeeded | failed | cancelled`; `running → queued`
+/// when interrupted by a shutdown or a crash.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum JobState {
+    Queued,
+    Running,
+    Succeeded,
+    Failed,
+    Cancelled,
+}
+
+impl JobState {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            JobState::Queued => "queued",
+            JobState::Running => "running",
+            JobState::Succeeded => "succeeded",
+            JobState::Failed => "failed",
+            JobState::Cancelled => "cancelled",
+        }
+    }
+
+    fn parse(s: &str) -> Option<Self> {
+        Some(match s {
+            "queued" => JobState::Queued,
+            "running" => JobState::Running,
+            "succeeded" => JobState::Succeeded,
+            "failed" => JobState::Failed,
+            "cancelled" => JobState::Cancelled,
+            _ => return None,
+        })
+    }
+
+    /// True once the job will never change again.
+    pub fn is_terminal(self) -> bool {
+        matches!(
+            self,
+            JobState::Succeeded | JobState::Failed | JobState::Cancelled
+        )
+    }
+}
+
+/// What a job does.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum JobSpec {
+    /// Train a model of `capture_id`, then export its artifacts.
+    Train { config: TrainConfig },
+    /// Relight the model trained by `parent_job_id` under an uploaded environment map (stored in
+    /// the job's input folder as `envmap.exr`/`envmap.hdr`, optional `cameras.json`).
+    Relight {
+        parent_job_id: String,
+        envmap_file: String,
+        cameras_file: Option<String>,
+        rotate_deg: f64,
+    },
+}
+
+impl JobSpec {
+    pub fn kind(&self) -> &'static str {
+        match self {
+            JobSpec::Train { .. } => "train",
+            JobSpec::Relight { .. } => "relight",
+        }
+    }
+}
+
+/// An accepted capture.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CaptureRecord {
+    pub id: String,
+    pub views: usize,
+    pub kinds: Vec<String>,
+    pub warnings: Vec<String>,
+    pub size_bytes: u64,
+    /// Unix milliseconds.
+    pub created_at: i64,
+}
+
+/// Live progress of a running job, written by heartbeats.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Progress {
+    pub stage: Option<String>,
+    pub iteration: u32,
+    pub iterations: u32,
+    pub losses: BTreeMap<String, f64>,
+    pub test_psnr: Option<f64>,
+    pub eta_seconds: Option<f64>,
+    /// Last iteration a checkpoint was written at.
+    pub checkpoint_iteration: Option<u32>,
+    /// Iteration the latest run resumed from (after a restart or crash).
+    pub resumed_from: Option<u32>,
+    /// The compute backend the latest run trains on (absent in rows written before it existed).
+    #[serde(default)]
+    pub backend: Option<String>,
+    /// The run's latest warning (e.g. a GridMap mesh that could not be extracted), if any.
+    #[serde(default)]
+    pub warning: Option<String>,
+}
+
+/// A job as stored.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JobRecord {
+    pub id: String,
+    pub capture_id: String,
+    pub spec: JobSpec,
+    pub state: JobState,
+    pub progress: Progress,
+    pub error: Option<String>,
+    /// Unix milliseconds.
+    pub created_at: i64,
+    pub started_at: Option<i64>,
+    pub finished_at: Option<i64>,
+    /// How many times a worker claimed it (more than one: it was resumed).
+    pub attempts: u32,
+    pub cancel_requested: bool,
+}
+
+/// A job to enqueue.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NewJob {
+    pub id: String,
+    pub capture_id: String,
+    pub spec: JobSpec,
+    pub iterations: u32,
+    pub created_at: i64,
+}
+
+/// How a worker's run of a job ended.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Finish {
+    Succeeded,
+    Failed(String),
+    Cancelled,
+    /// Back to the queue (graceful shutdown): the next claim resumes from the checkpoint.
+    Requeue,
+}
+
+/// Result of deleting a capture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DeleteOutcome {
+    Deleted,
+    NotFound,
+    /// Jobs that are queued or running still need it.
+    InUse,
+}
+
+/// Number of jobs per live state (for /metrics).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QueueCounts {
+    pub queued: u64,
+    pub running: u64,
+}
+
+/// Durable captures, jobs and queue. Every method is one short transaction.
+#[async_trait::async_trait]
+pub trait Store: Send + Sync + 'static {
+    async fn ping(&self) -> Result<(), StoreError>;
+    async fn insert_capture(&self, capture: &CaptureRecord) -> Result<(), StoreError>;
+    async fn capture(&self, id: &str) -> Result<Option<CaptureRecord>, StoreError>;
+    async fn capture_ids(&self) -> Result<Vec<String>, StoreError>;
+    /// Deletes the capture's record unless a queued or running job uses it (checked atomically).
+    async fn delete_capture(&self, id: &str) -> Result<DeleteOutcome, StoreError>;
+    /// Enqueues `job`. With an idempotency key (and the hash of the request it came with), a key
+    /// seen before returns the job it created then (`false`: not new), or
+    /// [`StoreError::IdempotencyConflict`] if the request differed.
+    async fn submit(
+        &self,
+        job: &NewJob,
+        idempotency: Option<(&str, &str)>,
+    ) -> Result<(JobRecord, bool), StoreError>;
+    async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError>;
+    /// Newest first.
+    async fn list_jobs(&self, limit: usize) -> Result<Vec<JobRecord>, StoreError>;
+    /// Atomically takes the oldest queued job for `owner` until `lease_until` (unix ms).
+    async fn claim(
+        &self,
+        owner: &str,
+        now: i64,
+        lease_until: i64,
+    ) -> Result<Option<JobRecord>, StoreError>;
+    /// Writes progress and extends the lease; returns whether a cancel was requested.
+    async fn heartbeat(
+        &self,
+        id: &str,
+        owner: &str,
+        progress: &Progress,
+        lease_until: i64,
+    ) -> Result<bool, StoreError>;
+    /// Ends the owner's run of the job.
+    async fn finish(
+        &self,
+        id: &str,
+        owner: &str,
+        finish: &Finish,
+        now: i64,
+    ) -> Result<(), StoreError>;
+    /// Queued jobs are cancelled at once; running ones get `cancel_requested`. `None`: no such job.
+    async fn request_cancel(&self, id: &str, now: i64) -> Result<Option<JobRecord>, StoreError>;
+    /// Puts running jobs whose lease ended before `now` back in the queue (or fails them after
+    /// `max_attempts` claims); returns their ids.
+    async fn requeue_expired(&self, now: i64, max_attempts: u32)
+        -> Result<Vec<String>, StoreError>;
+    async fn counts(&self) -> Result<QueueCounts, StoreError>;
+}
+
+pub(crate) fn corrupt(id: &str, column: &'static str, problem: impl ToString) -> StoreError {
+    StoreError::Corrupt {
+        id: id.to_owned(),
+        column,
+        problem: problem.to_string(),
+    }
+}
+
+/// A row as read, before its JSON columns are parsed.
+pub(crate) struct RawJob {
+    pub id: String,
+    pub capture_id: String,
+    pub spec: String,
+    pub state: String,
+    pub progress: String,
+    pub error: Option<String>,
+    pub created_at: i64,
+    pub started_at: Option<i64>,
+    pub finished_at: Option<i64>,
+    pub attempts: u32,
+    pub cancel_requested: bool,
+}
+
+impl RawJob {
+    pub fn parse(self) -> Result<JobRecord, StoreError> {
+        let spec = serde_json::from_str(&self.spec).map_err(|e| corrupt(&self.id, "spec", e))?;
+        let progress =
+            serde_json::from_str(&self.progress).map_err(|e| corrupt(&self.id, "progress", e))?;
+        let state = JobState::parse(&self.state)
+            .ok_or_else(|| corrupt(&self.id, "state", format!("unknown state {:?}", self.state)))?;
+        Ok(JobRecord {
+            id: self.id,
+            capture_id: self.capture_id,
+            spec,
+            state,
+            progress,
+            error: self.error,
+            created_at: self.created_at,
+            started_at: self.started_at,
+            finished_at: self.finished_at,
+            attempts: self.attempts,
+            cancel_requested: self.cancel_requested,
+        })
+    }
+}
+
+pub(crate) fn to_json<T: Serialize>(value: &T) -> String {
+    // Serializing these plain structs cannot fail (no maps with non-string keys).
+    serde_json::to_string(value).unwrap_or_else(|_| "null".into())
+}
+
+/// A capture row as read, before its JSON columns are parsed.
+pub(crate) struct RawCapture {
+    pub id: String,
+    pub views: i64,
+    pub kinds: String,
+    pub warnings: String,
+    pub size_bytes: i64,
+    pub created_at: i64,
+}
+
+impl RawCapture {
+    pub fn parse(self) -> Result<CaptureRecord, StoreError> {
+        let id = self.id;
+        Ok(CaptureRecord {
+            kinds: serde_json::from_str(&self.kinds).map_err(|e| corrupt(&id, "kinds", e))?,
+            warnings: serde_json::from_str(&self.warnings)
+                .map_err(|e| corrupt(&id, "warnings", e))?,
+            views: self.views.max(0) as usize,
+            size_bytes: self.size_bytes.max(0) as u64,
+            created_at: self.created_at,
+            id,
+        })
+    }
+}
+
+/// Message of a job failed because its workers kept dying.
+pub(crate) fn abandoned_message(max_attempts: u32) -> String {
+    format!("abandoned: the worker running it died {max_attempts} times (lease expired)")
+}
+
+/// Current time in unix milliseconds.
+pub fn now_ms() -> i64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_millis() as i64)
+        .unwrap_or(0)
+}
+
+/// Formats unix milliseconds as RFC 3339 UTC (`2026-03-01T12:00:00.123Z`).
+pub fn rfc3339(ms: i64) -> String {
+    let secs = ms.div_euclid(1000);
+    let millis = ms.rem_euclid(1000);
+    let days = secs.div_euclid(86_400);
+    let second_of_day = secs.rem_euclid(86_400);
+    // Civil date from days since 1970-01-01 (H. Hinnant's algorithm).
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}.{millis:03}Z",
+        second_of_day / 3600,
+        second_of_day % 3600 / 60,
+        second_of_day % 60
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rfc3339;
+
+    #[test]
+    fn rfc3339_matches_known_instants() {
+        assert_eq!(rfc3339(0), "1970-01-01T00:00:00.000Z");
+        assert_eq!(rfc3339(951_782_400_123), "2000-02-29T00:00:00.123Z");
+        assert_eq!(rfc3339(1_767_225_599_999), "2025-12-31T23:59:59.999Z");
+    }
+}

@@ -1,0 +1,466 @@
+//! The shared store: PostgreSQL through a connection pool (deadpool over tokio-postgres), for API
+//! replicas and workers on many machines. Claims take the oldest queued job with
+//! `FOR UPDATE SKIP LOCKED`, so concurrent workers never wait on or take the same row; every other
+//! write is one conditional statement or one short transaction. The schema is created and
+//! upgraded at connect by the migrations in `api/migrations/postgres/`, under an advisory lock so
+//! replicas starting together apply each one once.
+
+use std::str::FromStr;
+use std::time::Duration;
+
+use deadpool_postgres::{Manager, ManagerConfig, Pool, RecyclingMethod, Runtime};
+use tokio_postgres::types::ToSql;
+use tokio_postgres::{NoTls, Row};
+
+use super::{
+    abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, NewJob,
+    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError,
+};
+
+/// The schema's versions, oldest first; each runs once, in a transaction.
+const MIGRATIONS: &[(i32, &str)] = &[(
+    1,
+    include_str!("../../migrations/postgres/0001_captures_and_jobs.sql"),
+)];
+
+/// Key of the advisory lock that serializes migrations ("phygap" in ASCII).
+const MIGRATION_LOCK: i64 = 0x7068_7967_6170;
+
+/// Connections a process keeps open at most.
+const POOL_SIZE: usize = 16;
+/// How long a query waits for a free connection, or for a new one to be made.
+const POOL_TIMEOUT: Duration = Duration::from_secs(5);
+
+const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
+                           finished_at, attempts, cancel_requested";
+
+/// The PostgreSQL store.
+pub struct PostgresStore {
+    pool: Pool,
+}
+
+impl From<tokio_postgres::Error> for StoreError {
+    /// Lost connections and a server that is shutting down or starting are `Unavailable` (the
+    /// caller may retry); anything else is a query error.
+    fn from(e: tokio_postgres::Error) -> Self {
+        let io = std::error::Error::source(&e).is_some_and(|s| s.is::<std::io::Error>());
+        let class = e.code().map(|c| &c.code()[..2]);
+        // SQLSTATE 08: connection exception; 57: operator intervention (shutdown, restart).
+        if e.is_closed() || io || matches!(class, Some("08" | "57")) {
+            StoreError::Unavailable(e.to_string())
+        } else {
+            StoreError::Postgres(e)
+        }
+    }
+}
+
+impl From<deadpool_postgres::PoolError> for StoreError {
+    fn from(e: deadpool_postgres::PoolError) -> Self {
+        match e {
+            deadpool_postgres::PoolError::Backend(e) => e.into(),
+            other => StoreError::Unavailable(other.to_string()),
+        }
+    }
+}
+
+fn raw_job(row: &Row) -> Result<RawJob, StoreError> {
+    Ok(RawJob {
+        id: row.try_get(0)?,
+        capture_id: row.try_get(1)?,
+        spec: row.try_get(2)?,
+        state: row.try_get(3)?,
+        progress: row.try_get(4)?,
+        error: row.try_get(5)?,
+        created_at: row.try_get(6)?,
+        started_at: row.try_get(7)?,
+        finished_at: row.try_get(8)?,
+        attempts: row.try_get::<_, i32>(9)?.max(0) as u32,
+        cancel_requested: row.try_get(10)?,
+    })
+}
+
+fn job_of(row: &Row) -> Result<JobRecord, StoreError> {
+    raw_job(row)?.parse()
+}
+
+impl PostgresStore {
+    /// Connects to `url` (`postgres://user:password@host:port/database`, or key=value pairs) and
+    /// brings the schema up to date. Fails when the server cannot be reached.
+    pub async fn connect(url: &str) -> Result<Self, StoreError> {
+        let mut config = tokio_postgres::Config::from_str(url)
+            .map_err(|e| StoreError::InvalidUrl(e.to_string()))?;
+        if config.get_connect_timeout().is_none() {
+            config.connect_timeout(POOL_TIMEOUT);
+        }
+        config.application_name("phygap-api");
+        let manager = Manager::from_config(
+            config,
+            NoTls,
+            ManagerConfig {
+                recycling_method: RecyclingMethod::Fast,
+            },
+        );
+        let pool = Pool::builder(manager)
+            .max_size(POOL_SIZE)
+            .runtime(Runtime::Tokio1)
+            .wait_timeout(Some(POOL_TIMEOUT))
+            .create_timeout(Some(POOL_TIMEOUT))
+            .build()
+            .map_err(|e| StoreError::InvalidUrl(e.to_string()))?;
+        let store = PostgresStore { pool };
+        store.migrate().await?;
+        Ok(store)
+    }
+
+    /// Applies the migrations this database has not seen yet.
+    async fn migrate(&self) -> Result<(), StoreError> {
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        tx.execute("SELECT pg_advisory_xact_lock($1)", &[&MIGRATION_LOCK])
+            .await?;
+        tx.batch_execute(
+            "CREATE TABLE IF NOT EXISTS schema_migrations (
+                 version INTEGER PRIMARY KEY,
+                 applied_at BIGINT NOT NULL)",
+        )
+        .await?;
+        let applied: Vec<i32> = tx
+            .query("SELECT version FROM schema_migrations", &[])
+            .await?
+            .iter()
+            .map(|row| row.try_get(0))
+            .collect::<Result<_, _>>()?;
+        let newest_known = MIGRATIONS.last().map_or(0, |&(version, _)| version);
+        if let Some(newer) = applied.iter().find(|&&v| v > newest_known) {
+            return Err(StoreError::Migration(format!(
+                "the database is at schema version {newer}, newer than this build knows \
+                 ({newest_known}); upgrade phygap-api"
+            )));
+        }
+        for &(version, sql) in MIGRATIONS {
+            if applied.contains(&version) {
+                continue;
+            }
+            tx.batch_execute(sql)
+                .await
+                .map_err(|e| StoreError::Migration(format!("version {version}: {e}")))?;
+            tx.execute(
+                "INSERT INTO schema_migrations (version, applied_at) VALUES ($1, $2)",
+                &[&version, &super::now_ms()],
+            )
+            .await?;
+            tracing::info!(version, "applied a database migration");
+        }
+        tx.commit().await?;
+        Ok(())
+    }
+
+    async fn query_job(
+        &self,
+        sql: &str,
+        params: &[&(dyn ToSql + Sync)],
+    ) -> Result<Option<JobRecord>, StoreError> {
+        let client = self.pool.get().await?;
+        client
+            .query_opt(sql, params)
+            .await?
+            .as_ref()
+            .map(job_of)
+            .transpose()
+    }
+}
+
+#[async_trait::async_trait]
+impl Store for PostgresStore {
+    async fn ping(&self) -> Result<(), StoreError> {
+        let client = self.pool.get().await?;
+        client.execute("SELECT 1", &[]).await?;
+        Ok(())
+    }
+
+    async fn insert_capture(&self, capture: &CaptureRecord) -> Result<(), StoreError> {
+        let client = self.pool.get().await?;
+        client
+            .execute(
+                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at)
+                 VALUES ($1, $2, $3, $4, $5, $6)",
+                &[
+                    &capture.id,
+                    &(capture.views as i64),
+                    &to_json(&capture.kinds),
+                    &to_json(&capture.warnings),
+                    &(capture.size_bytes as i64),
+                    &capture.created_at,
+                ],
+            )
+            .await?;
+        Ok(())
+    }
+
+    async fn capture(&self, id: &str) -> Result<Option<CaptureRecord>, StoreError> {
+        let client = self.pool.get().await?;
+        let Some(row) = client
+            .query_opt(
+                "SELECT id, views, kinds, warnings, size_bytes, created_at
+                 FROM captures WHERE id = $1",
+                &[&id],
+            )
+            .await?
+        else {
+            return Ok(None);
+        };
+        RawCapture {
+            id: row.try_get(0)?,
+            views: row.try_get(1)?,
+            kinds: row.try_get(2)?,
+            warnings: row.try_get(3)?,
+            size_bytes: row.try_get(4)?,
+            created_at: row.try_get(5)?,
+        }
+        .parse()
+        .map(Some)
+    }
+
+    async fn capture_ids(&self) -> Result<Vec<String>, StoreError> {
+        let client = self.pool.get().await?;
+        let rows = client.query("SELECT id FROM captures", &[]).await?;
+        Ok(rows
+            .iter()
+            .map(|r| r.try_get(0))
+            .collect::<Result<_, _>>()?)
+    }
+
+    async fn delete_capture(&self, id: &str) -> Result<DeleteOutcome, StoreError> {
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        // Locking the capture's row orders this against a concurrent delete of the same capture.
+        let exists = tx
+            .query_opt("SELECT 1 FROM captures WHERE id = $1 FOR UPDATE", &[&id])
+            .await?
+            .is_some();
+        if !exists {
+            return Ok(DeleteOutcome::NotFound);
+        }
+        let active: i64 = tx
+            .query_one(
+                "SELECT count(*) FROM jobs
+                 WHERE capture_id = $1 AND state IN ('queued', 'running')",
+                &[&id],
+            )
+            .await?
+            .try_get(0)?;
+        if active > 0 {
+            return Ok(DeleteOutcome::InUse);
+        }
+        tx.execute("DELETE FROM captures WHERE id = $1", &[&id])
+            .await?;
+        tx.commit().await?;
+        Ok(DeleteOutcome::Deleted)
+    }
+
+    async fn submit(
+        &self,
+        job: &NewJob,
+        idempotency: Option<(&str, &str)>,
+    ) -> Result<(JobRecord, bool), StoreError> {
+        let progress = to_json(&Progress {
+            iterations: job.iterations,
+            ..Progress::default()
+        });
+        let spec = to_json(&job.spec);
+        let (key, hash) = (idempotency.map(|(k, _)| k), idempotency.map(|(_, h)| h));
+        let client = self.pool.get().await?;
+        // A key used before (even by a request still in flight on another replica) makes the
+        // insert a no-op; the job it names is then read back below.
+        let inserted = client
+            .query_opt(
+                &format!(
+                    "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
+                                       idempotency_key, request_hash)
+                     VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7)
+                     ON CONFLICT (idempotency_key) DO NOTHING
+                     RETURNING {JOB_COLUMNS}"
+                ),
+                &[
+                    &job.id,
+                    &job.capture_id,
+                    &spec,
+                    &progress,
+                    &job.created_at,
+                    &key,
+                    &hash,
+                ],
+            )
+            .await?;
+        if let Some(row) = inserted {
+            return Ok((job_of(&row)?, true));
+        }
+        let (Some(key), Some(hash)) = (key, hash) else {
+            return Err(corrupt(
+                &job.id,
+                "id",
+                "insert without a key returned no row",
+            ));
+        };
+        let row = client
+            .query_one(
+                &format!("SELECT {JOB_COLUMNS}, request_hash FROM jobs WHERE idempotency_key = $1"),
+                &[&key],
+            )
+            .await?;
+        let stored_hash: Option<String> = row.try_get(11)?;
+        if stored_hash.as_deref() != Some(hash) {
+            return Err(StoreError::IdempotencyConflict(key.to_owned()));
+        }
+        Ok((job_of(&row)?, false))
+    }
+
+    async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError> {
+        self.query_job(
+            &format!("SELECT {JOB_COLUMNS} FROM jobs WHERE id = $1"),
+            &[&id],
+        )
+        .await
+    }
+
+    async fn list_jobs(&self, limit: usize) -> Result<Vec<JobRecord>, StoreError> {
+        let client = self.pool.get().await?;
+        let rows = client
+            .query(
+                &format!(
+                    "SELECT {JOB_COLUMNS} FROM jobs ORDER BY created_at DESC, seq DESC LIMIT $1"
+                ),
+                &[&(limit.min(i64::MAX as usize) as i64)],
+            )
+            .await?;
+        rows.iter().map(job_of).collect()
+    }
+
+    async fn claim(
+        &self,
+        owner: &str,
+        now: i64,
+        lease_until: i64,
+    ) -> Result<Option<JobRecord>, StoreError> {
+        self.query_job(
+            &format!(
+                "UPDATE jobs SET state = 'running', owner = $1, lease_until = $2,
+                        started_at = COALESCE(started_at, $3), attempts = attempts + 1
+                 WHERE id = (
+                     SELECT id FROM jobs WHERE state = 'queued'
+                     ORDER BY created_at, seq LIMIT 1
+                     FOR UPDATE SKIP LOCKED)
+                 RETURNING {JOB_COLUMNS}"
+            ),
+            &[&owner, &lease_until, &now],
+        )
+        .await
+    }
+
+    async fn heartbeat(
+        &self,
+        id: &str,
+        owner: &str,
+        progress: &Progress,
+        lease_until: i64,
+    ) -> Result<bool, StoreError> {
+        let client = self.pool.get().await?;
+        let row = client
+            .query_opt(
+                "UPDATE jobs SET progress = $1, lease_until = $2
+                 WHERE id = $3 AND owner = $4 AND state = 'running'
+                 RETURNING cancel_requested",
+                &[&to_json(progress), &lease_until, &id, &owner],
+            )
+            .await?
+            .ok_or_else(|| StoreError::LeaseLost(id.to_owned()))?;
+        Ok(row.try_get(0)?)
+    }
+
+    async fn finish(
+        &self,
+        id: &str,
+        owner: &str,
+        finish: &Finish,
+        now: i64,
+    ) -> Result<(), StoreError> {
+        let (state, error, finished_at) = match finish {
+            Finish::Succeeded => ("succeeded", None, Some(now)),
+            Finish::Failed(message) => ("failed", Some(message.as_str()), Some(now)),
+            Finish::Cancelled => ("cancelled", None, Some(now)),
+            Finish::Requeue => ("queued", None, None),
+        };
+        let client = self.pool.get().await?;
+        let changed = client
+            .execute(
+                "UPDATE jobs SET state = $1, error = $2, finished_at = $3, owner = NULL,
+                        lease_until = NULL
+                 WHERE id = $4 AND owner = $5 AND state = 'running'",
+                &[&state, &error, &finished_at, &id, &owner],
+            )
+            .await?;
+        if changed == 0 {
+            return Err(StoreError::LeaseLost(id.to_owned()));
+        }
+        Ok(())
+    }
+
+    async fn request_cancel(&self, id: &str, now: i64) -> Result<Option<JobRecord>, StoreError> {
+        self.query_job(
+            &format!(
+                "UPDATE jobs SET cancel_requested = cancel_requested OR state IN ('queued', 'running'),
+                        state = CASE WHEN state = 'queued' THEN 'cancelled' ELSE state END,
+                        finished_at = CASE WHEN state = 'queued' THEN $2 ELSE finished_at END
+                 WHERE id = $1
+                 RETURNING {JOB_COLUMNS}"
+            ),
+            &[&id, &now],
+        )
+        .await
+    }
+
+    async fn requeue_expired(
+        &self,
+        now: i64,
+        max_attempts: u32,
+    ) -> Result<Vec<String>, StoreError> {
+        let client = self.pool.get().await?;
+        let max_attempts = i32::try_from(max_attempts).unwrap_or(i32::MAX);
+        let rows = client
+            .query(
+                "UPDATE jobs SET state = CASE
+                        WHEN cancel_requested THEN 'cancelled'
+                        WHEN attempts >= $2 THEN 'failed'
+                        ELSE 'queued' END,
+                    error = CASE WHEN NOT cancel_requested AND attempts >= $2 THEN $3
+                                 ELSE error END,
+                    finished_at = CASE WHEN cancel_requested OR attempts >= $2 THEN $1
+                                       ELSE finished_at END,
+                    owner = NULL, lease_until = NULL
+                 WHERE state = 'running' AND lease_until < $1
+                 RETURNING id",
+                &[&now, &max_attempts, &abandoned_message(max_attempts as u32)],
+            )
+            .await?;
+        Ok(rows
+            .iter()
+            .map(|r| r.try_get(0))
+            .collect::<Result<_, _>>()?)
+    }
+
+    async fn counts(&self) -> Result<QueueCounts, StoreError> {
+        let client = self.pool.get().await?;
+        let row = client
+            .query_one(
+                "SELECT count(*) FILTER (WHERE state = 'queued'),
+                        count(*) FILTER (WHERE state = 'running')
+                 FROM jobs WHERE state IN ('queued', 'running')",
+                &[],
+            )
+            .await?;
+        Ok(QueueCounts {
+            queued: row.try_get::<_, i64>(0)?.max(0) as u64,
+            running: row.try_get::<_, i64>(1)?.max(0) as u64,
+        })
+    }
+}

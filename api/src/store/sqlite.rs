@@ -1,0 +1,390 @@
+//! The embedded store: one SQLite file in WAL mode behind a mutex. Every statement is short, so
+//! the async methods run them in place (holding the mutex for a few microseconds to milliseconds).
+
+use std::path::Path;
+use std::sync::Mutex;
+
+use rusqlite::{params, Connection, OptionalExtension, Row};
+
+use super::{
+    abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, NewJob,
+    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError,
+};
+
+/// The embedded SQLite store.
+pub struct SqliteStore {
+    conn: Mutex<Connection>,
+}
+
+const SCHEMA: &str = "
+CREATE TABLE IF NOT EXISTS captures (
+    id TEXT PRIMARY KEY,
+    views INTEGER NOT NULL,
+    kinds TEXT NOT NULL,
+    warnings TEXT NOT NULL,
+    size_bytes INTEGER NOT NULL,
+    created_at INTEGER NOT NULL
+);
+CREATE TABLE IF NOT EXISTS jobs (
+    id TEXT PRIMARY KEY,
+    capture_id TEXT NOT NULL,
+    spec TEXT NOT NULL,
+    state TEXT NOT NULL,
+    progress TEXT NOT NULL,
+    error TEXT,
+    created_at INTEGER NOT NULL,
+    started_at INTEGER,
+    finished_at INTEGER,
+    attempts INTEGER NOT NULL DEFAULT 0,
+    cancel_requested INTEGER NOT NULL DEFAULT 0,
+    owner TEXT,
+    lease_until INTEGER,
+    idempotency_key TEXT UNIQUE,
+    request_hash TEXT
+);
+CREATE INDEX IF NOT EXISTS jobs_by_state ON jobs(state, created_at);
+CREATE INDEX IF NOT EXISTS jobs_by_capture ON jobs(capture_id, state);
+";
+
+const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
+                           finished_at, attempts, cancel_requested";
+
+fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
+    Ok(RawJob {
+        id: row.get(0)?,
+        capture_id: row.get(1)?,
+        spec: row.get(2)?,
+        state: row.get(3)?,
+        progress: row.get(4)?,
+        error: row.get(5)?,
+        created_at: row.get(6)?,
+        started_at: row.get(7)?,
+        finished_at: row.get(8)?,
+        attempts: row.get(9)?,
+        cancel_requested: row.get(10)?,
+    })
+}
+
+impl SqliteStore {
+    /// Opens (creating if needed) the database file.
+    pub fn open(path: &Path) -> Result<Self, StoreError> {
+        let conn = Connection::open(path)?;
+        conn.busy_timeout(std::time::Duration::from_secs(10))?;
+        conn.pragma_update(None, "journal_mode", "WAL")?;
+        conn.pragma_update(None, "synchronous", "NORMAL")?;
+        conn.execute_batch(SCHEMA)?;
+        Ok(SqliteStore {
+            conn: Mutex::new(conn),
+        })
+    }
+
+    fn with<T>(
+        &self,
+        f: impl FnOnce(&mut Connection) -> Result<T, StoreError>,
+    ) -> Result<T, StoreError> {
+        let mut conn = self.conn.lock().map_err(|_| StoreError::Poisoned)?;
+        f(&mut conn)
+    }
+
+    fn job_in(conn: &Connection, id: &str) -> Result<Option<JobRecord>, StoreError> {
+        let sql = format!("SELECT {JOB_COLUMNS} FROM jobs WHERE id = ?1");
+        conn.query_row(&sql, params![id], raw_job)
+            .optional()?
+            .map(RawJob::parse)
+            .transpose()
+    }
+}
+
+fn capture_row(row: &Row<'_>) -> rusqlite::Result<RawCapture> {
+    Ok(RawCapture {
+        id: row.get(0)?,
+        views: row.get(1)?,
+        kinds: row.get(2)?,
+        warnings: row.get(3)?,
+        size_bytes: row.get(4)?,
+        created_at: row.get(5)?,
+    })
+}
+
+#[async_trait::async_trait]
+impl Store for SqliteStore {
+    async fn ping(&self) -> Result<(), StoreError> {
+        self.with(|c| {
+            Ok(c.query_row("SELECT 1", [], |r| r.get::<_, i64>(0))
+                .map(|_| ())?)
+        })
+    }
+
+    async fn insert_capture(&self, capture: &CaptureRecord) -> Result<(), StoreError> {
+        self.with(|c| {
+            c.execute(
+                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at)
+                 VALUES (?1, ?2, ?3, ?4, ?5, ?6)",
+                params![
+                    capture.id,
+                    capture.views as i64,
+                    to_json(&capture.kinds),
+                    to_json(&capture.warnings),
+                    capture.size_bytes as i64,
+                    capture.created_at
+                ],
+            )?;
+            Ok(())
+        })
+    }
+
+    async fn capture(&self, id: &str) -> Result<Option<CaptureRecord>, StoreError> {
+        let row = self.with(|c| {
+            Ok(c.query_row(
+                "SELECT id, views, kinds, warnings, size_bytes, created_at FROM captures WHERE id = ?1",
+                params![id],
+                capture_row,
+            )
+            .optional()?)
+        })?;
+        row.map(RawCapture::parse).transpose()
+    }
+
+    async fn capture_ids(&self) -> Result<Vec<String>, StoreError> {
+        self.with(|c| {
+            let mut stmt = c.prepare("SELECT id FROM captures")?;
+            let ids = stmt
+                .query_map([], |r| r.get(0))?
+                .collect::<Result<_, _>>()?;
+            Ok(ids)
+        })
+    }
+
+    async fn delete_capture(&self, id: &str) -> Result<DeleteOutcome, StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            let exists: bool = tx
+                .query_row("SELECT 1 FROM captures WHERE id = ?1", params![id], |_| {
+                    Ok(true)
+                })
+                .optional()?
+                .unwrap_or(false);
+            if !exists {
+                return Ok(DeleteOutcome::NotFound);
+            }
+            let active: i64 = tx.query_row(
+                "SELECT count(*) FROM jobs WHERE capture_id = ?1 AND state IN ('queued', 'running')",
+                params![id],
+                |r| r.get(0),
+            )?;
+            if active > 0 {
+                return Ok(DeleteOutcome::InUse);
+            }
+            tx.execute("DELETE FROM captures WHERE id = ?1", params![id])?;
+            tx.commit()?;
+            Ok(DeleteOutcome::Deleted)
+        })
+    }
+
+    async fn submit(
+        &self,
+        job: &NewJob,
+        idempotency: Option<(&str, &str)>,
+    ) -> Result<(JobRecord, bool), StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            if let Some((key, hash)) = idempotency {
+                let existing: Option<(String, Option<String>)> = tx
+                    .query_row(
+                        "SELECT id, request_hash FROM jobs WHERE idempotency_key = ?1",
+                        params![key],
+                        |r| Ok((r.get(0)?, r.get(1)?)),
+                    )
+                    .optional()?;
+                if let Some((id, stored_hash)) = existing {
+                    if stored_hash.as_deref() != Some(hash) {
+                        return Err(StoreError::IdempotencyConflict(key.to_owned()));
+                    }
+                    let record = Self::job_in(&tx, &id)?.ok_or_else(|| {
+                        corrupt(&id, "id", "idempotency key points to a missing job")
+                    })?;
+                    return Ok((record, false));
+                }
+            }
+            let progress = Progress {
+                iterations: job.iterations,
+                ..Progress::default()
+            };
+            tx.execute(
+                "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
+                                   idempotency_key, request_hash)
+                 VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7)",
+                params![
+                    job.id,
+                    job.capture_id,
+                    to_json(&job.spec),
+                    to_json(&progress),
+                    job.created_at,
+                    idempotency.map(|(k, _)| k),
+                    idempotency.map(|(_, h)| h),
+                ],
+            )?;
+            let record = Self::job_in(&tx, &job.id)?
+                .ok_or_else(|| corrupt(&job.id, "id", "inserted job not found"))?;
+            tx.commit()?;
+            Ok((record, true))
+        })
+    }
+
+    async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError> {
+        self.with(|c| Self::job_in(c, id))
+    }
+
+    async fn list_jobs(&self, limit: usize) -> Result<Vec<JobRecord>, StoreError> {
+        self.with(|c| {
+            let sql = format!(
+                "SELECT {JOB_COLUMNS} FROM jobs ORDER BY created_at DESC, rowid DESC LIMIT ?1"
+            );
+            let mut stmt = c.prepare(&sql)?;
+            let raws = stmt
+                .query_map(params![limit as i64], raw_job)?
+                .collect::<Result<Vec<_>, _>>()?;
+            raws.into_iter().map(RawJob::parse).collect()
+        })
+    }
+
+    async fn claim(
+        &self,
+        owner: &str,
+        now: i64,
+        lease_until: i64,
+    ) -> Result<Option<JobRecord>, StoreError> {
+        self.with(|c| {
+            let sql = format!(
+                "UPDATE jobs SET state = 'running', owner = ?1, lease_until = ?2,
+                        started_at = COALESCE(started_at, ?3), attempts = attempts + 1
+                 WHERE state = 'queued' AND id = (
+                     SELECT id FROM jobs WHERE state = 'queued'
+                     ORDER BY created_at, rowid LIMIT 1)
+                 RETURNING {JOB_COLUMNS}"
+            );
+            c.query_row(&sql, params![owner, lease_until, now], raw_job)
+                .optional()?
+                .map(RawJob::parse)
+                .transpose()
+        })
+    }
+
+    async fn heartbeat(
+        &self,
+        id: &str,
+        owner: &str,
+        progress: &Progress,
+        lease_until: i64,
+    ) -> Result<bool, StoreError> {
+        self.with(|c| {
+            c.query_row(
+                "UPDATE jobs SET progress = ?1, lease_until = ?2
+                 WHERE id = ?3 AND owner = ?4 AND state = 'running'
+                 RETURNING cancel_requested",
+                params![to_json(progress), lease_until, id, owner],
+                |r| r.get::<_, bool>(0),
+            )
+            .optional()?
+            .ok_or_else(|| StoreError::LeaseLost(id.to_owned()))
+        })
+    }
+
+    async fn finish(
+        &self,
+        id: &str,
+        owner: &str,
+        finish: &Finish,
+        now: i64,
+    ) -> Result<(), StoreError> {
+        let (state, error, finished_at) = match finish {
+            Finish::Succeeded => ("succeeded", None, Some(now)),
+            Finish::Failed(message) => ("failed", Some(message.as_str()), Some(now)),
+            Finish::Cancelled => ("cancelled", None, Some(now)),
+            Finish::Requeue => ("queued", None, None),
+        };
+        self.with(|c| {
+            let changed = c.execute(
+                "UPDATE jobs SET state = ?1, error = ?2, finished_at = ?3, owner = NULL,
+                        lease_until = NULL
+                 WHERE id = ?4 AND owner = ?5 AND state = 'running'",
+                params![state, error, finished_at, id, owner],
+            )?;
+            if changed == 0 {
+                return Err(StoreError::LeaseLost(id.to_owned()));
+            }
+            Ok(())
+        })
+    }
+
+    async fn request_cancel(&self, id: &str, now: i64) -> Result<Option<JobRecord>, StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            tx.execute(
+                "UPDATE jobs SET state = 'cancelled', finished_at = ?2, cancel_requested = 1
+                 WHERE id = ?1 AND state = 'queued'",
+                params![id, now],
+            )?;
+            tx.execute(
+                "UPDATE jobs SET cancel_requested = 1 WHERE id = ?1 AND state = 'running'",
+                params![id],
+            )?;
+            let record = Self::job_in(&tx, id)?;
+            tx.commit()?;
+            Ok(record)
+        })
+    }
+
+    async fn requeue_expired(
+        &self,
+        now: i64,
+        max_attempts: u32,
+    ) -> Result<Vec<String>, StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            let failed_message = abandoned_message(max_attempts);
+            let mut ids: Vec<String> = Vec::new();
+            {
+                let mut stmt = tx.prepare(
+                    "UPDATE jobs SET state = CASE
+                            WHEN cancel_requested = 1 THEN 'cancelled'
+                            WHEN attempts >= ?2 THEN 'failed'
+                            ELSE 'queued' END,
+                        error = CASE WHEN cancel_requested = 0 AND attempts >= ?2 THEN ?3
+                                     ELSE error END,
+                        finished_at = CASE WHEN cancel_requested = 1 OR attempts >= ?2 THEN ?1
+                                           ELSE finished_at END,
+                        owner = NULL, lease_until = NULL
+                     WHERE state = 'running' AND lease_until < ?1
+                     RETURNING id",
+                )?;
+                let rows = stmt.query_map(params![now, max_attempts, failed_message], |r| {
+                    r.get::<_, String>(0)
+                })?;
+                for row in rows {
+                    ids.push(row?);
+                }
+            }
+            tx.commit()?;
+            Ok(ids)
+        })
+    }
+
+    async fn counts(&self) -> Result<QueueCounts, StoreError> {
+        self.with(|c| {
+            let mut stmt = c.prepare(
+                "SELECT state, count(*) FROM jobs WHERE state IN ('queued', 'running') GROUP BY state",
+            )?;
+            let mut counts = QueueCounts::default();
+            let rows = stmt.query_map([], |r| Ok((r.get::<_, String>(0)?, r.get::<_, i64>(1)?)))?;
+            for row in rows {
+                let (state, n) = row?;
+                match state.as_str() {
+                    "queued" => counts.queued = n.max(0) as u64,
+                    _ => counts.running = n.max(0) as u64,
+                }
+            }
+            Ok(counts)
+        })
+    }
+}

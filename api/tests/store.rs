@@ -1,0 +1,376 @@
+//! The store test-suite, run against both backends: the embedded SQLite file and a real
+//! PostgreSQL server (started from Debian's package on a loopback port; skipped with a notice
+//! where it is not installed, a failure under `CI=true`). Each check takes a fresh, empty store.
+
+mod common;
+
+use std::collections::HashSet;
+use std::sync::Arc;
+
+use common::postgres::TempPostgres;
+use phygap::config::TrainConfig;
+use phygap_api::store::{
+    CaptureRecord, DeleteOutcome, Finish, JobSpec, JobState, NewJob, PostgresStore, Progress,
+    QueueCounts, SqliteStore, Store, StoreError,
+};
+
+fn new_job(id: &str, created_at: i64) -> NewJob {
+    NewJob {
+        id: id.into(),
+        capture_id: "cap_1".into(),
+        spec: JobSpec::Train {
+            config: TrainConfig::default(),
+        },
+        iterations: 100,
+        created_at,
+    }
+}
+
+async fn claim_is_exclusive_and_fifo(s: &dyn Store) {
+    s.submit(&new_job("job_b", 2), None).await.unwrap();
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    // Same creation time: the one submitted first goes first.
+    s.submit(&new_job("job_d", 3), None).await.unwrap();
+    s.submit(&new_job("job_c", 3), None).await.unwrap();
+    let mut order = Vec::new();
+    while let Some(job) = s.claim("w", 10, 1000).await.unwrap() {
+        assert_eq!((job.state, job.attempts), (JobState::Running, 1));
+        assert_eq!(job.started_at, Some(10));
+        order.push(job.id);
+    }
+    assert_eq!(order, ["job_a", "job_b", "job_d", "job_c"]);
+    assert_eq!(
+        s.counts().await.unwrap(),
+        QueueCounts {
+            queued: 0,
+            running: 4
+        }
+    );
+    let listed: Vec<String> = s
+        .list_jobs(3)
+        .await
+        .unwrap()
+        .into_iter()
+        .map(|j| j.id)
+        .collect();
+    assert_eq!(listed, ["job_c", "job_d", "job_b"], "newest first");
+}
+
+async fn concurrent_claims_take_each_job_once(s: Arc<dyn Store>) {
+    for i in 0..40 {
+        s.submit(&new_job(&format!("job_{i:02}"), i), None)
+            .await
+            .unwrap();
+    }
+    let claimers = (0..8).map(|w| {
+        let s = s.clone();
+        tokio::spawn(async move {
+            let mut mine = Vec::new();
+            while let Some(job) = s.claim(&format!("w{w}"), 10, 1000).await.unwrap() {
+                mine.push(job.id);
+            }
+            mine
+        })
+    });
+    let mut claimed = Vec::new();
+    for claimer in claimers {
+        claimed.extend(claimer.await.unwrap());
+    }
+    let distinct: HashSet<&String> = claimed.iter().collect();
+    assert_eq!((claimed.len(), distinct.len()), (40, 40), "{claimed:?}");
+}
+
+async fn only_the_owner_can_heartbeat_and_finish(s: &dyn Store) {
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    s.claim("w1", 10, 1000).await.unwrap().unwrap();
+    let progress = Progress {
+        iteration: 7,
+        iterations: 100,
+        stage: Some("geometry".into()),
+        losses: [("l1".to_string(), 0.25)].into(),
+        warning: Some("careful".into()),
+        ..Progress::default()
+    };
+    assert!(matches!(
+        s.heartbeat("job_a", "intruder", &progress, 2000).await,
+        Err(StoreError::LeaseLost(_))
+    ));
+    assert!(!s.heartbeat("job_a", "w1", &progress, 2000).await.unwrap());
+    assert!(s
+        .finish("job_a", "intruder", &Finish::Succeeded, 50)
+        .await
+        .is_err());
+    s.finish("job_a", "w1", &Finish::Succeeded, 50)
+        .await
+        .unwrap();
+    let job = s.job("job_a").await.unwrap().unwrap();
+    assert_eq!(job.state, JobState::Succeeded);
+    assert_eq!(job.progress, progress);
+    assert_eq!(job.finished_at, Some(50));
+    // Finished: no more heartbeats or finishes, even by the former owner.
+    assert!(s.heartbeat("job_a", "w1", &progress, 3000).await.is_err());
+    assert!(s
+        .finish("job_a", "w1", &Finish::Failed("late".into()), 60)
+        .await
+        .is_err());
+}
+
+async fn a_requeued_job_keeps_its_progress_and_is_claimed_again(s: &dyn Store) {
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    s.claim("w1", 10, 1000).await.unwrap().unwrap();
+    let progress = Progress {
+        iteration: 40,
+        checkpoint_iteration: Some(40),
+        ..Progress::default()
+    };
+    s.heartbeat("job_a", "w1", &progress, 1000).await.unwrap();
+    s.finish("job_a", "w1", &Finish::Requeue, 20).await.unwrap();
+    let job = s.job("job_a").await.unwrap().unwrap();
+    assert_eq!((job.state, job.finished_at), (JobState::Queued, None));
+    let again = s.claim("w2", 30, 1000).await.unwrap().unwrap();
+    assert_eq!(again.attempts, 2);
+    assert_eq!(again.started_at, Some(10), "the first start is kept");
+    assert_eq!(again.progress.checkpoint_iteration, Some(40));
+}
+
+async fn expired_leases_are_requeued_then_abandoned(s: &dyn Store) {
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    s.claim("dead", 10, 100).await.unwrap().unwrap();
+    assert!(
+        s.requeue_expired(99, 3).await.unwrap().is_empty(),
+        "lease still valid"
+    );
+    assert_eq!(s.requeue_expired(101, 3).await.unwrap(), ["job_a"]);
+    assert_eq!(
+        s.job("job_a").await.unwrap().unwrap().state,
+        JobState::Queued
+    );
+    // The dead owner can no longer write.
+    assert!(s
+        .finish("job_a", "dead", &Finish::Succeeded, 5)
+        .await
+        .is_err());
+    for attempt in 2..=3 {
+        let job = s.claim("w", 200, 300).await.unwrap().unwrap();
+        assert_eq!(job.attempts, attempt);
+        s.requeue_expired(301, 3).await.unwrap();
+    }
+    let job = s.job("job_a").await.unwrap().unwrap();
+    assert_eq!((job.state, job.finished_at), (JobState::Failed, Some(301)));
+    assert!(job.error.unwrap().contains("abandoned"));
+}
+
+async fn an_expired_job_with_a_cancel_request_ends_cancelled(s: &dyn Store) {
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    s.claim("dead", 10, 100).await.unwrap().unwrap();
+    let running = s.request_cancel("job_a", 20).await.unwrap().unwrap();
+    assert_eq!(running.state, JobState::Running);
+    assert!(running.cancel_requested);
+    assert!(s
+        .heartbeat("job_a", "dead", &Progress::default(), 100)
+        .await
+        .unwrap());
+    s.requeue_expired(500, 3).await.unwrap();
+    let job = s.job("job_a").await.unwrap().unwrap();
+    assert_eq!((job.state, job.error), (JobState::Cancelled, None));
+}
+
+async fn idempotency_key_returns_the_same_job_or_conflicts(s: &dyn Store) {
+    let (a, new_a) = s
+        .submit(&new_job("job_a", 1), Some(("k1", "h1")))
+        .await
+        .unwrap();
+    let (b, new_b) = s
+        .submit(&new_job("job_b", 2), Some(("k1", "h1")))
+        .await
+        .unwrap();
+    assert!(new_a && !new_b);
+    assert_eq!(a, b);
+    assert!(matches!(
+        s.submit(&new_job("job_c", 3), Some(("k1", "other"))).await,
+        Err(StoreError::IdempotencyConflict(_))
+    ));
+    let (d, new_d) = s
+        .submit(&new_job("job_d", 4), Some(("k2", "h1")))
+        .await
+        .unwrap();
+    assert!(new_d);
+    assert_eq!(d.id, "job_d");
+    assert_eq!(s.list_jobs(10).await.unwrap().len(), 2);
+}
+
+async fn concurrent_submits_with_one_key_create_one_job(s: Arc<dyn Store>) {
+    let submits = (0..8).map(|i| {
+        let s = s.clone();
+        tokio::spawn(async move {
+            s.submit(&new_job(&format!("job_{i}"), i), Some(("key", "hash")))
+                .await
+                .unwrap()
+        })
+    });
+    let mut created = 0;
+    let mut ids = HashSet::new();
+    for submit in submits {
+        let (job, new) = submit.await.unwrap();
+        created += usize::from(new);
+        ids.insert(job.id);
+    }
+    assert_eq!((created, ids.len()), (1, 1));
+}
+
+async fn cancel_and_capture_deletion_respect_job_states(s: &dyn Store) {
+    let capture = CaptureRecord {
+        id: "cap_1".into(),
+        views: 3,
+        kinds: vec!["rgb".into(), "stokes".into()],
+        warnings: vec!["a warning".into()],
+        size_bytes: 10,
+        created_at: 7,
+    };
+    s.insert_capture(&capture).await.unwrap();
+    assert!(s.insert_capture(&capture).await.is_err(), "ids are unique");
+    assert_eq!(s.capture("cap_1").await.unwrap().unwrap(), capture);
+    assert_eq!(s.capture_ids().await.unwrap(), ["cap_1"]);
+    assert!(s.capture("cap_2").await.unwrap().is_none());
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    assert_eq!(
+        s.delete_capture("cap_1").await.unwrap(),
+        DeleteOutcome::InUse
+    );
+    let cancelled = s.request_cancel("job_a", 5).await.unwrap().unwrap();
+    assert_eq!(
+        (cancelled.state, cancelled.finished_at),
+        (JobState::Cancelled, Some(5))
+    );
+    // A finished job is left as it is.
+    let again = s.request_cancel("job_a", 9).await.unwrap().unwrap();
+    assert_eq!(again, cancelled);
+    assert!(s.claim("w", 6, 100).await.unwrap().is_none());
+    assert_eq!(
+        s.delete_capture("cap_1").await.unwrap(),
+        DeleteOutcome::Deleted
+    );
+    assert_eq!(
+        s.delete_capture("cap_1").await.unwrap(),
+        DeleteOutcome::NotFound
+    );
+    assert!(s.request_cancel("nope", 5).await.unwrap().is_none());
+    assert!(s.job("nope").await.unwrap().is_none());
+    s.ping().await.unwrap();
+}
+
+/// Runs every check, each on a fresh store from `fresh`.
+async fn the_suite<F, Fut>(fresh: F)
+where
+    F: Fn() -> Fut,
+    Fut: std::future::Future<Output = Arc<dyn Store>>,
+{
+    claim_is_exclusive_and_fifo(fresh().await.as_ref()).await;
+    concurrent_claims_take_each_job_once(fresh().await).await;
+    only_the_owner_can_heartbeat_and_finish(fresh().await.as_ref()).await;
+    a_requeued_job_keeps_its_progress_and_is_claimed_again(fresh().await.as_ref()).await;
+    expired_leases_are_requeued_then_abandoned(fresh().await.as_ref()).await;
+    an_expired_job_with_a_cancel_request_ends_cancelled(fresh().await.as_ref()).await;
+    idempotency_key_returns_the_same_job_or_conflicts(fresh().await.as_ref()).await;
+    concurrent_submits_with_one_key_create_one_job(fresh().await).await;
+    cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn the_sqlite_store_passes_the_suite() {
+    let dir = tempfile::tempdir().unwrap();
+    let counter = std::sync::atomic::AtomicUsize::new(0);
+    the_suite(|| {
+        let n = counter.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let path = dir.path().join(format!("db{n}.sqlite3"));
+        async move { Arc::new(SqliteStore::open(&path).unwrap()) as Arc<dyn Store> }
+    })
+    .await;
+}
+
+/// Runs `sql` on the cluster's `postgres` database; returns the first column of its rows.
+async fn admin_query(url: &str, sql: &str) -> Vec<i64> {
+    let (client, connection) = tokio_postgres::connect(url, tokio_postgres::NoTls)
+        .await
+        .unwrap();
+    tokio::spawn(connection);
+    if sql.starts_with("SELECT") {
+        let rows = client.query(sql, &[]).await.unwrap();
+        rows.iter().map(|r| r.get::<_, i64>(0)).collect()
+    } else {
+        client.batch_execute(sql).await.unwrap();
+        Vec::new()
+    }
+}
+
+/// A new empty database on `cluster`; its URL.
+async fn new_database(cluster: &TempPostgres, name: &str) -> String {
+    admin_query(&cluster.url, &format!("CREATE DATABASE {name}")).await;
+    cluster.url.replace("/postgres", &format!("/{name}"))
+}
+
+/// A fresh database on `cluster` for each check, migrated by the store.
+async fn fresh_postgres(cluster: &TempPostgres, n: usize) -> Arc<dyn Store> {
+    let url = new_database(cluster, &format!("suite_{n}")).await;
+    Arc::new(PostgresStore::connect(&url).await.unwrap())
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn the_postgres_store_passes_the_suite() {
+    let Some(cluster) = TempPostgres::start() else {
+        return;
+    };
+    let counter = std::sync::atomic::AtomicUsize::new(0);
+    the_suite(|| {
+        let n = counter.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        fresh_postgres(&cluster, n)
+    })
+    .await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn replicas_starting_together_migrate_the_schema_once() {
+    let Some(cluster) = TempPostgres::start() else {
+        return;
+    };
+    let url = new_database(&cluster, "racing").await;
+    let starts = (0..6).map(|_| {
+        let url = url.clone();
+        tokio::spawn(async move { PostgresStore::connect(&url).await.map(|_| ()) })
+    });
+    for start in starts {
+        start.await.unwrap().unwrap();
+    }
+    let versions = admin_query(&url, "SELECT count(*) FROM schema_migrations").await;
+    assert_eq!(versions, [1]);
+    // A database from a newer build is refused, not silently used.
+    admin_query(
+        &url,
+        "INSERT INTO schema_migrations (version, applied_at) VALUES (999, 0)",
+    )
+    .await;
+    let refused = PostgresStore::connect(&url).await.err().unwrap();
+    assert!(matches!(refused, StoreError::Migration(_)), "{refused}");
+    assert!(refused.to_string().contains("999"), "{refused}");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn an_outage_is_unavailable_and_the_store_recovers_with_its_data() {
+    let Some(cluster) = TempPostgres::start() else {
+        return;
+    };
+    let store = PostgresStore::connect(&cluster.url).await.unwrap();
+    store.submit(&new_job("job_a", 1), None).await.unwrap();
+    cluster.stop_server();
+    for _ in 0..2 {
+        let error = store.job("job_a").await.err().unwrap();
+        assert!(matches!(error, StoreError::Unavailable(_)), "{error:?}");
+    }
+    assert!(matches!(
+        PostgresStore::connect(&cluster.url).await,
+        Err(StoreError::Unavailable(_))
+    ));
+    cluster.start_server();
+    let job = store.job("job_a").await.unwrap().unwrap();
+    assert_eq!(job.state, JobState::Queued);
+}

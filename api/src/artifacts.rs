@@ -1,5 +1,6 @@
-//! Storage of the files a job produces. [`ArtifactStore`] is the seam (an object store can implement
-//! it later); [`FsArtifacts`] keeps them on the local filesystem under `DATA_DIR/artifacts/JOB_ID/`.
+//! Storage of the files a job produces. [`ArtifactStore`] is the seam: [`FsArtifacts`] keeps them
+//! on the local filesystem under `DATA_DIR/artifacts/JOB_ID/`, [`BucketArtifacts`] in the object
+//! store of a scaled-out deployment under `artifacts/JOB_ID/` ([`crate::bucket`]).
 //! Artifact names are relative paths of `/`-separated segments made of `[A-Za-z0-9._-]` that do not
 //! start with a dot, so a name can never leave its job's folder.
 
@@ -11,6 +12,8 @@ use serde::Serialize;
 use thiserror::Error;
 use tokio::io::{AsyncRead, AsyncReadExt};
 
+use crate::bucket::{Bucket, BucketError};
+
 /// Failures of artifact storage.
 #[derive(Debug, Error)]
 pub enum ArtifactError {
@@ -21,6 +24,8 @@ pub enum ArtifactError {
     },
     #[error("`{0}` is not a valid artifact name")]
     BadName(String),
+    #[error(transparent)]
+    Bucket(#[from] BucketError),
 }
 
 fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> ArtifactError + '_ {
@@ -42,16 +47,21 @@ pub struct ArtifactInfo {
 pub type ArtifactReader = Pin<Box<dyn AsyncRead + Send>>;
 
 /// Where job products live.
+#[async_trait::async_trait]
 pub trait ArtifactStore: Send + Sync + 'static {
     /// Moves every file under `staging` (recursively) into the job's artifacts, replacing any
     /// earlier ones; returns what is stored now.
-    fn publish(&self, job_id: &str, staging: &Path) -> Result<Vec<ArtifactInfo>, ArtifactError>;
+    async fn publish(
+        &self,
+        job_id: &str,
+        staging: &Path,
+    ) -> Result<Vec<ArtifactInfo>, ArtifactError>;
     /// The job's artifacts, sorted by name (empty if it has none).
-    fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError>;
+    async fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError>;
     /// One artifact's description, `None` if absent.
-    fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError>;
+    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError>;
     /// `len` bytes of the artifact from byte `start` (the caller checked the range against `stat`).
-    fn open_range(
+    async fn open_range(
         &self,
         job_id: &str,
         name: &str,
@@ -59,7 +69,15 @@ pub trait ArtifactStore: Send + Sync + 'static {
         len: u64,
     ) -> Result<ArtifactReader, ArtifactError>;
     /// Removes the job's artifacts.
-    fn delete(&self, job_id: &str) -> Result<(), ArtifactError>;
+    async fn delete(&self, job_id: &str) -> Result<(), ArtifactError>;
+}
+
+/// The job's folder name, checked like an artifact name without `/`.
+fn job_folder(job_id: &str) -> Result<&str, ArtifactError> {
+    if !valid_name(job_id) || job_id.contains('/') {
+        return Err(ArtifactError::BadName(job_id.to_owned()));
+    }
+    Ok(job_id)
 }
 
 /// Content type of an artifact by extension.
@@ -103,10 +121,7 @@ impl FsArtifacts {
     }
 
     fn job_dir(&self, job_id: &str) -> Result<PathBuf, ArtifactError> {
-        if !valid_name(job_id) || job_id.contains('/') {
-            return Err(ArtifactError::BadName(job_id.to_owned()));
-        }
-        Ok(self.root.join(job_id))
+        Ok(self.root.join(job_folder(job_id)?))
     }
 
     fn path(&self, job_id: &str, name: &str) -> Result<PathBuf, ArtifactError> {
@@ -136,8 +151,15 @@ fn walk_files(dir: &Path, prefix: &str, out: &mut Vec<(String, PathBuf)>) -> std
     Ok(())
 }
 
+// The file operations below are metadata changes and small reads, done in place; the bytes of a
+// download are streamed by tokio's file reader.
+#[async_trait::async_trait]
 impl ArtifactStore for FsArtifacts {
-    fn publish(&self, job_id: &str, staging: &Path) -> Result<Vec<ArtifactInfo>, ArtifactError> {
+    async fn publish(
+        &self,
+        job_id: &str,
+        staging: &Path,
+    ) -> Result<Vec<ArtifactInfo>, ArtifactError> {
         let dir = self.job_dir(job_id)?;
         let mut files = Vec::new();
         walk_files(staging, "", &mut files).map_err(io_err(staging))?;
@@ -159,10 +181,10 @@ impl ArtifactStore for FsArtifacts {
             }
             std::fs::rename(&source, &target).map_err(io_err(&target))?;
         }
-        self.list(job_id)
+        self.list(job_id).await
     }
 
-    fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError> {
+    async fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError> {
         let dir = self.job_dir(job_id)?;
         if !dir.is_dir() {
             return Ok(Vec::new());
@@ -182,7 +204,7 @@ impl ArtifactStore for FsArtifacts {
         Ok(infos)
     }
 
-    fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError> {
+    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError> {
         let path = match self.path(job_id, name) {
             Ok(path) => path,
             Err(ArtifactError::BadName(_)) => return Ok(None),
@@ -200,7 +222,7 @@ impl ArtifactStore for FsArtifacts {
         }
     }
 
-    fn open_range(
+    async fn open_range(
         &self,
         job_id: &str,
         name: &str,
@@ -213,12 +235,98 @@ impl ArtifactStore for FsArtifacts {
         Ok(Box::pin(tokio::fs::File::from_std(file).take(len)))
     }
 
-    fn delete(&self, job_id: &str) -> Result<(), ArtifactError> {
+    async fn delete(&self, job_id: &str) -> Result<(), ArtifactError> {
         let dir = self.job_dir(job_id)?;
         match std::fs::remove_dir_all(&dir) {
             Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(io_err(&dir)(e)),
             _ => Ok(()),
         }
+    }
+}
+
+/// Artifacts as objects under `artifacts/JOB_ID/` of the deployment's bucket.
+pub struct BucketArtifacts {
+    bucket: std::sync::Arc<Bucket>,
+}
+
+impl BucketArtifacts {
+    pub fn new(bucket: std::sync::Arc<Bucket>) -> Self {
+        BucketArtifacts { bucket }
+    }
+
+    fn folder(job_id: &str) -> Result<String, ArtifactError> {
+        Ok(format!("artifacts/{}", job_folder(job_id)?))
+    }
+}
+
+#[async_trait::async_trait]
+impl ArtifactStore for BucketArtifacts {
+    async fn publish(
+        &self,
+        job_id: &str,
+        staging: &Path,
+    ) -> Result<Vec<ArtifactInfo>, ArtifactError> {
+        let folder = Self::folder(job_id)?;
+        let mut files = Vec::new();
+        walk_files(staging, "", &mut files).map_err(io_err(staging))?;
+        for (name, path) in files.iter().filter(|(name, _)| !valid_name(name)) {
+            tracing::warn!(
+                job_id,
+                name,
+                "skipping an exported file with an unsafe name"
+            );
+            std::fs::remove_file(path).map_err(io_err(path))?;
+        }
+        self.bucket.delete_folder(&folder).await?;
+        self.bucket.upload_dir(&folder, staging).await?;
+        self.list(job_id).await
+    }
+
+    async fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError> {
+        let files = self.bucket.list(&Self::folder(job_id)?).await?;
+        Ok(files
+            .into_iter()
+            .filter(|f| valid_name(&f.name))
+            .map(|f| ArtifactInfo {
+                content_type: content_type(&f.name),
+                name: f.name,
+                size: f.size,
+            })
+            .collect())
+    }
+
+    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError> {
+        if !valid_name(name) {
+            return Ok(None);
+        }
+        let key = format!("{}/{name}", Self::folder(job_id)?);
+        Ok(self.bucket.size(&key).await?.map(|size| ArtifactInfo {
+            name: name.to_owned(),
+            size,
+            content_type: content_type(name),
+        }))
+    }
+
+    async fn open_range(
+        &self,
+        job_id: &str,
+        name: &str,
+        start: u64,
+        len: u64,
+    ) -> Result<ArtifactReader, ArtifactError> {
+        if !valid_name(name) {
+            return Err(ArtifactError::BadName(name.to_owned()));
+        }
+        let key = format!("{}/{name}", Self::folder(job_id)?);
+        if len == 0 {
+            return Ok(Box::pin(tokio::io::empty()));
+        }
+        let stream = self.bucket.read_range(&key, start, len).await?;
+        Ok(Box::pin(tokio_util::io::StreamReader::new(stream)))
+    }
+
+    async fn delete(&self, job_id: &str) -> Result<(), ArtifactError> {
+        Ok(self.bucket.delete_folder(&Self::folder(job_id)?).await?)
     }
 }
 
@@ -246,32 +354,65 @@ mod tests {
         }
     }
 
-    #[tokio::test]
-    async fn publish_moves_nested_files_and_ranges_read_the_right_bytes() {
-        let dir = tempfile::tempdir().unwrap();
-        let store = FsArtifacts::new(dir.path().join("artifacts")).unwrap();
-        let staging = dir.path().join("staging");
+    /// What every artifact store must do: publish nested files (replacing earlier ones), list,
+    /// stat and read byte ranges, refuse names that leave the job, delete.
+    async fn exercise(store: &dyn ArtifactStore, scratch: &Path) {
+        let staging = scratch.join("staging");
+        std::fs::create_dir_all(staging.join("renders")).unwrap();
+        std::fs::write(staging.join("old.txt"), b"old").unwrap();
+        store.publish("job_1", &staging).await.unwrap();
+        std::fs::remove_dir_all(&staging).unwrap();
         std::fs::create_dir_all(staging.join("renders")).unwrap();
         std::fs::write(staging.join("metrics.json"), b"{\"psnr\": 30}").unwrap();
         std::fs::write(staging.join("renders/test_000.png"), b"0123456789").unwrap();
-        let listed = store.publish("job_1", &staging).unwrap();
+        std::fs::write(staging.join(".hidden"), b"x").unwrap();
+        let listed = store.publish("job_1", &staging).await.unwrap();
         let names: Vec<_> = listed.iter().map(|a| (a.name.as_str(), a.size)).collect();
         assert_eq!(names, [("metrics.json", 12), ("renders/test_000.png", 10)]);
         assert_eq!(listed[1].content_type, "image/png");
-        assert!(!staging.join("metrics.json").exists(), "moved, not copied");
         let mut part = Vec::new();
         store
             .open_range("job_1", "renders/test_000.png", 3, 4)
+            .await
             .unwrap()
             .read_to_end(&mut part)
             .await
             .unwrap();
         assert_eq!(part, b"3456");
+        let stat = store.stat("job_1", "metrics.json").await.unwrap().unwrap();
+        assert_eq!((stat.size, stat.content_type), (12, "application/json"));
+        assert!(store.stat("job_1", "nope.json").await.unwrap().is_none());
         assert!(store
             .stat("job_1", "../job_1/metrics.json")
+            .await
             .unwrap()
             .is_none());
-        store.delete("job_1").unwrap();
-        assert!(store.list("job_1").unwrap().is_empty());
+        assert!(store.list("job_2").await.unwrap().is_empty());
+        assert!(matches!(
+            store.list("../job_1").await,
+            Err(ArtifactError::BadName(_))
+        ));
+        store.delete("job_1").await.unwrap();
+        assert!(store.list("job_1").await.unwrap().is_empty());
+        store.delete("job_1").await.unwrap();
+    }
+
+    #[tokio::test]
+    async fn filesystem_artifacts_pass_the_suite_and_move_files() {
+        let dir = tempfile::tempdir().unwrap();
+        let store = FsArtifacts::new(dir.path().join("artifacts")).unwrap();
+        exercise(&store, dir.path()).await;
+        assert!(
+            !dir.path().join("staging/metrics.json").exists(),
+            "moved, not copied"
+        );
+    }
+
+    #[tokio::test]
+    async fn bucket_artifacts_pass_the_suite() {
+        let dir = tempfile::tempdir().unwrap();
+        let url = format!("file://{}", dir.path().join("bucket").display());
+        let bucket = std::sync::Arc::new(Bucket::open(&url, &[]).unwrap());
+        exercise(&BucketArtifacts::new(bucket), dir.path()).await;
     }
 }

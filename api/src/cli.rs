@@ -21,8 +21,12 @@ pub struct Cli {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Serve the HTTP API and run queued jobs until SIGTERM or Ctrl-C.
+    /// Serve the HTTP API and run queued jobs (`--workers`; 0: the API alone) until SIGTERM or
+    /// Ctrl-C.
     Serve(ServeArgs),
+    /// Run queued jobs of a shared database and object store, without the API (its listener
+    /// answers only /healthz and /metrics), until SIGTERM or Ctrl-C.
+    Worker(ServeArgs),
 }
 
 #[derive(Debug, Args)]
@@ -48,6 +52,12 @@ pub struct ServeArgs {
     /// SQLite file in the data dir.
     #[arg(long, env = "PHYGAP_DATABASE_URL", hide_env_values = true)]
     pub database_url: Option<String>,
+    /// Object store for captures, checkpoints and artifacts, shared by processes on other
+    /// machines: `s3://bucket/prefix` (endpoint and credentials from the usual AWS variables:
+    /// AWS_ENDPOINT_URL, AWS_ACCESS_KEY_ID, AWS_SECRET_ACCESS_KEY, AWS_REGION, AWS_ALLOW_HTTP)
+    /// or `file:///shared/folder`; default: the data dir alone.
+    #[arg(long, env = "PHYGAP_ARTIFACT_URL")]
+    pub artifact_url: Option<String>,
 }
 
 impl ServeArgs {
@@ -58,6 +68,15 @@ impl ServeArgs {
         config.token = self.token.clone().filter(|t| !t.is_empty());
         config.max_upload_bytes = self.max_upload_mb << 20;
         config.database_url = self.database_url.clone().filter(|url| !url.is_empty());
+        config.artifact_url = self.artifact_url.clone().filter(|url| !url.is_empty());
         config
+    }
+
+    /// The configuration of a worker process: jobs only, no `/v1` API.
+    pub fn to_worker_config(&self) -> ServiceConfig {
+        ServiceConfig {
+            api: false,
+            ..self.to_config()
+        }
     }
 }

@@ -106,6 +106,22 @@ impl IntoResponse for ApiError {
     }
 }
 
+impl From<crate::bucket::BucketError> for ApiError {
+    fn from(e: crate::bucket::BucketError) -> Self {
+        match e {
+            crate::bucket::BucketError::Unavailable(detail) => {
+                tracing::error!(%detail, "the object store is unavailable");
+                ApiError::new(
+                    StatusCode::SERVICE_UNAVAILABLE,
+                    "storage_unavailable",
+                    "the object store is unavailable; nothing was changed, try again shortly",
+                )
+            }
+            other => ApiError::internal("accessing the object store", other),
+        }
+    }
+}
+
 impl From<crate::store::StoreError> for ApiError {
     fn from(e: crate::store::StoreError) -> Self {
         match e {
@@ -124,7 +140,10 @@ impl From<crate::store::StoreError> for ApiError {
 
 impl From<crate::artifacts::ArtifactError> for ApiError {
     fn from(e: crate::artifacts::ArtifactError) -> Self {
-        ApiError::internal("accessing artifact storage", e)
+        match e {
+            crate::artifacts::ArtifactError::Bucket(e) => e.into(),
+            other => ApiError::internal("accessing artifact storage", other),
+        }
     }
 }
 

@@ -1,18 +1,21 @@
-//! The phygap reconstruction service: a JSON HTTP API (axum) over a durable job queue (SQLite or
-//! PostgreSQL),
-//! local artifact storage and a pool of workers that run the reconstruction core through the
-//! [`pipeline::Pipeline`] trait. HTTP handlers only validate, store and enqueue; all heavy work
-//! (archive extraction, capture loading, training, export, relighting) runs on tokio's blocking
-//! pool, one blocking thread per running job.
+//! The phygap reconstruction service: a JSON HTTP API (axum) over a durable job queue (SQLite, or
+//! PostgreSQL shared by several processes), artifact storage (the data dir, or an object store
+//! shared by processes on other machines: [`bucket`]) and a pool of workers that run the
+//! reconstruction core through the [`pipeline::Pipeline`] trait. HTTP handlers only validate,
+//! store and enqueue; all heavy work (archive extraction, capture loading, training, export,
+//! relighting) runs on tokio's blocking pool, one blocking thread per running job. A process
+//! serves the API, runs jobs, or both ([`ServiceConfig::api`], [`ServiceConfig::workers`]).
 //!
 //! Layout of `--data-dir`: `phygap.sqlite3` (captures, jobs, queue, progress; unless a PostgreSQL
-//! `--database-url` holds them, shared by every process using the same data dir), `captures/ID/`
-//! (extracted captures), `jobs/ID/model/` (checkpoints), `jobs/ID/input/` (relight inputs),
-//! `artifacts/ID/` (downloadable results), `tmp/` (uploads in progress; leftovers removed at start).
+//! `--database-url` holds them), `captures/ID/` (extracted captures), `jobs/ID/model/`
+//! (checkpoints), `jobs/ID/input/` (relight inputs), `artifacts/ID/` (downloadable results, unless
+//! an `--artifact-url` holds them), `tmp/` (uploads in progress; leftovers removed at start). With
+//! an object store, the folders other than `tmp/` are working copies of its objects.
 
 pub mod archive;
 pub mod artifacts;
 pub mod auth;
+pub mod bucket;
 pub mod cli;
 pub mod core_pipeline;
 pub mod error;
@@ -33,7 +36,8 @@ use tokio::task::JoinHandle;
 use tokio_util::sync::CancellationToken;
 
 use crate::archive::ExtractLimits;
-use crate::artifacts::{ArtifactError, ArtifactStore, FsArtifacts};
+use crate::artifacts::{ArtifactError, ArtifactStore, BucketArtifacts, FsArtifacts};
+use crate::bucket::{Bucket, BucketError};
 use crate::metrics::Metrics;
 use crate::pipeline::Pipeline;
 use crate::queue::{CancelReason, Runtime};
@@ -61,6 +65,13 @@ pub struct ServiceConfig {
     /// A PostgreSQL database shared with other processes (`postgres://…`); without one, the
     /// embedded SQLite file in the data dir.
     pub database_url: Option<String>,
+    /// The object store shared with other processes (`s3://bucket/prefix`, `file:///folder`) for
+    /// captures, relight inputs, checkpoints and artifacts; without one, the data dir alone.
+    pub artifact_url: Option<String>,
+    /// Settings of that store that win over the AWS environment variables (`aws_endpoint`, …).
+    pub artifact_options: Vec<(String, String)>,
+    /// Serve the `/v1` API (a worker process serves only `/healthz` and `/metrics`).
+    pub api: bool,
 }
 
 impl ServiceConfig {
@@ -77,6 +88,9 @@ impl ServiceConfig {
             max_attempts: 5,
             poll_interval: Duration::from_secs(1),
             database_url: None,
+            artifact_url: None,
+            artifact_options: Vec::new(),
+            api: true,
         }
     }
 }
@@ -128,6 +142,8 @@ pub struct AppState {
     pub paths: Arc<Paths>,
     pub store: Arc<dyn Store>,
     pub artifacts: Arc<dyn ArtifactStore>,
+    /// The shared object store, where the deployment has one ([`bucket`]).
+    pub bucket: Option<Arc<Bucket>>,
     pub pipeline: Arc<dyn Pipeline>,
     pub metrics: Arc<Metrics>,
     pub runtime: Arc<Runtime>,
@@ -147,6 +163,8 @@ pub enum StartError {
     Store(#[from] StoreError),
     #[error("cannot open artifact storage: {0}")]
     Artifacts(#[from] ArtifactError),
+    #[error("cannot open the object store: {0}")]
+    Bucket(#[from] BucketError),
 }
 
 /// A running service: HTTP listener, workers and the lease reaper.
@@ -236,8 +254,14 @@ impl Server {
             ),
         };
         sweep_leftovers(&paths, store.as_ref(), leftover_age).await?;
-        let artifacts: Arc<dyn ArtifactStore> =
-            Arc::new(FsArtifacts::new(paths.artifacts.clone())?);
+        let bucket = match &config.artifact_url {
+            Some(url) => Some(Arc::new(Bucket::open(url, &config.artifact_options)?)),
+            None => None,
+        };
+        let artifacts: Arc<dyn ArtifactStore> = match &bucket {
+            Some(bucket) => Arc::new(BucketArtifacts::new(bucket.clone())),
+            None => Arc::new(FsArtifacts::new(paths.artifacts.clone())?),
+        };
         let listener = tokio::net::TcpListener::bind(config.bind)
             .await
             .map_err(|source| StartError::Io {
@@ -253,6 +277,7 @@ impl Server {
             paths: Arc::new(paths),
             store,
             artifacts,
+            bucket,
             pipeline,
             metrics: Arc::new(Metrics::default()),
             runtime: Arc::new(Runtime::new()),

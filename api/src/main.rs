@@ -1,5 +1,6 @@
-//! `phygap-api serve`: runs the reconstruction service until SIGTERM or Ctrl-C, then checkpoints
-//! and requeues running jobs before exiting.
+//! `phygap-api serve` (API and workers) or `phygap-api worker` (workers alone): runs the
+//! reconstruction service until SIGTERM or Ctrl-C, then checkpoints and requeues running jobs
+//! before exiting.
 
 use anyhow::Context;
 use clap::Parser;
@@ -20,16 +21,16 @@ async fn serve() -> anyhow::Result<()> {
         )
         .with_writer(std::io::stderr)
         .init();
-    match Cli::parse().command {
-        Command::Serve(args) => {
-            let pipeline = phygap_api::pipeline::production_pipeline();
-            let server = phygap_api::Server::start(args.to_config(), pipeline)
-                .await
-                .context("starting the service")?;
-            wait_for_signal().await?;
-            server.shutdown().await;
-        }
-    }
+    let config = match Cli::parse().command {
+        Command::Serve(args) => args.to_config(),
+        Command::Worker(args) => args.to_worker_config(),
+    };
+    let pipeline = phygap_api::pipeline::production_pipeline();
+    let server = phygap_api::Server::start(config, pipeline)
+        .await
+        .context("starting the service")?;
+    wait_for_signal().await?;
+    server.shutdown().await;
     Ok(())
 }
 

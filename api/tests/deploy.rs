@@ -50,10 +50,12 @@ fn json_array(text: &str) -> Vec<String> {
 }
 
 fn serve_args(argv: &[String]) -> phygap_api::cli::ServeArgs {
-    let Command::Serve(args) = Cli::try_parse_from(argv)
+    match Cli::try_parse_from(argv)
         .unwrap_or_else(|e| panic!("{argv:?} does not parse: {e}"))
-        .command;
-    args
+        .command
+    {
+        Command::Serve(args) | Command::Worker(args) => args,
+    }
 }
 
 fn flags(argv: &[String]) -> Vec<&str> {

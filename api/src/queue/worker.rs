@@ -3,6 +3,12 @@
 //! its progress and extends its lease (at most every 100 ms while events arrive, at least every
 //! third of the lease), and turns a cancel requested in the store into the job's cancel flag. One
 //! reaper task requeues jobs whose lease expired (their process died).
+//!
+//! With a shared object store ([`crate::bucket`]) a job's files travel through it: before running,
+//! a worker fetches the capture (or a relight's inputs and its parent's model) that its own data
+//! dir lacks, and, when it resumes a job, the job's model folder with the latest checkpoint; every
+//! checkpoint it writes is uploaded, so a worker on another machine continues where this one
+//! stopped. A store that cannot be reached puts the job back in the queue instead of failing it.
 
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -88,6 +94,33 @@ async fn reaper_loop(state: AppState) {
 enum Executed {
     Completed,
     Interrupted,
+    /// The shared object store could not be reached: the job goes back to the queue.
+    StorageUnavailable(String),
+}
+
+/// Why the blocking part of a job stopped early.
+enum Stop {
+    /// The job's own failure (a message for its `error` field).
+    Failed(String),
+    /// The shared object store could not be reached.
+    Storage(crate::bucket::BucketError),
+}
+
+impl From<String> for Stop {
+    fn from(message: String) -> Self {
+        Stop::Failed(message)
+    }
+}
+
+impl From<crate::bucket::BucketError> for Stop {
+    fn from(e: crate::bucket::BucketError) -> Self {
+        Stop::Storage(e)
+    }
+}
+
+/// Runs an object-store transfer from a job's blocking thread.
+fn block_on<F: std::future::Future>(future: F) -> F::Output {
+    tokio::runtime::Handle::current().block_on(future)
 }
 
 /// Shared between the blocking job thread and its heartbeat task.
@@ -201,6 +234,10 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
             live.update(|p| p.stage = Some("done".into()));
             Some(Finish::Succeeded)
         }
+        Ok(Ok(Executed::StorageUnavailable(message))) => {
+            tracing::warn!(error = %message, "object store unavailable; job requeued");
+            Some(Finish::Requeue)
+        }
         Ok(Ok(Executed::Interrupted)) => match control.reason() {
             Some(CancelReason::User) => Some(Finish::Cancelled),
             Some(CancelReason::LeaseLost) => None,
@@ -309,19 +346,68 @@ fn execute(
     control: &JobControl,
     live: &Live,
 ) -> Result<Executed, String> {
+    match execute_steps(state, job, control, live) {
+        Ok(executed) => Ok(executed),
+        Err(Stop::Failed(message)) => Err(message),
+        Err(Stop::Storage(e)) => Ok(Executed::StorageUnavailable(e.to_string())),
+    }
+}
+
+/// Fetches `folder` of the object store into `dir` unless `dir` already exists (or the
+/// deployment has no object store).
+fn fetch_missing(state: &AppState, folder: &str, dir: &std::path::Path) -> Result<(), Stop> {
+    match &state.bucket {
+        Some(bucket) if !dir.is_dir() => {
+            let files = block_on(bucket.download_dir(folder, dir))?;
+            tracing::info!(folder, files, "fetched from the object store");
+            Ok(())
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Uploads a job's model folder (its checkpoint) to the object store, if there is one.
+fn upload_model(state: &AppState, job_id: &str, model_dir: &std::path::Path) -> Result<(), Stop> {
+    if let Some(bucket) = &state.bucket {
+        block_on(bucket.upload_dir(&format!("jobs/{job_id}/model"), model_dir))?;
+    }
+    Ok(())
+}
+
+fn execute_steps(
+    state: &AppState,
+    job: &JobRecord,
+    control: &JobControl,
+    live: &Live,
+) -> Result<Executed, Stop> {
     let paths = &state.paths;
     let staging = paths.staging_dir(&job.id);
     match &job.spec {
         JobSpec::Train { config } => {
             let capture_dir = paths.capture_dir(&job.capture_id);
+            fetch_missing(state, &format!("captures/{}", job.capture_id), &capture_dir)?;
             if !capture_dir.is_dir() {
-                return Err(format!("capture `{}` no longer exists", job.capture_id));
+                return Err(format!("capture `{}` no longer exists", job.capture_id).into());
             }
             let model_dir = paths.model_dir(&job.id);
+            let resume = job.attempts > 1;
+            if let (true, Some(bucket)) = (resume, &state.bucket) {
+                // The object store holds the latest checkpoint, wherever the job ran before.
+                let files =
+                    block_on(bucket.download_dir(&format!("jobs/{}/model", job.id), &model_dir))?;
+                tracing::info!(files, "fetched the job's checkpoint from the object store");
+            }
             std::fs::create_dir_all(&model_dir)
                 .map_err(|e| format!("creating `{}`: {e}", model_dir.display()))?;
-            let resume = job.attempts > 1;
-            let mut on_event = |event: &TrainEvent| live.update(|p| apply_event(p, event));
+            let mut on_event = |event: &TrainEvent| {
+                live.update(|p| apply_event(p, event));
+                if let TrainEvent::Checkpoint { iteration } = event {
+                    if let Err(Stop::Storage(e)) = upload_model(state, &job.id, &model_dir) {
+                        // The next checkpoint tries again; a resume starts from the last upload.
+                        tracing::warn!(iteration, error = %e, "checkpoint not uploaded");
+                    }
+                }
+            };
             let outcome = state
                 .pipeline
                 .train(
@@ -333,6 +419,8 @@ fn execute(
                     &mut on_event,
                 )
                 .map_err(|e| e.to_string())?;
+            // The final (or interrupted) state, for a resume or a relight on another machine.
+            upload_model(state, &job.id, &model_dir)?;
             if let crate::pipeline::RunOutcome::Interrupted { iteration } = outcome {
                 tracing::info!(iteration, reason = ?control.reason(), "training interrupted at a checkpoint");
                 return Ok(Executed::Interrupted);
@@ -355,12 +443,15 @@ fn execute(
             }
             live.update(|p| p.stage = Some("relighting".into()));
             let input = paths.input_dir(&job.id);
+            fetch_missing(state, &format!("jobs/{}/input", job.id), &input)?;
+            let parent_model = paths.model_dir(parent_job_id);
+            fetch_missing(state, &format!("jobs/{parent_job_id}/model"), &parent_model)?;
             let cameras = cameras_file.as_ref().map(|name| input.join(name));
             replace_dir(&staging)?;
             state
                 .pipeline
                 .relight(
-                    &paths.model_dir(parent_job_id),
+                    &parent_model,
                     &input.join(envmap_file),
                     cameras.as_deref(),
                     &staging,
@@ -369,10 +460,11 @@ fn execute(
                 .map_err(|e| e.to_string())?;
         }
     }
-    let published = state
-        .artifacts
-        .publish(&job.id, &staging)
-        .map_err(|e| e.to_string())?;
+    let published = match block_on(state.artifacts.publish(&job.id, &staging)) {
+        Ok(published) => published,
+        Err(crate::artifacts::ArtifactError::Bucket(e)) => return Err(e.into()),
+        Err(e) => return Err(e.to_string().into()),
+    };
     let _ = std::fs::remove_dir_all(&staging);
     tracing::info!(artifacts = published.len(), "artifacts published");
     Ok(Executed::Completed)

@@ -31,7 +31,7 @@ pub async fn list(
     Path(id): Path<String>,
 ) -> Result<Json<ArtifactList>, ApiError> {
     require_job(&state, &id).await?;
-    let artifacts = state.artifacts.list(&id)?;
+    let artifacts = state.artifacts.list(&id).await?;
     Ok(Json(ArtifactList {
         job_id: id,
         artifacts,
@@ -97,7 +97,8 @@ pub async fn download(
     require_job(&state, &id).await?;
     let info = state
         .artifacts
-        .stat(&id, &name)?
+        .stat(&id, &name)
+        .await?
         .ok_or_else(|| ApiError::not_found("artifact", &name))?;
     let range = parse_range(
         headers.get(header::RANGE).and_then(|v| v.to_str().ok()),
@@ -120,7 +121,7 @@ pub async fn download(
             return Ok(response);
         }
     };
-    let reader = state.artifacts.open_range(&id, &name, start, len)?;
+    let reader = state.artifacts.open_range(&id, &name, start, len).await?;
     let mut response = Response::new(Body::from_stream(ReaderStream::new(reader)));
     *response.status_mut() = status;
     let h = response.headers_mut();

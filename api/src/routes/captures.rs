@@ -186,8 +186,9 @@ fn extract_and_file(
     })
 }
 
-/// Extracts and validates an upload on the blocking pool, then records it; a capture whose
-/// record cannot be written is removed again.
+/// Extracts and validates an upload on the blocking pool, copies it to the deployment's object
+/// store where there is one (so workers elsewhere can fetch it), then records it; a capture
+/// that cannot be stored or recorded is removed again.
 async fn ingest(
     state: AppState,
     staging: TempDir,
@@ -203,8 +204,19 @@ async fn ingest(
     })
     .await
     .map_err(|e| ApiError::internal("processing the upload", e))??;
+    let key = format!("captures/{}", filed.record.id);
+    if let Some(bucket) = &state.bucket {
+        if let Err(e) = bucket.upload_dir(&key, &filed.dir).await {
+            let _ = tokio::fs::remove_dir_all(&filed.dir).await;
+            let _ = bucket.delete_folder(&key).await;
+            return Err(e.into());
+        }
+    }
     if let Err(e) = state.store.insert_capture(&filed.record).await {
         let _ = tokio::fs::remove_dir_all(&filed.dir).await;
+        if let Some(bucket) = &state.bucket {
+            let _ = bucket.delete_folder(&key).await;
+        }
         return Err(e.into());
     }
     drop(filed.staging);
@@ -268,6 +280,9 @@ pub async fn remove(
             format!("capture `{id}` is used by a queued or running job; cancel it first"),
         )),
         DeleteOutcome::Deleted => {
+            if let Some(bucket) = &state.bucket {
+                bucket.delete_folder(&format!("captures/{id}")).await?;
+            }
             let dir = state.paths.capture_dir(&id);
             tokio::task::spawn_blocking(move || std::fs::remove_dir_all(dir))
                 .await

@@ -441,6 +441,14 @@ pub async fn relight(
     }
     std::fs::rename(staging.path(), &input_dir)
         .map_err(|e| ApiError::internal("filing the relight inputs", e))?;
+    let input_key = format!("jobs/{id}/input");
+    if let Some(bucket) = &state.bucket {
+        if let Err(e) = bucket.upload_dir(&input_key, &input_dir).await {
+            let _ = std::fs::remove_dir_all(state.paths.jobs.join(&id));
+            let _ = bucket.delete_folder(&input_key).await;
+            return Err(e.into());
+        }
+    }
     let job = NewJob {
         id: id.clone(),
         capture_id: parent.capture_id.clone(),
@@ -457,6 +465,9 @@ pub async fn relight(
         Ok((record, _)) => record,
         Err(e) => {
             let _ = std::fs::remove_dir_all(state.paths.jobs.join(&id));
+            if let Some(bucket) = &state.bucket {
+                let _ = bucket.delete_folder(&input_key).await;
+            }
             return Err(e.into());
         }
     };

@@ -89,22 +89,28 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
 }
 
 /// The complete application: routes, auth on `/v1`, JSON fallbacks, HTTP metrics, panic guard.
+/// A worker process (`config.api` false) serves only the unprotected routes (health, metrics).
 pub fn router(state: AppState) -> Router {
     let mut open = Router::new();
     let mut protected = Router::new();
-    for route in route_table(state.config.max_upload_bytes) {
+    let routes = route_table(state.config.max_upload_bytes);
+    for route in routes
+        .into_iter()
+        .filter(|r| state.config.api || !r.protected)
+    {
         if route.protected {
             protected = protected.route(route.path, route.handler);
         } else {
             open = open.route(route.path, route.handler);
         }
     }
-    let protected = protected.route_layer(axum::middleware::from_fn_with_state(
-        state.clone(),
-        crate::auth::require_token,
-    ));
-    open.merge(protected)
-        .fallback(not_found_fallback)
+    if state.config.api {
+        open = open.merge(protected.route_layer(axum::middleware::from_fn_with_state(
+            state.clone(),
+            crate::auth::require_token,
+        )));
+    }
+    open.fallback(not_found_fallback)
         .method_not_allowed_fallback(method_not_allowed_fallback)
         .layer(axum::middleware::from_fn_with_state(
             state.clone(),

@@ -58,6 +58,11 @@ pub struct ServeArgs {
     /// or `file:///shared/folder`; default: the data dir alone.
     #[arg(long, env = "PHYGAP_ARTIFACT_URL")]
     pub artifact_url: Option<String>,
+    /// Seconds a worker owns a job without a heartbeat; a job whose worker died is taken over
+    /// by another after this.
+    #[arg(long, default_value_t = 30, env = "PHYGAP_LEASE_SECONDS",
+          value_parser = clap::value_parser!(u64).range(2..=3600))]
+    pub lease_seconds: u64,
 }
 
 impl ServeArgs {
@@ -69,6 +74,7 @@ impl ServeArgs {
         config.max_upload_bytes = self.max_upload_mb << 20;
         config.database_url = self.database_url.clone().filter(|url| !url.is_empty());
         config.artifact_url = self.artifact_url.clone().filter(|url| !url.is_empty());
+        config.lease = std::time::Duration::from_secs(self.lease_seconds);
         config
     }
 

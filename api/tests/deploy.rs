@@ -1,7 +1,9 @@
-//! The deploy files use paths and flags that exist: their `serve` command lines parse with the
-//! binary's clap definition and appear in its `--help`, the data dir matches the volume / state
-//! directory, the health check hits a real route, and the Docker build names the real package and
-//! binary.
+//! The deploy files use paths and flags that exist: their `serve` and `worker` command lines
+//! parse with the binary's clap definition and appear in its `--help`, the environment variables
+//! they set are ones the binary reads, the data dir matches the volume / state directory, health
+//! checks and probes hit a real open route on the bound port, the Docker build names the real
+//! package and binary, and the compose file and Kubernetes manifests reference only services,
+//! secrets and keys they define.
 
 use std::path::{Path, PathBuf};
 
@@ -65,13 +67,69 @@ fn flags(argv: &[String]) -> Vec<&str> {
         .collect()
 }
 
-fn serve_help() -> String {
+fn help(subcommand: &str) -> String {
     let output = std::process::Command::new(env!("CARGO_BIN_EXE_phygap-api"))
-        .args(["serve", "--help"])
+        .args([subcommand, "--help"])
         .output()
         .unwrap();
     assert!(output.status.success());
     String::from_utf8(output.stdout).unwrap()
+}
+
+fn serve_help() -> String {
+    help("serve")
+}
+
+/// The command line of a container (`phygap-api` and its arguments), checked: it parses, its
+/// flags are in the subcommand's `--help`, and its data dir is the image's volume.
+fn checked_command(args: &serde_yaml::Value, what: &str) -> (String, phygap_api::cli::ServeArgs) {
+    let args: Vec<String> = args
+        .as_sequence()
+        .unwrap_or_else(|| panic!("{what}: no command"))
+        .iter()
+        .map(|a| a.as_str().unwrap().to_owned())
+        .collect();
+    let argv: Vec<String> = std::iter::once("phygap-api".to_owned())
+        .chain(args.iter().cloned())
+        .collect();
+    let help = help(&args[0]);
+    for flag in flags(&argv) {
+        assert!(
+            help.contains(flag),
+            "{what}: {flag} is not in `phygap-api {} --help`",
+            args[0]
+        );
+    }
+    let parsed = serve_args(&argv);
+    assert_eq!(parsed.data_dir, Path::new("/var/lib/phygap-api"), "{what}");
+    (args[0].clone(), parsed)
+}
+
+/// Asserts that every `PHYGAP_*` variable in `names` is one the binary reads.
+fn assert_known_variables<'a>(names: impl IntoIterator<Item = &'a str>, what: &str) {
+    let help = serve_help();
+    for name in names.into_iter().filter(|n| n.starts_with("PHYGAP_")) {
+        assert!(
+            help.contains(&format!("env: {name}")),
+            "{what}: {name} is not read by the binary"
+        );
+    }
+}
+
+/// Every YAML document of a file.
+fn yaml_documents(relative: &str) -> Vec<serde_yaml::Value> {
+    use serde::Deserialize;
+    serde_yaml::Deserializer::from_str(&read(relative))
+        .map(|doc| {
+            serde_yaml::Value::deserialize(doc).unwrap_or_else(|e| panic!("{relative}: {e}"))
+        })
+        .collect()
+}
+
+fn text(value: &serde_yaml::Value) -> &str {
+    value
+        .as_str()
+        .unwrap_or_else(|| panic!("not a string: {value:?}"))
 }
 
 #[test]
@@ -219,4 +277,162 @@ mod toml_lite {
             }
         }
     }
+}
+
+#[test]
+fn compose_file_runs_two_apis_and_workers_on_postgres_and_a_bucket() {
+    let compose = &yaml_documents("deploy/compose.yaml")[0];
+    let services = compose["services"].as_mapping().expect("services");
+    let mut apis = 0;
+    let mut workers = 0;
+    for (name, service) in services {
+        let name = text(name);
+        if let Some(depends) = service["depends_on"].as_mapping() {
+            for dependency in depends.keys() {
+                assert!(
+                    services.contains_key(dependency),
+                    "{name} depends on {dependency:?}"
+                );
+            }
+        }
+        if service["image"].as_str() != Some("phygap-api") {
+            continue;
+        }
+        let (role, args) = checked_command(&service["command"], name);
+        let environment = service["environment"].as_mapping().expect("environment");
+        assert_known_variables(environment.keys().map(text), name);
+        let database = text(&environment["PHYGAP_DATABASE_URL"]);
+        let host = database
+            .split('@')
+            .nth(1)
+            .and_then(|h| h.split(':').next())
+            .unwrap();
+        assert!(
+            services.contains_key(host),
+            "{name}: the database host {host} is a service"
+        );
+        let bucket = text(&environment["PHYGAP_ARTIFACT_URL"])
+            .strip_prefix("s3://")
+            .and_then(|rest| rest.split('/').next())
+            .unwrap();
+        let creates_bucket = services.values().any(|s| {
+            s["entrypoint"].as_sequence().is_some_and(|e| {
+                e.iter().any(|a| {
+                    a.as_str().is_some_and(|a| {
+                        a.contains(&format!("mb --ignore-existing store/{bucket}"))
+                    })
+                })
+            })
+        });
+        assert!(
+            creates_bucket,
+            "{name}: nothing creates the bucket {bucket}"
+        );
+        match role.as_str() {
+            "serve" => {
+                assert_eq!(args.workers, 0, "{name}: the API replicas run no jobs");
+                apis += 1;
+            }
+            "worker" => {
+                assert!(args.workers >= 1, "{name}");
+                workers += service["deploy"]["replicas"].as_u64().unwrap_or(1);
+            }
+            other => panic!("{name}: unknown role {other}"),
+        }
+    }
+    assert_eq!(
+        (apis, workers),
+        (2, 3),
+        "two API replicas and three workers"
+    );
+}
+
+#[test]
+fn kubernetes_manifests_use_real_commands_probes_and_secrets() {
+    let kustomization = &yaml_documents("deploy/kubernetes/kustomization.yaml")[0];
+    let docs: Vec<serde_yaml::Value> = kustomization["resources"]
+        .as_sequence()
+        .expect("resources")
+        .iter()
+        .flat_map(|r| yaml_documents(&format!("deploy/kubernetes/{}", text(r))))
+        .collect();
+    let of_kind = |kind: &str| -> Vec<&serde_yaml::Value> {
+        docs.iter()
+            .filter(|d| d["kind"].as_str() == Some(kind))
+            .collect()
+    };
+    let secrets = of_kind("Secret");
+    let config_maps = of_kind("ConfigMap");
+    let healthz = phygap_api::routes::route_table(1)
+        .into_iter()
+        .find(|r| r.path == "/healthz")
+        .expect("a /healthz route");
+    assert!(!healthz.protected);
+    let mut roles = std::collections::BTreeMap::new();
+    for deployment in of_kind("Deployment") {
+        let name = text(&deployment["metadata"]["name"]);
+        let template = &deployment["spec"]["template"];
+        let labels = template["metadata"]["labels"].as_mapping().unwrap();
+        for (key, value) in deployment["spec"]["selector"]["matchLabels"]
+            .as_mapping()
+            .unwrap()
+        {
+            assert_eq!(
+                labels.get(key),
+                Some(value),
+                "{name}: selector matches the pods"
+            );
+        }
+        let container = &template["spec"]["containers"][0];
+        let (role, args) = checked_command(&container["args"], name);
+        let port = &container["ports"][0];
+        assert_eq!(
+            port["containerPort"].as_u64(),
+            Some(u64::from(args.bind.port())),
+            "{name}"
+        );
+        for probe in ["readinessProbe", "livenessProbe"] {
+            let get = &container[probe]["httpGet"];
+            assert_eq!(get["path"].as_str(), Some(healthz.path), "{name} {probe}");
+            assert_eq!(get["port"], port["name"], "{name} {probe}");
+        }
+        let env = container["env"].as_sequence().unwrap();
+        assert_known_variables(env.iter().map(|e| text(&e["name"])), name);
+        for reference in env
+            .iter()
+            .filter_map(|e| e["valueFrom"]["secretKeyRef"].as_mapping())
+        {
+            let (secret, key) = (&reference["name"], &reference["key"]);
+            assert!(
+                secrets.iter().any(|s| s["metadata"]["name"] == *secret && s["stringData"].get(key).is_some()),
+                "{name}: secret {secret:?} has no key {key:?}"
+            );
+        }
+        for source in container["envFrom"].as_sequence().unwrap() {
+            let map = &source["configMapRef"]["name"];
+            let config = config_maps
+                .iter()
+                .find(|c| c["metadata"]["name"] == *map)
+                .expect("config map");
+            let keys = config["data"].as_mapping().unwrap().keys();
+            assert_known_variables(keys.map(text), name);
+        }
+        roles.insert(role.clone(), (deployment, container, args));
+    }
+    let (api, _, api_args) = &roles["serve"];
+    assert_eq!(api_args.workers, 0, "the API replicas run no jobs");
+    assert!(api["spec"]["replicas"].as_u64().unwrap() >= 2);
+    let api_labels = &api["spec"]["template"]["metadata"]["labels"];
+    let services = of_kind("Service");
+    assert!(services.iter().any(|s| s["spec"]["selector"]
+        .as_mapping()
+        .unwrap()
+        .iter()
+        .all(|(k, v)| api_labels.get(k) == Some(v))));
+    let (worker, worker_container, _) = &roles["worker"];
+    assert!(worker_container["resources"]["limits"]["nvidia.com/gpu"].as_u64() >= Some(1));
+    assert!(
+        worker["spec"]["template"]["spec"]["terminationGracePeriodSeconds"].as_u64() >= Some(60),
+        "time to checkpoint on stop"
+    );
 }

@@ -161,8 +161,11 @@ impl PostgresStore {
         params: &[&(dyn ToSql + Sync)],
     ) -> Result<Option<JobRecord>, StoreError> {
         let client = self.pool.get().await?;
+        // Job reads are the polling hot path: a statement prepared once per connection saves
+        // a round trip per read.
+        let statement = client.prepare_cached(sql).await?;
         client
-            .query_opt(sql, params)
+            .query_opt(&statement, params)
             .await?
             .as_ref()
             .map(job_of)

@@ -1,5 +1,9 @@
-//! Optional bearer-token authentication of the `/v1` routes. The comparison runs in time
-//! independent of where the tokens differ.
+//! Optional bearer-token authentication of the `/v1` routes and `/metrics`, and who a token
+//! belongs to. The admin token (`--token`) sees everything; account tokens (`--tokens-file`) see
+//! only their own account's captures and jobs. Comparisons run in time independent of where the
+//! tokens differ.
+
+use std::path::Path;
 
 use axum::extract::{Request, State};
 use axum::http::{header, StatusCode};
@@ -19,25 +23,140 @@ fn same_token(given: &[u8], expected: &[u8]) -> bool {
             == 0
 }
 
-/// Rejects the request with 401 unless it carries `Authorization: Bearer <token>` (when a token
-/// is configured).
+/// Who sent a request, from its bearer token (a request extension of every guarded route).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Caller {
+    /// The admin token, or anyone when the service has no tokens: sees every record.
+    Admin,
+    /// An account's token: sees only that account's captures and jobs.
+    Account(String),
+}
+
+impl Caller {
+    /// The account new records belong to (`None` for the admin).
+    pub fn account(&self) -> Option<&str> {
+        match self {
+            Caller::Admin => None,
+            Caller::Account(name) => Some(name),
+        }
+    }
+
+    /// Whether a record of `owner` is visible to this caller.
+    pub fn may_see(&self, owner: Option<&str>) -> bool {
+        match self {
+            Caller::Admin => true,
+            Caller::Account(name) => owner == Some(name.as_str()),
+        }
+    }
+}
+
+/// One account's token.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct AccountToken {
+    pub account: String,
+    pub token: String,
+}
+
+/// A tokens file that cannot be used.
+#[derive(Debug, thiserror::Error)]
+pub enum TokensFileError {
+    #[error("cannot read the tokens file `{path}`: {source}")]
+    Io {
+        path: std::path::PathBuf,
+        source: std::io::Error,
+    },
+    #[error("tokens file line {line}: {problem}")]
+    Line { line: usize, problem: String },
+}
+
+/// Reads a tokens file: one `ACCOUNT TOKEN` pair a line (account names of `[A-Za-z0-9._-]`,
+/// tokens of at least 16 characters, each once); blank lines and `#` comments are skipped.
+pub fn read_tokens_file(path: &Path) -> Result<Vec<AccountToken>, TokensFileError> {
+    let text = std::fs::read_to_string(path).map_err(|source| TokensFileError::Io {
+        path: path.to_owned(),
+        source,
+    })?;
+    parse_tokens(&text)
+}
+
+fn parse_tokens(text: &str) -> Result<Vec<AccountToken>, TokensFileError> {
+    let mut tokens: Vec<AccountToken> = Vec::new();
+    for (index, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let bad = |problem: &str| TokensFileError::Line {
+            line: index + 1,
+            problem: problem.to_owned(),
+        };
+        let mut words = line.split_whitespace();
+        let (Some(account), Some(token), None) = (words.next(), words.next(), words.next()) else {
+            return Err(bad("expected `ACCOUNT TOKEN`"));
+        };
+        let valid_name = |c: char| c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-');
+        if account.len() > 64 || !account.chars().all(valid_name) {
+            return Err(bad("account names are 1 to 64 of A-Z a-z 0-9 . _ -"));
+        }
+        if token.len() < 16 {
+            return Err(bad("tokens need at least 16 characters"));
+        }
+        if tokens
+            .iter()
+            .any(|t| t.token == token || t.account == account)
+        {
+            return Err(bad("each account and each token may appear once"));
+        }
+        tokens.push(AccountToken {
+            account: account.to_owned(),
+            token: token.to_owned(),
+        });
+    }
+    Ok(tokens)
+}
+
+/// The caller a bearer token names: the admin, an account, or `None` (unknown token).
+fn caller_of(token: &str, admin: Option<&str>, accounts: &[AccountToken]) -> Option<Caller> {
+    let admin_matches = admin.is_some_and(|a| same_token(token.as_bytes(), a.as_bytes()));
+    // Every account token is compared, so the time does not tell which one matched.
+    let account = accounts.iter().fold(None, |found, a| {
+        if same_token(token.as_bytes(), a.token.as_bytes()) {
+            Some(a.account.clone())
+        } else {
+            found
+        }
+    });
+    match (admin_matches, account) {
+        (true, _) => Some(Caller::Admin),
+        (false, Some(name)) => Some(Caller::Account(name)),
+        (false, None) => None,
+    }
+}
+
+/// Resolves the request's bearer token to a [`Caller`] (stored as a request extension); 401 when
+/// the service has tokens and the request carries none of them.
 pub async fn require_token(
     State(state): State<AppState>,
-    request: Request,
+    mut request: Request,
     next: Next,
 ) -> Response {
-    let Some(expected) = state.config.token.as_deref() else {
+    let (admin, accounts) = (state.config.token.as_deref(), &state.config.account_tokens);
+    if admin.is_none() && accounts.is_empty() {
+        request.extensions_mut().insert(Caller::Admin);
         return next.run(request).await;
-    };
+    }
     let given = request
         .headers()
         .get(header::AUTHORIZATION)
         .and_then(|v| v.to_str().ok())
         .and_then(|v| v.strip_prefix("Bearer "))
         .map(str::trim);
-    match given {
-        Some(token) if same_token(token.as_bytes(), expected.as_bytes()) => next.run(request).await,
-        Some(_) => ApiError::new(
+    match given.map(|token| caller_of(token, admin, accounts)) {
+        Some(Some(caller)) => {
+            request.extensions_mut().insert(caller);
+            next.run(request).await
+        }
+        Some(None) => ApiError::new(
             StatusCode::UNAUTHORIZED,
             "unauthorized",
             "invalid bearer token",
@@ -54,7 +173,46 @@ pub async fn require_token(
 
 #[cfg(test)]
 mod tests {
-    use super::same_token;
+    use super::*;
+
+    #[test]
+    fn tokens_name_their_callers() {
+        let accounts = parse_tokens(
+            "# studio accounts\nalice  aaaaaaaaaaaaaaaa-1\n\nbob bbbbbbbbbbbbbbbb-2\n",
+        )
+        .unwrap();
+        assert_eq!(accounts.len(), 2);
+        let admin = Some("admin-token-xxxxxxxx");
+        assert_eq!(
+            caller_of("admin-token-xxxxxxxx", admin, &accounts),
+            Some(Caller::Admin)
+        );
+        assert_eq!(
+            caller_of("bbbbbbbbbbbbbbbb-2", admin, &accounts),
+            Some(Caller::Account("bob".into()))
+        );
+        assert_eq!(caller_of("bbbbbbbbbbbbbbbb-3", admin, &accounts), None);
+        assert_eq!(caller_of("x", None, &[]), None);
+        let bob = Caller::Account("bob".into());
+        assert!(bob.may_see(Some("bob")) && !bob.may_see(Some("alice")) && !bob.may_see(None));
+        assert!(Caller::Admin.may_see(Some("alice")) && Caller::Admin.may_see(None));
+    }
+
+    #[test]
+    fn bad_tokens_files_name_the_line() {
+        for (text, line) in [
+            ("alice short", 1),
+            ("# c\nalice aaaaaaaaaaaaaaaa extra", 2),
+            ("alice aaaaaaaaaaaaaaaa\nalice bbbbbbbbbbbbbbbb", 2),
+            ("alice aaaaaaaaaaaaaaaa\nbob aaaaaaaaaaaaaaaa", 2),
+            ("al/ice aaaaaaaaaaaaaaaa", 1),
+        ] {
+            match parse_tokens(text) {
+                Err(TokensFileError::Line { line: got, .. }) => assert_eq!(got, line, "{text}"),
+                other => panic!("{text}: {other:?}"),
+            }
+        }
+    }
 
     #[test]
     fn token_comparison() {

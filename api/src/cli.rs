@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::auth::{read_tokens_file, TokensFileError};
 use crate::ServiceConfig;
 
 #[derive(Debug, Parser)]
@@ -43,6 +44,15 @@ pub struct ServeArgs {
     /// Require `Authorization: Bearer TOKEN` on every /v1 route.
     #[arg(long, env = "PHYGAP_TOKEN", hide_env_values = true)]
     pub token: Option<String>,
+    /// Account tokens, one `ACCOUNT TOKEN` pair a line: each token sees only its account's
+    /// captures and jobs (the --token one sees all).
+    #[arg(long, env = "PHYGAP_TOKENS_FILE")]
+    pub tokens_file: Option<PathBuf>,
+    /// Remove jobs that ended, and unused captures uploaded, more than this many days ago
+    /// (with their artifacts and checkpoints); default: keep everything.
+    #[arg(long, env = "PHYGAP_RETENTION_DAYS",
+          value_parser = clap::value_parser!(u32).range(1..=36_500))]
+    pub retention_days: Option<u32>,
     /// Largest upload (capture archive, environment map) in MiB; larger ones get 413.
     #[arg(long, default_value_t = 1024, env = "PHYGAP_MAX_UPLOAD_MB",
           value_parser = clap::value_parser!(u64).range(1..=1_048_576))]
@@ -66,8 +76,15 @@ pub struct ServeArgs {
 }
 
 impl ServeArgs {
-    pub fn to_config(&self) -> ServiceConfig {
+    /// The service configuration these flags describe (reads the tokens file).
+    pub fn to_config(&self) -> Result<ServiceConfig, TokensFileError> {
         let mut config = ServiceConfig::new(self.data_dir.clone());
+        if let Some(path) = &self.tokens_file {
+            config.account_tokens = read_tokens_file(path)?;
+        }
+        config.retention = self
+            .retention_days
+            .map(|days| std::time::Duration::from_secs(u64::from(days) * 86_400));
         config.bind = self.bind;
         config.workers = self.workers;
         config.token = self.token.clone().filter(|t| !t.is_empty());
@@ -75,14 +92,14 @@ impl ServeArgs {
         config.database_url = self.database_url.clone().filter(|url| !url.is_empty());
         config.artifact_url = self.artifact_url.clone().filter(|url| !url.is_empty());
         config.lease = std::time::Duration::from_secs(self.lease_seconds);
-        config
+        Ok(config)
     }
 
     /// The configuration of a worker process: jobs only, no `/v1` API.
-    pub fn to_worker_config(&self) -> ServiceConfig {
-        ServiceConfig {
+    pub fn to_worker_config(&self) -> Result<ServiceConfig, TokensFileError> {
+        Ok(ServiceConfig {
             api: false,
-            ..self.to_config()
-        }
+            ..self.to_config()?
+        })
     }
 }

@@ -138,6 +138,17 @@ impl From<crate::store::StoreError> for ApiError {
     }
 }
 
+impl From<crate::purge::PurgeError> for ApiError {
+    fn from(e: crate::purge::PurgeError) -> Self {
+        match e {
+            crate::purge::PurgeError::Store(e) => e.into(),
+            crate::purge::PurgeError::Artifacts(e) => e.into(),
+            crate::purge::PurgeError::Bucket(e) => e.into(),
+            other => ApiError::internal("deleting", other),
+        }
+    }
+}
+
 impl From<crate::artifacts::ArtifactError> for ApiError {
     fn from(e: crate::artifacts::ArtifactError) -> Self {
         match e {

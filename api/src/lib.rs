@@ -22,6 +22,7 @@ pub mod error;
 pub mod metrics;
 pub mod openapi;
 pub mod pipeline;
+pub mod purge;
 pub mod queue;
 pub mod routes;
 pub mod store;
@@ -50,8 +51,15 @@ pub struct ServiceConfig {
     pub data_dir: PathBuf,
     /// Worker tasks running jobs (0: accept and queue jobs but run none).
     pub workers: usize,
-    /// When set, every `/v1` route requires `Authorization: Bearer <token>`.
+    /// The admin token: when set (or with account tokens), every `/v1` route and `/metrics`
+    /// require `Authorization: Bearer <token>`; this one sees every record.
     pub token: Option<String>,
+    /// Account tokens: each sees only its own account's captures and jobs ([`auth`]).
+    pub account_tokens: Vec<auth::AccountToken>,
+    /// Jobs that ended, and unused captures uploaded, longer ago than this are removed.
+    pub retention: Option<Duration>,
+    /// How often the retention sweeper runs.
+    pub retention_sweep: Duration,
     /// Largest accepted request body (capture archive, environment map), bytes.
     pub max_upload_bytes: u64,
     pub extract_limits: ExtractLimits,
@@ -82,6 +90,9 @@ impl ServiceConfig {
             data_dir: data_dir.into(),
             workers: 1,
             token: None,
+            account_tokens: Vec::new(),
+            retention: None,
+            retention_sweep: Duration::from_secs(3600),
             max_upload_bytes: 1024 << 20,
             extract_limits: ExtractLimits::default(),
             lease: Duration::from_secs(30),
@@ -290,7 +301,8 @@ impl Server {
                 .with_graceful_shutdown(stop.cancelled_owned())
                 .await
         });
-        let tasks = queue::worker::spawn(&state);
+        let mut tasks = queue::worker::spawn(&state);
+        tasks.extend(purge::spawn_sweeper(&state));
         tracing::info!(%addr, owner = state.runtime.owner(), "phygap-api listening");
         Ok(Server {
             addr,

@@ -24,7 +24,8 @@ async fn serve() -> anyhow::Result<()> {
     let config = match Cli::parse().command {
         Command::Serve(args) => args.to_config(),
         Command::Worker(args) => args.to_worker_config(),
-    };
+    }
+    .context("reading the configuration")?;
     let pipeline = phygap_api::pipeline::production_pipeline();
     let server = phygap_api::Server::start(config, pipeline)
         .await

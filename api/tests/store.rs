@@ -23,6 +23,19 @@ fn new_job(id: &str, created_at: i64) -> NewJob {
         },
         iterations: 100,
         created_at,
+        account: None,
+    }
+}
+
+fn relight_of(id: &str, parent: &str, created_at: i64) -> NewJob {
+    NewJob {
+        spec: JobSpec::Relight {
+            parent_job_id: parent.into(),
+            envmap_file: "envmap.exr".into(),
+            cameras_file: None,
+            rotate_deg: 0.0,
+        },
+        ..new_job(id, created_at)
     }
 }
 
@@ -47,7 +60,7 @@ async fn claim_is_exclusive_and_fifo(s: &dyn Store) {
         }
     );
     let listed: Vec<String> = s
-        .list_jobs(3)
+        .list_jobs(3, None)
         .await
         .unwrap()
         .into_iter()
@@ -196,7 +209,7 @@ async fn idempotency_key_returns_the_same_job_or_conflicts(s: &dyn Store) {
         .unwrap();
     assert!(new_d);
     assert_eq!(d.id, "job_d");
-    assert_eq!(s.list_jobs(10).await.unwrap().len(), 2);
+    assert_eq!(s.list_jobs(10, None).await.unwrap().len(), 2);
 }
 
 async fn concurrent_submits_with_one_key_create_one_job(s: Arc<dyn Store>) {
@@ -226,6 +239,7 @@ async fn cancel_and_capture_deletion_respect_job_states(s: &dyn Store) {
         warnings: vec!["a warning".into()],
         size_bytes: 10,
         created_at: 7,
+        account: Some("studio".into()),
     };
     s.insert_capture(&capture).await.unwrap();
     assert!(s.insert_capture(&capture).await.is_err(), "ids are unique");
@@ -259,6 +273,67 @@ async fn cancel_and_capture_deletion_respect_job_states(s: &dyn Store) {
     s.ping().await.unwrap();
 }
 
+async fn accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use(s: &dyn Store) {
+    let mine = |id: &str, at: i64| NewJob {
+        account: Some("alice".into()),
+        ..new_job(id, at)
+    };
+    s.submit(&mine("job_a", 1), None).await.unwrap();
+    s.submit(&new_job("job_b", 2), None).await.unwrap();
+    let alices: Vec<_> = s.list_jobs(10, Some("alice")).await.unwrap();
+    assert_eq!(alices.len(), 1);
+    assert_eq!(alices[0].account.as_deref(), Some("alice"));
+    assert!(s.list_jobs(10, Some("bob")).await.unwrap().is_empty());
+    assert_eq!(s.list_jobs(10, None).await.unwrap().len(), 2);
+    // Queued or running jobs are not deleted.
+    assert_eq!(s.delete_job("job_a").await.unwrap(), DeleteOutcome::InUse);
+    let running = s.claim("w", 3, 100).await.unwrap().unwrap();
+    assert_eq!(running.id, "job_a");
+    s.finish("job_a", "w", &Finish::Succeeded, 10)
+        .await
+        .unwrap();
+    // A relight of job_a that is still queued keeps job_a.
+    s.submit(&relight_of("job_r", "job_a", 11), None)
+        .await
+        .unwrap();
+    assert_eq!(s.delete_job("job_a").await.unwrap(), DeleteOutcome::InUse);
+    assert!(s.jobs_ended_before(100).await.unwrap().is_empty());
+    s.request_cancel("job_r", 12).await.unwrap();
+    s.request_cancel("job_b", 13).await.unwrap();
+    assert_eq!(s.jobs_ended_before(12).await.unwrap(), ["job_a"]);
+    assert_eq!(
+        s.jobs_ended_before(100).await.unwrap(),
+        ["job_a", "job_r", "job_b"],
+        "oldest end first"
+    );
+    assert_eq!(s.delete_job("job_a").await.unwrap(), DeleteOutcome::Deleted);
+    assert_eq!(
+        s.delete_job("job_a").await.unwrap(),
+        DeleteOutcome::NotFound
+    );
+    assert!(s.job("job_a").await.unwrap().is_none());
+    // Captures: only old ones that no job uses.
+    for (id, at) in [("cap_1", 5), ("cap_old", 5), ("cap_new", 50)] {
+        let capture = CaptureRecord {
+            id: id.into(),
+            views: 1,
+            kinds: vec![],
+            warnings: vec![],
+            size_bytes: 1,
+            created_at: at,
+            account: None,
+        };
+        s.insert_capture(&capture).await.unwrap();
+    }
+    assert_eq!(s.unused_captures_before(20).await.unwrap(), ["cap_old"]);
+    for id in ["job_r", "job_b"] {
+        assert_eq!(s.delete_job(id).await.unwrap(), DeleteOutcome::Deleted);
+    }
+    let mut unused = s.unused_captures_before(20).await.unwrap();
+    unused.sort();
+    assert_eq!(unused, ["cap_1", "cap_old"]);
+}
+
 /// Runs every check, each on a fresh store from `fresh`.
 async fn the_suite<F, Fut>(fresh: F)
 where
@@ -274,6 +349,31 @@ where
     idempotency_key_returns_the_same_job_or_conflicts(fresh().await.as_ref()).await;
     concurrent_submits_with_one_key_create_one_job(fresh().await).await;
     cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;
+    accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use(fresh().await.as_ref())
+        .await;
+}
+
+/// A database file written before records had accounts opens, keeps its rows, and gains the
+/// column.
+#[tokio::test]
+async fn an_older_sqlite_file_is_upgraded_in_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("old.sqlite3");
+    {
+        let conn = rusqlite::Connection::open(&path).unwrap();
+        conn.execute_batch(
+            "CREATE TABLE captures (id TEXT PRIMARY KEY, views INTEGER NOT NULL,
+                kinds TEXT NOT NULL, warnings TEXT NOT NULL, size_bytes INTEGER NOT NULL,
+                created_at INTEGER NOT NULL);
+             INSERT INTO captures VALUES ('cap_old', 2, '[]', '[]', 5, 1);",
+        )
+        .unwrap();
+    }
+    let store = SqliteStore::open(&path).unwrap();
+    let old = store.capture("cap_old").await.unwrap().unwrap();
+    assert_eq!((old.views, old.account), (2, None));
+    drop(store);
+    SqliteStore::open(&path).unwrap();
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
@@ -342,7 +442,7 @@ async fn replicas_starting_together_migrate_the_schema_once() {
         start.await.unwrap().unwrap();
     }
     let versions = admin_query(&url, "SELECT count(*) FROM schema_migrations").await;
-    assert_eq!(versions, [1]);
+    assert_eq!(versions, [2]);
     // A database from a newer build is refused, not silently used.
     admin_query(
         &url,

@@ -4,12 +4,14 @@ use axum::body::Body;
 use axum::extract::{Path, State};
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use axum::Json;
+use axum::{Extension, Json};
 use serde::Serialize;
 use tokio_util::io::ReaderStream;
 
 use crate::artifacts::ArtifactInfo;
+use crate::auth::Caller;
 use crate::error::ApiError;
+use crate::routes::jobs::load_job;
 use crate::AppState;
 
 #[derive(Serialize)]
@@ -18,19 +20,13 @@ pub struct ArtifactList {
     artifacts: Vec<ArtifactInfo>,
 }
 
-async fn require_job(state: &AppState, id: &str) -> Result<(), ApiError> {
-    match state.store.job(id).await? {
-        Some(_) => Ok(()),
-        None => Err(ApiError::not_found("job", id)),
-    }
-}
-
 /// `GET /v1/jobs/{id}/artifacts`.
 pub async fn list(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path(id): Path<String>,
 ) -> Result<Json<ArtifactList>, ApiError> {
-    require_job(&state, &id).await?;
+    load_job(&state, &caller, &id).await?;
     let artifacts = state.artifacts.list(&id).await?;
     Ok(Json(ArtifactList {
         job_id: id,
@@ -91,10 +87,11 @@ fn header_value(text: &str) -> Result<HeaderValue, ApiError> {
 /// `GET /v1/jobs/{id}/artifacts/{name}`.
 pub async fn download(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path((id, name)): Path<(String, String)>,
     headers: HeaderMap,
 ) -> Result<Response, ApiError> {
-    require_job(&state, &id).await?;
+    load_job(&state, &caller, &id).await?;
     let info = state
         .artifacts
         .stat(&id, &name)

@@ -7,12 +7,14 @@ use std::path::{Path as FsPath, PathBuf};
 use axum::body::Body;
 use axum::extract::{Path, State};
 use axum::http::{header, HeaderMap, StatusCode};
+use axum::Extension;
 use axum::Json;
 use futures_util::StreamExt;
 use serde::Serialize;
 use tokio::io::AsyncWriteExt;
 
 use crate::archive::ArchiveError;
+use crate::auth::Caller;
 use crate::error::ApiError;
 use crate::pipeline::PipelineError;
 use crate::queue::new_id;
@@ -158,6 +160,7 @@ fn extract_and_file(
     id: &str,
     archive: &FsPath,
     size_bytes: u64,
+    account: Option<String>,
 ) -> Result<Filed, ApiError> {
     let extracted = staging.path().join("capture");
     let root = crate::archive::extract(archive, &extracted, &state.config.extract_limits)
@@ -178,6 +181,7 @@ fn extract_and_file(
         warnings: info.warnings,
         size_bytes,
         created_at: now_ms(),
+        account,
     };
     Ok(Filed {
         record,
@@ -195,12 +199,13 @@ async fn ingest(
     id: String,
     archive: PathBuf,
     size_bytes: u64,
+    account: Option<String>,
 ) -> Result<CaptureRecord, ApiError> {
     let blocking_state = state.clone();
     let filed = tokio::task::spawn_blocking(move || {
         let span = tracing::info_span!("capture_upload", capture_id = %id);
         let _entered = span.enter();
-        extract_and_file(&blocking_state, staging, &id, &archive, size_bytes)
+        extract_and_file(&blocking_state, staging, &id, &archive, size_bytes, account)
     })
     .await
     .map_err(|e| ApiError::internal("processing the upload", e))??;
@@ -226,6 +231,7 @@ async fn ingest(
 /// `POST /v1/captures`: body is a `.zip` or `.tar` archive.
 pub async fn upload(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     headers: HeaderMap,
     body: Body,
 ) -> Result<(StatusCode, Json<CaptureView>), ApiError> {
@@ -248,50 +254,52 @@ pub async fn upload(
     }
     // The rest runs to completion in its own task even if the client disconnects, so the
     // capture is either recorded or removed, and the temporary folder always cleaned up.
-    let record = tokio::spawn(ingest(state.clone(), staging, id, archive, size))
+    let account = caller.account().map(str::to_owned);
+    let record = tokio::spawn(ingest(state.clone(), staging, id, archive, size, account))
         .await
         .map_err(|e| ApiError::internal("processing the upload", e))??;
     tracing::info!(capture_id = %record.id, views = record.views, "capture accepted");
     Ok((StatusCode::CREATED, Json(record.into())))
 }
 
+/// The capture `id` where `caller` may see it (404 otherwise: another account's records are
+/// not confirmed to exist).
+pub async fn visible_capture(
+    state: &AppState,
+    caller: &Caller,
+    id: &str,
+) -> Result<CaptureRecord, ApiError> {
+    state
+        .store
+        .capture(id)
+        .await?
+        .filter(|c| caller.may_see(c.account.as_deref()))
+        .ok_or_else(|| ApiError::not_found("capture", id))
+}
+
 /// `GET /v1/captures/{id}`.
 pub async fn show(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path(id): Path<String>,
 ) -> Result<Json<CaptureView>, ApiError> {
-    let record = state
-        .store
-        .capture(&id)
-        .await?
-        .ok_or_else(|| ApiError::not_found("capture", &id))?;
-    Ok(Json(record.into()))
+    Ok(Json(visible_capture(&state, &caller, &id).await?.into()))
 }
 
-/// `DELETE /v1/captures/{id}`: 204; 409 while a queued or running job uses it.
+/// `DELETE /v1/captures/{id}`: 204 once its record and files are gone; 409 while a queued or
+/// running job uses it.
 pub async fn remove(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path(id): Path<String>,
 ) -> Result<StatusCode, ApiError> {
-    match state.store.delete_capture(&id).await? {
+    visible_capture(&state, &caller, &id).await?;
+    match crate::purge::delete_capture(&state, &id).await? {
         DeleteOutcome::NotFound => Err(ApiError::not_found("capture", &id)),
         DeleteOutcome::InUse => Err(ApiError::conflict(
             "capture_in_use",
             format!("capture `{id}` is used by a queued or running job; cancel it first"),
         )),
-        DeleteOutcome::Deleted => {
-            if let Some(bucket) = &state.bucket {
-                bucket.delete_folder(&format!("captures/{id}")).await?;
-            }
-            let dir = state.paths.capture_dir(&id);
-            tokio::task::spawn_blocking(move || std::fs::remove_dir_all(dir))
-                .await
-                .map_err(|e| ApiError::internal("deleting the capture", e))?
-                .or_else(|e| match e.kind() {
-                    std::io::ErrorKind::NotFound => Ok(()),
-                    _ => Err(ApiError::internal("deleting the capture", e)),
-                })?;
-            Ok(StatusCode::NO_CONTENT)
-        }
+        DeleteOutcome::Deleted => Ok(StatusCode::NO_CONTENT),
     }
 }

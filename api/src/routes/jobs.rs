@@ -11,16 +11,19 @@ use axum::extract::rejection::BytesRejection;
 use axum::extract::{Multipart, Path, Query, State};
 use axum::http::{HeaderMap, StatusCode};
 use axum::response::sse::{Event, KeepAlive, Sse};
-use axum::Json;
+use axum::{Extension, Json};
 use futures_util::Stream;
 use phygap::config::TrainConfig;
 use serde::{Deserialize, Serialize};
 use tokio::io::AsyncWriteExt;
 
+use crate::auth::Caller;
 use crate::error::ApiError;
 use crate::queue::{new_id, CancelReason};
 use crate::routes::captures::TempDir;
-use crate::store::{now_ms, rfc3339, JobRecord, JobSpec, JobState, NewJob, StoreError};
+use crate::store::{
+    now_ms, rfc3339, DeleteOutcome, JobRecord, JobSpec, JobState, NewJob, StoreError,
+};
 use crate::AppState;
 
 /// A job as answered (and as sent on its event stream).
@@ -109,11 +112,14 @@ fn idempotency_key(headers: &HeaderMap) -> Result<Option<String>, ApiError> {
     Ok(Some(key.to_owned()))
 }
 
-async fn load_job(state: &AppState, id: &str) -> Result<JobRecord, ApiError> {
+/// The job `id` where `caller` may see it (404 otherwise: another account's records are not
+/// confirmed to exist).
+pub async fn load_job(state: &AppState, caller: &Caller, id: &str) -> Result<JobRecord, ApiError> {
     state
         .store
         .job(id)
         .await?
+        .filter(|job| caller.may_see(job.account.as_deref()))
         .ok_or_else(|| ApiError::not_found("job", id))
 }
 
@@ -121,6 +127,7 @@ async fn load_job(state: &AppState, id: &str) -> Result<JobRecord, ApiError> {
 /// earlier request with the same `Idempotency-Key` created.
 pub async fn submit(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     headers: HeaderMap,
     body: Result<Bytes, BytesRejection>,
 ) -> Result<(StatusCode, Json<JobView>), ApiError> {
@@ -133,13 +140,22 @@ pub async fn submit(
         .config
         .validate()
         .map_err(|e| ApiError::unprocessable("invalid_config", e.to_string()))?;
-    if state.store.capture(&request.capture_id).await?.is_none() {
+    let visible = state
+        .store
+        .capture(&request.capture_id)
+        .await?
+        .is_some_and(|c| caller.may_see(c.account.as_deref()));
+    if !visible {
         return Err(ApiError::unprocessable(
             "unknown_capture",
             format!("capture `{}` does not exist", request.capture_id),
         ));
     }
-    let key = idempotency_key(&headers)?;
+    // Keys are scoped to the account, so one account cannot reach another's jobs through them.
+    let key = idempotency_key(&headers)?.map(|key| match caller.account() {
+        Some(account) => format!("{account}/{key}"),
+        None => key,
+    });
     let hash = serde_json::to_string(&(&request.capture_id, &request.config))
         .map_err(|e| ApiError::internal("hashing the request", e))?;
     let job = NewJob {
@@ -150,6 +166,7 @@ pub async fn submit(
             config: request.config,
         },
         created_at: now_ms(),
+        account: caller.account().map(str::to_owned),
     };
     let (record, created) = state
         .store
@@ -186,11 +203,12 @@ pub struct JobList {
 /// `GET /v1/jobs?limit=N`: newest first (default 100, at most 1000).
 pub async fn list(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     query: Result<Query<ListQuery>, axum::extract::rejection::QueryRejection>,
 ) -> Result<Json<JobList>, ApiError> {
     let Query(query) = query.map_err(|e| ApiError::bad_request("invalid_query", e.body_text()))?;
     let limit = query.limit.unwrap_or(100).clamp(1, 1000);
-    let jobs = state.store.list_jobs(limit).await?;
+    let jobs = state.store.list_jobs(limit, caller.account()).await?;
     Ok(Json(JobList {
         jobs: jobs.into_iter().map(JobView::from).collect(),
     }))
@@ -199,9 +217,10 @@ pub async fn list(
 /// `GET /v1/jobs/{id}`.
 pub async fn show(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path(id): Path<String>,
 ) -> Result<Json<JobView>, ApiError> {
-    Ok(Json(load_job(&state, &id).await?.into()))
+    Ok(Json(load_job(&state, &caller, &id).await?.into()))
 }
 
 /// `POST /v1/jobs/{id}/cancel`: a queued job is cancelled at once; a running one checkpoints and
@@ -209,9 +228,10 @@ pub async fn show(
 /// left as they are (409).
 pub async fn cancel(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path(id): Path<String>,
 ) -> Result<Json<JobView>, ApiError> {
-    let before = load_job(&state, &id).await?;
+    let before = load_job(&state, &caller, &id).await?;
     if before.state.is_terminal() {
         return Err(ApiError::conflict(
             "job_finished",
@@ -294,9 +314,10 @@ async fn next_event(mut cursor: EventsCursor) -> Option<(Result<Event, Infallibl
 /// closes).
 pub async fn events(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path(id): Path<String>,
 ) -> Result<Sse<impl Stream<Item = Result<Event, Infallible>>>, ApiError> {
-    load_job(&state, &id).await?;
+    load_job(&state, &caller, &id).await?;
     let cursor = EventsCursor {
         changes: state.runtime.subscribe(),
         state,
@@ -353,12 +374,13 @@ fn envmap_extension(head: &[u8]) -> Option<&'static str> {
 /// job of its own (201).
 pub async fn relight(
     State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
     Path(parent_id): Path<String>,
     headers: HeaderMap,
     multipart: Result<Multipart, axum::extract::multipart::MultipartRejection>,
 ) -> Result<(StatusCode, Json<JobView>), ApiError> {
     crate::routes::captures::check_content_length(&headers, state.config.max_upload_bytes)?;
-    let parent = load_job(&state, &parent_id).await?;
+    let parent = load_job(&state, &caller, &parent_id).await?;
     if !matches!(parent.spec, JobSpec::Train { .. }) || parent.state != JobState::Succeeded {
         return Err(ApiError::conflict(
             "model_not_ready",
@@ -460,6 +482,7 @@ pub async fn relight(
         },
         iterations: 0,
         created_at: now_ms(),
+        account: caller.account().map(str::to_owned),
     };
     let record = match state.store.submit(&job, None).await {
         Ok((record, _)) => record,
@@ -474,4 +497,46 @@ pub async fn relight(
     tracing::info!(job_id = %id, parent = %record.capture_id, "relight job queued");
     state.runtime.wake_workers();
     Ok((StatusCode::CREATED, Json(record.into())))
+}
+
+/// How long `DELETE` of a running job waits for it to stop (it checkpoints first).
+const DELETE_WAIT: Duration = Duration::from_secs(60);
+
+/// `DELETE /v1/jobs/{id}`: 204 once the job and everything stored for it (checkpoints, inputs,
+/// artifacts) are gone. A queued job is cancelled first, a running one is cancelled and awaited
+/// (409 `job_stopping` if it has not stopped within a minute); 409 `job_in_use` while a queued or
+/// running relight job uses its model.
+pub async fn remove(
+    State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
+    Path(id): Path<String>,
+) -> Result<StatusCode, ApiError> {
+    let job = load_job(&state, &caller, &id).await?;
+    if !job.state.is_terminal() {
+        state.store.request_cancel(&id, now_ms()).await?;
+        state.runtime.cancel(&id, CancelReason::User);
+        state.runtime.changed(&id);
+        let deadline = tokio::time::Instant::now() + DELETE_WAIT;
+        loop {
+            match state.store.job(&id).await? {
+                None => return Ok(StatusCode::NO_CONTENT),
+                Some(job) if job.state.is_terminal() => break,
+                Some(_) if tokio::time::Instant::now() >= deadline => {
+                    return Err(ApiError::conflict(
+                        "job_stopping",
+                        format!("job `{id}` was cancelled but is still stopping; try again"),
+                    ))
+                }
+                Some(_) => tokio::time::sleep(Duration::from_millis(100)).await,
+            }
+        }
+    }
+    match crate::purge::delete_job(&state, &id).await? {
+        DeleteOutcome::Deleted => Ok(StatusCode::NO_CONTENT),
+        DeleteOutcome::NotFound => Err(ApiError::not_found("job", &id)),
+        DeleteOutcome::InUse => Err(ApiError::conflict(
+            "job_in_use",
+            format!("a queued or running relight job uses the model of job `{id}`"),
+        )),
+    }
 }

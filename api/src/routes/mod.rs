@@ -42,7 +42,7 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
     let upload_limit = usize::try_from(max_upload_bytes).unwrap_or(usize::MAX);
     vec![
         entry(Method::GET, "/healthz", false, get(health::healthz)),
-        entry(Method::GET, "/metrics", false, get(health::metrics)),
+        entry(Method::GET, "/metrics", true, get(health::metrics)),
         entry(Method::GET, "/v1/openapi.json", true, get(health::openapi)),
         entry(
             Method::POST,
@@ -60,6 +60,7 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
         entry(Method::POST, "/v1/jobs", true, post(jobs::submit)),
         entry(Method::GET, "/v1/jobs", true, get(jobs::list)),
         entry(Method::GET, "/v1/jobs/{id}", true, get(jobs::show)),
+        entry(Method::DELETE, "/v1/jobs/{id}", true, delete(jobs::remove)),
         entry(Method::GET, "/v1/jobs/{id}/events", true, get(jobs::events)),
         entry(
             Method::POST,
@@ -88,15 +89,16 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
     ]
 }
 
-/// The complete application: routes, auth on `/v1`, JSON fallbacks, HTTP metrics, panic guard.
-/// A worker process (`config.api` false) serves only the unprotected routes (health, metrics).
+/// The complete application: routes, auth on `/v1` and `/metrics`, JSON fallbacks, HTTP
+/// metrics, panic guard. A worker process (`config.api` false) serves only `/healthz` and
+/// `/metrics`.
 pub fn router(state: AppState) -> Router {
     let mut open = Router::new();
     let mut protected = Router::new();
     let routes = route_table(state.config.max_upload_bytes);
     for route in routes
         .into_iter()
-        .filter(|r| state.config.api || !r.protected)
+        .filter(|r| state.config.api || !r.path.starts_with("/v1/"))
     {
         if route.protected {
             protected = protected.route(route.path, route.handler);
@@ -104,18 +106,16 @@ pub fn router(state: AppState) -> Router {
             open = open.route(route.path, route.handler);
         }
     }
-    if state.config.api {
-        open = open.merge(protected.route_layer(axum::middleware::from_fn_with_state(
-            state.clone(),
-            crate::auth::require_token,
-        )));
-    }
-    open.fallback(not_found_fallback)
-        .method_not_allowed_fallback(method_not_allowed_fallback)
-        .layer(axum::middleware::from_fn_with_state(
-            state.clone(),
-            crate::metrics::track_http,
-        ))
-        .layer(CatchPanicLayer::custom(panic_response))
-        .with_state(state)
+    open.merge(protected.route_layer(axum::middleware::from_fn_with_state(
+        state.clone(),
+        crate::auth::require_token,
+    )))
+    .fallback(not_found_fallback)
+    .method_not_allowed_fallback(method_not_allowed_fallback)
+    .layer(axum::middleware::from_fn_with_state(
+        state.clone(),
+        crate::metrics::track_http,
+    ))
+    .layer(CatchPanicLayer::custom(panic_response))
+    .with_state(state)
 }

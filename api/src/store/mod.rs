@@ -128,6 +128,8 @@ pub struct CaptureRecord {
     pub size_bytes: u64,
     /// Unix milliseconds.
     pub created_at: i64,
+    /// The account whose token uploaded it (`None`: uploaded without an account token).
+    pub account: Option<String>,
 }
 
 /// Live progress of a running job, written by heartbeats.
@@ -167,6 +169,8 @@ pub struct JobRecord {
     /// How many times a worker claimed it (more than one: it was resumed).
     pub attempts: u32,
     pub cancel_requested: bool,
+    /// The account whose token submitted it (`None`: submitted without an account token).
+    pub account: Option<String>,
 }
 
 /// A job to enqueue.
@@ -177,6 +181,7 @@ pub struct NewJob {
     pub spec: JobSpec,
     pub iterations: u32,
     pub created_at: i64,
+    pub account: Option<String>,
 }
 
 /// How a worker's run of a job ended.
@@ -189,12 +194,12 @@ pub enum Finish {
     Requeue,
 }
 
-/// Result of deleting a capture.
+/// Result of deleting a capture or a job.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DeleteOutcome {
     Deleted,
     NotFound,
-    /// Jobs that are queued or running still need it.
+    /// Queued or running: the job itself, or jobs that need the capture or the job's model.
     InUse,
 }
 
@@ -223,8 +228,19 @@ pub trait Store: Send + Sync + 'static {
         idempotency: Option<(&str, &str)>,
     ) -> Result<(JobRecord, bool), StoreError>;
     async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError>;
-    /// Newest first.
-    async fn list_jobs(&self, limit: usize) -> Result<Vec<JobRecord>, StoreError>;
+    /// Newest first; only `account`'s jobs when one is given.
+    async fn list_jobs(
+        &self,
+        limit: usize,
+        account: Option<&str>,
+    ) -> Result<Vec<JobRecord>, StoreError>;
+    /// Deletes a job's record unless it is queued or running, or a queued or running relight
+    /// job uses its model (checked atomically).
+    async fn delete_job(&self, id: &str) -> Result<DeleteOutcome, StoreError>;
+    /// Jobs that ended before `before` (unix ms) and that no queued or running job needs.
+    async fn jobs_ended_before(&self, before: i64) -> Result<Vec<String>, StoreError>;
+    /// Captures uploaded before `before` (unix ms) that no job uses.
+    async fn unused_captures_before(&self, before: i64) -> Result<Vec<String>, StoreError>;
     /// Atomically takes the oldest queued job for `owner` until `lease_until` (unix ms).
     async fn claim(
         &self,
@@ -278,6 +294,7 @@ pub(crate) struct RawJob {
     pub finished_at: Option<i64>,
     pub attempts: u32,
     pub cancel_requested: bool,
+    pub account: Option<String>,
 }
 
 impl RawJob {
@@ -299,6 +316,7 @@ impl RawJob {
             finished_at: self.finished_at,
             attempts: self.attempts,
             cancel_requested: self.cancel_requested,
+            account: self.account,
         })
     }
 }
@@ -316,6 +334,7 @@ pub(crate) struct RawCapture {
     pub warnings: String,
     pub size_bytes: i64,
     pub created_at: i64,
+    pub account: Option<String>,
 }
 
 impl RawCapture {
@@ -328,6 +347,7 @@ impl RawCapture {
             views: self.views.max(0) as usize,
             size_bytes: self.size_bytes.max(0) as u64,
             created_at: self.created_at,
+            account: self.account,
             id,
         })
     }

@@ -18,10 +18,16 @@ use super::{
 };
 
 /// The schema's versions, oldest first; each runs once, in a transaction.
-const MIGRATIONS: &[(i32, &str)] = &[(
-    1,
-    include_str!("../../migrations/postgres/0001_captures_and_jobs.sql"),
-)];
+const MIGRATIONS: &[(i32, &str)] = &[
+    (
+        1,
+        include_str!("../../migrations/postgres/0001_captures_and_jobs.sql"),
+    ),
+    (
+        2,
+        include_str!("../../migrations/postgres/0002_accounts.sql"),
+    ),
+];
 
 /// Key of the advisory lock that serializes migrations ("phygap" in ASCII).
 const MIGRATION_LOCK: i64 = 0x7068_7967_6170;
@@ -32,7 +38,7 @@ const POOL_SIZE: usize = 16;
 const POOL_TIMEOUT: Duration = Duration::from_secs(5);
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
-                           finished_at, attempts, cancel_requested";
+                           finished_at, attempts, cancel_requested, account";
 
 /// The PostgreSQL store.
 pub struct PostgresStore {
@@ -76,6 +82,7 @@ fn raw_job(row: &Row) -> Result<RawJob, StoreError> {
         finished_at: row.try_get(8)?,
         attempts: row.try_get::<_, i32>(9)?.max(0) as u32,
         cancel_requested: row.try_get(10)?,
+        account: row.try_get(11)?,
     })
 }
 
@@ -185,8 +192,8 @@ impl Store for PostgresStore {
         let client = self.pool.get().await?;
         client
             .execute(
-                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at)
-                 VALUES ($1, $2, $3, $4, $5, $6)",
+                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at, account)
+                 VALUES ($1, $2, $3, $4, $5, $6, $7)",
                 &[
                     &capture.id,
                     &(capture.views as i64),
@@ -194,6 +201,7 @@ impl Store for PostgresStore {
                     &to_json(&capture.warnings),
                     &(capture.size_bytes as i64),
                     &capture.created_at,
+                    &capture.account,
                 ],
             )
             .await?;
@@ -204,7 +212,7 @@ impl Store for PostgresStore {
         let client = self.pool.get().await?;
         let Some(row) = client
             .query_opt(
-                "SELECT id, views, kinds, warnings, size_bytes, created_at
+                "SELECT id, views, kinds, warnings, size_bytes, created_at, account
                  FROM captures WHERE id = $1",
                 &[&id],
             )
@@ -219,6 +227,7 @@ impl Store for PostgresStore {
             warnings: row.try_get(3)?,
             size_bytes: row.try_get(4)?,
             created_at: row.try_get(5)?,
+            account: row.try_get(6)?,
         }
         .parse()
         .map(Some)
@@ -279,8 +288,8 @@ impl Store for PostgresStore {
             .query_opt(
                 &format!(
                     "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                       idempotency_key, request_hash)
-                     VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7)
+                                       idempotency_key, request_hash, account)
+                     VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7, $8)
                      ON CONFLICT (idempotency_key) DO NOTHING
                      RETURNING {JOB_COLUMNS}"
                 ),
@@ -292,6 +301,7 @@ impl Store for PostgresStore {
                     &job.created_at,
                     &key,
                     &hash,
+                    &job.account,
                 ],
             )
             .await?;
@@ -311,7 +321,7 @@ impl Store for PostgresStore {
                 &[&key],
             )
             .await?;
-        let stored_hash: Option<String> = row.try_get(11)?;
+        let stored_hash: Option<String> = row.try_get(12)?;
         if stored_hash.as_deref() != Some(hash) {
             return Err(StoreError::IdempotencyConflict(key.to_owned()));
         }
@@ -326,17 +336,83 @@ impl Store for PostgresStore {
         .await
     }
 
-    async fn list_jobs(&self, limit: usize) -> Result<Vec<JobRecord>, StoreError> {
+    async fn list_jobs(
+        &self,
+        limit: usize,
+        account: Option<&str>,
+    ) -> Result<Vec<JobRecord>, StoreError> {
         let client = self.pool.get().await?;
         let rows = client
             .query(
                 &format!(
-                    "SELECT {JOB_COLUMNS} FROM jobs ORDER BY created_at DESC, seq DESC LIMIT $1"
+                    "SELECT {JOB_COLUMNS} FROM jobs WHERE $2::TEXT IS NULL OR account = $2
+                     ORDER BY created_at DESC, seq DESC LIMIT $1"
                 ),
-                &[&(limit.min(i64::MAX as usize) as i64)],
+                &[&(limit.min(i64::MAX as usize) as i64), &account],
             )
             .await?;
         rows.iter().map(job_of).collect()
+    }
+
+    async fn delete_job(&self, id: &str) -> Result<DeleteOutcome, StoreError> {
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        // Locking the row orders this against a concurrent claim, cancel or delete of the job.
+        let Some(row) = tx
+            .query_opt("SELECT state FROM jobs WHERE id = $1 FOR UPDATE", &[&id])
+            .await?
+        else {
+            return Ok(DeleteOutcome::NotFound);
+        };
+        let state: String = row.try_get(0)?;
+        let needed: i64 = tx
+            .query_one(
+                "SELECT count(*) FROM jobs WHERE state IN ('queued', 'running')
+                 AND spec::jsonb ->> 'parent_job_id' = $1",
+                &[&id],
+            )
+            .await?
+            .try_get(0)?;
+        if matches!(state.as_str(), "queued" | "running") || needed > 0 {
+            return Ok(DeleteOutcome::InUse);
+        }
+        tx.execute("DELETE FROM jobs WHERE id = $1", &[&id]).await?;
+        tx.commit().await?;
+        Ok(DeleteOutcome::Deleted)
+    }
+
+    async fn jobs_ended_before(&self, before: i64) -> Result<Vec<String>, StoreError> {
+        let client = self.pool.get().await?;
+        let rows = client
+            .query(
+                "SELECT id FROM jobs AS ended
+                 WHERE state IN ('succeeded', 'failed', 'cancelled') AND finished_at < $1
+                 AND NOT EXISTS (SELECT 1 FROM jobs WHERE state IN ('queued', 'running')
+                                 AND spec::jsonb ->> 'parent_job_id' = ended.id)
+                 ORDER BY finished_at",
+                &[&before],
+            )
+            .await?;
+        Ok(rows
+            .iter()
+            .map(|r| r.try_get(0))
+            .collect::<Result<_, _>>()?)
+    }
+
+    async fn unused_captures_before(&self, before: i64) -> Result<Vec<String>, StoreError> {
+        let client = self.pool.get().await?;
+        let rows = client
+            .query(
+                "SELECT id FROM captures WHERE created_at < $1
+                 AND NOT EXISTS (SELECT 1 FROM jobs WHERE jobs.capture_id = captures.id)
+                 ORDER BY created_at",
+                &[&before],
+            )
+            .await?;
+        Ok(rows
+            .iter()
+            .map(|r| r.try_get(0))
+            .collect::<Result<_, _>>()?)
     }
 
     async fn claim(

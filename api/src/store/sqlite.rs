@@ -23,7 +23,8 @@ CREATE TABLE IF NOT EXISTS captures (
     kinds TEXT NOT NULL,
     warnings TEXT NOT NULL,
     size_bytes INTEGER NOT NULL,
-    created_at INTEGER NOT NULL
+    created_at INTEGER NOT NULL,
+    account TEXT
 );
 CREATE TABLE IF NOT EXISTS jobs (
     id TEXT PRIMARY KEY,
@@ -40,14 +41,18 @@ CREATE TABLE IF NOT EXISTS jobs (
     owner TEXT,
     lease_until INTEGER,
     idempotency_key TEXT UNIQUE,
-    request_hash TEXT
+    request_hash TEXT,
+    account TEXT
 );
 CREATE INDEX IF NOT EXISTS jobs_by_state ON jobs(state, created_at);
 CREATE INDEX IF NOT EXISTS jobs_by_capture ON jobs(capture_id, state);
 ";
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
-                           finished_at, attempts, cancel_requested";
+                           finished_at, attempts, cancel_requested, account";
+
+/// Columns added after the first release, added to older files when they are opened.
+const ADDED_COLUMNS: &[(&str, &str)] = &[("captures", "account TEXT"), ("jobs", "account TEXT")];
 
 fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
     Ok(RawJob {
@@ -62,6 +67,7 @@ fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
         finished_at: row.get(8)?,
         attempts: row.get(9)?,
         cancel_requested: row.get(10)?,
+        account: row.get(11)?,
     })
 }
 
@@ -73,6 +79,17 @@ impl SqliteStore {
         conn.pragma_update(None, "journal_mode", "WAL")?;
         conn.pragma_update(None, "synchronous", "NORMAL")?;
         conn.execute_batch(SCHEMA)?;
+        for (table, column) in ADDED_COLUMNS {
+            let name = column.split_whitespace().next().unwrap_or(column);
+            let present: bool = conn.query_row(
+                &format!("SELECT count(*) > 0 FROM pragma_table_info('{table}') WHERE name = ?1"),
+                params![name],
+                |r| r.get(0),
+            )?;
+            if !present {
+                conn.execute_batch(&format!("ALTER TABLE {table} ADD COLUMN {column}"))?;
+            }
+        }
         Ok(SqliteStore {
             conn: Mutex::new(conn),
         })
@@ -103,6 +120,7 @@ fn capture_row(row: &Row<'_>) -> rusqlite::Result<RawCapture> {
         warnings: row.get(3)?,
         size_bytes: row.get(4)?,
         created_at: row.get(5)?,
+        account: row.get(6)?,
     })
 }
 
@@ -118,15 +136,16 @@ impl Store for SqliteStore {
     async fn insert_capture(&self, capture: &CaptureRecord) -> Result<(), StoreError> {
         self.with(|c| {
             c.execute(
-                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at)
-                 VALUES (?1, ?2, ?3, ?4, ?5, ?6)",
+                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at, account)
+                 VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)",
                 params![
                     capture.id,
                     capture.views as i64,
                     to_json(&capture.kinds),
                     to_json(&capture.warnings),
                     capture.size_bytes as i64,
-                    capture.created_at
+                    capture.created_at,
+                    capture.account,
                 ],
             )?;
             Ok(())
@@ -136,7 +155,8 @@ impl Store for SqliteStore {
     async fn capture(&self, id: &str) -> Result<Option<CaptureRecord>, StoreError> {
         let row = self.with(|c| {
             Ok(c.query_row(
-                "SELECT id, views, kinds, warnings, size_bytes, created_at FROM captures WHERE id = ?1",
+                "SELECT id, views, kinds, warnings, size_bytes, created_at, account
+                 FROM captures WHERE id = ?1",
                 params![id],
                 capture_row,
             )
@@ -212,8 +232,8 @@ impl Store for SqliteStore {
             };
             tx.execute(
                 "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                   idempotency_key, request_hash)
-                 VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7)",
+                                   idempotency_key, request_hash, account)
+                 VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7, ?8)",
                 params![
                     job.id,
                     job.capture_id,
@@ -222,6 +242,7 @@ impl Store for SqliteStore {
                     job.created_at,
                     idempotency.map(|(k, _)| k),
                     idempotency.map(|(_, h)| h),
+                    job.account,
                 ],
             )?;
             let record = Self::job_in(&tx, &job.id)?
@@ -235,16 +256,77 @@ impl Store for SqliteStore {
         self.with(|c| Self::job_in(c, id))
     }
 
-    async fn list_jobs(&self, limit: usize) -> Result<Vec<JobRecord>, StoreError> {
+    async fn list_jobs(
+        &self,
+        limit: usize,
+        account: Option<&str>,
+    ) -> Result<Vec<JobRecord>, StoreError> {
         self.with(|c| {
             let sql = format!(
-                "SELECT {JOB_COLUMNS} FROM jobs ORDER BY created_at DESC, rowid DESC LIMIT ?1"
+                "SELECT {JOB_COLUMNS} FROM jobs WHERE ?2 IS NULL OR account = ?2
+                 ORDER BY created_at DESC, rowid DESC LIMIT ?1"
             );
             let mut stmt = c.prepare(&sql)?;
             let raws = stmt
-                .query_map(params![limit as i64], raw_job)?
+                .query_map(params![limit as i64, account], raw_job)?
                 .collect::<Result<Vec<_>, _>>()?;
             raws.into_iter().map(RawJob::parse).collect()
+        })
+    }
+
+    async fn delete_job(&self, id: &str) -> Result<DeleteOutcome, StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            let state: Option<String> = tx
+                .query_row("SELECT state FROM jobs WHERE id = ?1", params![id], |r| {
+                    r.get(0)
+                })
+                .optional()?;
+            let Some(state) = state else {
+                return Ok(DeleteOutcome::NotFound);
+            };
+            let needed: i64 = tx.query_row(
+                "SELECT count(*) FROM jobs WHERE state IN ('queued', 'running')
+                 AND json_extract(spec, '$.parent_job_id') = ?1",
+                params![id],
+                |r| r.get(0),
+            )?;
+            if matches!(state.as_str(), "queued" | "running") || needed > 0 {
+                return Ok(DeleteOutcome::InUse);
+            }
+            tx.execute("DELETE FROM jobs WHERE id = ?1", params![id])?;
+            tx.commit()?;
+            Ok(DeleteOutcome::Deleted)
+        })
+    }
+
+    async fn jobs_ended_before(&self, before: i64) -> Result<Vec<String>, StoreError> {
+        self.with(|c| {
+            let mut stmt = c.prepare(
+                "SELECT id FROM jobs AS ended
+                 WHERE state IN ('succeeded', 'failed', 'cancelled') AND finished_at < ?1
+                 AND NOT EXISTS (SELECT 1 FROM jobs WHERE state IN ('queued', 'running')
+                                 AND json_extract(spec, '$.parent_job_id') = ended.id)
+                 ORDER BY finished_at",
+            )?;
+            let ids = stmt
+                .query_map(params![before], |r| r.get(0))?
+                .collect::<Result<_, _>>()?;
+            Ok(ids)
+        })
+    }
+
+    async fn unused_captures_before(&self, before: i64) -> Result<Vec<String>, StoreError> {
+        self.with(|c| {
+            let mut stmt = c.prepare(
+                "SELECT id FROM captures WHERE created_at < ?1
+                 AND NOT EXISTS (SELECT 1 FROM jobs WHERE jobs.capture_id = captures.id)
+                 ORDER BY created_at",
+            )?;
+            let ids = stmt
+                .query_map(params![before], |r| r.get(0))?
+                .collect::<Result<_, _>>()?;
+            Ok(ids)
         })
     }
 

@@ -202,6 +202,23 @@ impl ApiClient {
         }
     }
 
+    /// A client that sends `Authorization: Bearer {token}` with every request.
+    pub fn with_token(base: String, token: &str) -> ApiClient {
+        let mut headers = reqwest::header::HeaderMap::new();
+        headers.insert(
+            reqwest::header::AUTHORIZATION,
+            format!("Bearer {token}").parse().unwrap(),
+        );
+        ApiClient {
+            base,
+            client: reqwest::Client::builder()
+                .timeout(Duration::from_secs(30))
+                .default_headers(headers)
+                .build()
+                .unwrap(),
+        }
+    }
+
     pub fn url(&self, path: &str) -> String {
         format!("{}{path}", self.base)
     }

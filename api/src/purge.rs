@@ -1,0 +1,110 @@
+//! Removing captures and jobs together with everything stored for them — records, extracted
+//! captures, relight inputs, checkpoints, artifacts, in the data dir and in the object store —
+//! on request (`DELETE`) and by the retention sweeper, which removes jobs that ended more than
+//! `--retention-days` ago and captures that old that no job uses any more.
+
+use std::time::Duration;
+
+use thiserror::Error;
+use tokio::task::JoinHandle;
+
+use crate::artifacts::ArtifactError;
+use crate::bucket::BucketError;
+use crate::store::{now_ms, DeleteOutcome, StoreError};
+use crate::AppState;
+
+/// A removal that could not be completed (the record may already be gone: the files are then
+/// removed by the next attempt of the sweeper, or are unreachable leftovers).
+#[derive(Debug, Error)]
+pub enum PurgeError {
+    #[error(transparent)]
+    Store(#[from] StoreError),
+    #[error(transparent)]
+    Artifacts(#[from] ArtifactError),
+    #[error(transparent)]
+    Bucket(#[from] BucketError),
+    #[error("removing `{path}`: {source}")]
+    Io {
+        path: std::path::PathBuf,
+        source: std::io::Error,
+    },
+}
+
+async fn remove_local(dir: std::path::PathBuf) -> Result<(), PurgeError> {
+    match tokio::fs::remove_dir_all(&dir).await {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(PurgeError::Io {
+            path: dir,
+            source: e,
+        }),
+        _ => Ok(()),
+    }
+}
+
+/// Deletes an ended job's record, then its artifacts, checkpoints and inputs.
+pub async fn delete_job(state: &AppState, id: &str) -> Result<DeleteOutcome, PurgeError> {
+    let outcome = state.store.delete_job(id).await?;
+    if outcome == DeleteOutcome::Deleted {
+        state.artifacts.delete(id).await?;
+        if let Some(bucket) = &state.bucket {
+            bucket.delete_folder(&format!("jobs/{id}")).await?;
+        }
+        remove_local(state.paths.jobs.join(id)).await?;
+        tracing::info!(job_id = id, "job deleted");
+    }
+    Ok(outcome)
+}
+
+/// Deletes a capture's record unless a queued or running job uses it, then its files.
+pub async fn delete_capture(state: &AppState, id: &str) -> Result<DeleteOutcome, PurgeError> {
+    let outcome = state.store.delete_capture(id).await?;
+    if outcome == DeleteOutcome::Deleted {
+        if let Some(bucket) = &state.bucket {
+            bucket.delete_folder(&format!("captures/{id}")).await?;
+        }
+        remove_local(state.paths.capture_dir(id)).await?;
+        tracing::info!(capture_id = id, "capture deleted");
+    }
+    Ok(outcome)
+}
+
+/// One pass of the retention policy at `now` (unix ms): returns how many jobs and captures went.
+pub async fn sweep(
+    state: &AppState,
+    retention: Duration,
+    now: i64,
+) -> Result<(usize, usize), PurgeError> {
+    let before = now.saturating_sub(i64::try_from(retention.as_millis()).unwrap_or(i64::MAX));
+    let mut jobs = 0;
+    for id in state.store.jobs_ended_before(before).await? {
+        if delete_job(state, &id).await? == DeleteOutcome::Deleted {
+            jobs += 1;
+        }
+    }
+    let mut captures = 0;
+    for id in state.store.unused_captures_before(before).await? {
+        if delete_capture(state, &id).await? == DeleteOutcome::Deleted {
+            captures += 1;
+        }
+    }
+    Ok((jobs, captures))
+}
+
+/// The retention sweeper: a pass every `config.retention_sweep` until shutdown (none without a
+/// retention setting).
+pub fn spawn_sweeper(state: &AppState) -> Option<JoinHandle<()>> {
+    let retention = state.config.retention?;
+    let state = state.clone();
+    Some(tokio::spawn(async move {
+        loop {
+            match sweep(&state, retention, now_ms()).await {
+                Ok((0, 0)) => {}
+                Ok((jobs, captures)) => tracing::info!(jobs, captures, "retention: removed"),
+                Err(e) => tracing::error!(error = %e, "retention sweep failed"),
+            }
+            tokio::select! {
+                _ = state.shutdown.cancelled() => break,
+                _ = tokio::time::sleep(state.config.retention_sweep) => {}
+            }
+        }
+    }))
+}

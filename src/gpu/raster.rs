@@ -1178,6 +1178,99 @@ fn device_lighting(light: &dyn LightProbe) -> Option<Lighting<'_>> {
 mod tests {
     use super::*;
     use glam::DVec3;
+    use rand::{Rng, SeedableRng};
+
+    /// The gpu backend on any adapter (lavapipe in CI), or `None` with a notice outside CI.
+    fn backend() -> Option<GpuBackend> {
+        match GpuContext::new(crate::gpu::AdapterRequirement::Any) {
+            Ok(ctx) => Some(GpuBackend::with_options(ctx, GpuOptions::default()).unwrap()),
+            Err(e) => {
+                assert!(
+                    !crate::testing::running_in_ci(),
+                    "CI=true but no adapter: {e}"
+                );
+                println!("skipping: no GPU adapter ({e})");
+                None
+            }
+        }
+    }
+
+    /// Sorts binning entries (tile, depth key, surfel, unused) on the device by (tile, depth)
+    /// over the given varying bits.
+    fn device_sort(gpu: &GpuBackend, entries: &[[u32; 4]], bits: KeyBits) -> Vec<[u32; 4]> {
+        let device = &gpu.device;
+        let total = entries.len() as u64;
+        let bytes = total * ENTRY_BYTES;
+        let keys = device
+            .storage_init("keys", bytemuck::cast_slice(entries))
+            .unwrap();
+        let other = device
+            .storage("other", bytes, wgpu::BufferUsages::COPY_SRC)
+            .unwrap();
+        let count = device
+            .storage_init("count", bytemuck::bytes_of(&(entries.len() as u32)))
+            .unwrap();
+        let hist = device
+            .storage(
+                "hist",
+                total.div_ceil(RADIX_BLOCK) * (1u64 << RADIX_BITS) * 4,
+                wgpu::BufferUsages::empty(),
+            )
+            .unwrap();
+        let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+        let sorted = gpu
+            .encode_sort(
+                &mut encoder,
+                [keys, other],
+                &SortInputs {
+                    hist: &hist,
+                    count: &count,
+                    bits,
+                    dispatch: SortDispatch::Direct { total },
+                },
+            )
+            .unwrap();
+        let out = device
+            .submit_and_read(encoder, &[(&sorted, bytes)])
+            .unwrap();
+        bytemuck::pod_collect_to_vec(&out[0])
+    }
+
+    /// The radix sort is a stable sort by (tile, depth key) on random keys, at sizes around its
+    /// block of 2048 entries, with few and many varying bits.
+    #[test]
+    fn radix_sort_is_a_stable_sort_by_tile_then_depth() {
+        let Some(gpu) = backend() else { return };
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        for (n, depth_bits, tiles) in [
+            (1usize, 3u32, 1u32),
+            (2047, 12, 5),
+            (2048, 22, 64),
+            (2049, 32, 300),
+            (9000, 9, 1000),
+        ] {
+            // Keys vary only in their low `depth_bits` (as the frame's depth range promises);
+            // few distinct values make ties, which must keep their input order.
+            let high = 0x4040_0000u32 & !(u32::MAX.checked_shr(32 - depth_bits).unwrap_or(0));
+            let entries: Vec<[u32; 4]> = (0..n as u32)
+                .map(|i| {
+                    let low = rng
+                        .random::<u32>()
+                        .checked_shr(32 - depth_bits)
+                        .unwrap_or(0)
+                        % 97;
+                    [rng.random_range(0..tiles), high | low, i, 0]
+                })
+                .collect();
+            let bits = KeyBits {
+                depth: depth_bits,
+                tile: varying_bits(0, tiles - 1),
+            };
+            let mut expected = entries.clone();
+            expected.sort_by_key(|e| (e[0], e[1]));
+            assert_eq!(device_sort(&gpu, &entries, bits), expected, "{n} entries");
+        }
+    }
 
     #[test]
     fn varying_bits_counts_up_to_the_highest_differing_bit() {

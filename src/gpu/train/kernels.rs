@@ -218,3 +218,154 @@ impl AdamParamsGpu {
         params
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuOptions};
+    use rand::{Rng, SeedableRng};
+
+    /// A kernel, its bindings and its workgroup grid.
+    type Stage<'a> = (
+        &'a wgpu::ComputePipeline,
+        Vec<(u32, &'a wgpu::Buffer)>,
+        (u32, u32),
+    );
+
+    fn backend() -> Option<GpuBackend> {
+        match GpuContext::new(AdapterRequirement::Any) {
+            Ok(ctx) => Some(GpuBackend::with_options(ctx, GpuOptions::default()).unwrap()),
+            Err(e) => {
+                assert!(
+                    !crate::testing::running_in_ci(),
+                    "CI=true but no adapter: {e}"
+                );
+                println!("skipping: no GPU adapter ({e})");
+                None
+            }
+        }
+    }
+
+    /// The three scan kernels give the exclusive prefix sum of random tile counts, the total,
+    /// the entries that fit and the overflow flag, and size the indirect grids from what fits;
+    /// at sizes around the 1024-count block and over many blocks.
+    #[test]
+    fn device_scan_matches_the_host_prefix_sum() {
+        let Some(gpu) = backend() else { return };
+        let device = gpu.device();
+        let kernels = TrainKernels::compile(device).unwrap();
+        let max_groups = device.wgpu().limits().max_compute_workgroups_per_dimension;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+        for (n, capacity) in [
+            (1u32, 10u32),
+            (1023, 1 << 20),
+            (1024, 1 << 20),
+            (1025, 100),
+            (300_000, 1 << 30),
+        ] {
+            // Mostly zeros and small counts, as surfels cover few tiles.
+            let counts: Vec<u32> = (0..n)
+                .map(|_| rng.random_range(0..12u32).saturating_sub(6))
+                .collect();
+            let n64 = u64::from(n);
+            let counts_buf = device
+                .storage_init("counts", bytemuck::cast_slice(&counts))
+                .unwrap();
+            let offsets = device
+                .storage("offsets", n64 * 4, wgpu::BufferUsages::COPY_SRC)
+                .unwrap();
+            let block_sums = device
+                .storage(
+                    "block sums",
+                    n64.div_ceil(SCAN_BLOCK) * 4,
+                    wgpu::BufferUsages::empty(),
+                )
+                .unwrap();
+            let status = device
+                .storage(
+                    "status",
+                    STATUS_WORDS as u64 * 4,
+                    wgpu::BufferUsages::COPY_SRC,
+                )
+                .unwrap();
+            let dispatch = device
+                .storage("dispatch", 6 * 4, wgpu::BufferUsages::COPY_SRC)
+                .unwrap();
+            let params = ScanParamsGpu {
+                n,
+                capacity,
+                max_groups,
+                unused: 0,
+            };
+            let params = device.uniform("scan", bytemuck::bytes_of(&params));
+            let blocks = device.workgroup_grid(n64.div_ceil(SCAN_BLOCK)).unwrap();
+            let mut encoder = device.wgpu().create_command_encoder(&Default::default());
+            let stages: [Stage; 3] = [
+                (
+                    &kernels.scan_blocks,
+                    vec![
+                        (0, &params),
+                        (1, &counts_buf),
+                        (2, &offsets),
+                        (3, &block_sums),
+                    ],
+                    blocks,
+                ),
+                (
+                    &kernels.scan_sums,
+                    vec![(0, &params), (3, &block_sums), (4, &status), (5, &dispatch)],
+                    (1, 1),
+                ),
+                (
+                    &kernels.scan_add,
+                    vec![(0, &params), (2, &offsets), (3, &block_sums)],
+                    blocks,
+                ),
+            ];
+            for (pipeline, bindings, (x, y)) in &stages {
+                let group = device.bind(pipeline, bindings);
+                let mut pass = device.begin_pass(&mut encoder, "scan");
+                pass.set_pipeline(pipeline);
+                pass.set_bind_group(0, &group, &[]);
+                pass.dispatch_workgroups(*x, *y, 1);
+            }
+            let out = device
+                .submit_and_read(
+                    encoder,
+                    &[
+                        (&offsets, n64 * 4),
+                        (&status, STATUS_WORDS as u64 * 4),
+                        (&dispatch, 6 * 4),
+                    ],
+                )
+                .unwrap();
+            let got: Vec<u32> = bytemuck::pod_collect_to_vec(&out[0]);
+            let expected: Vec<u32> = counts
+                .iter()
+                .scan(0u32, |run, &c| {
+                    let before = *run;
+                    *run += c;
+                    Some(before)
+                })
+                .collect();
+            assert_eq!(got, expected, "{n} counts");
+            let total: u32 = counts.iter().sum();
+            let fits = total.min(capacity);
+            let words: Vec<u32> = bytemuck::pod_collect_to_vec(&out[1]);
+            assert_eq!(
+                &words[..3],
+                &[fits, total, u32::from(total > capacity)],
+                "{n} counts"
+            );
+            let grids: Vec<u32> = bytemuck::pod_collect_to_vec(&out[2]);
+            let cover = |at: usize, per: u32| {
+                let groups = u64::from(grids[at]) * u64::from(grids[at + 1]);
+                groups >= u64::from(fits.div_ceil(per)) && grids[at] <= max_groups
+            };
+            assert!(
+                cover(0, 2048) && cover(3, 256),
+                "{n} counts: grids {grids:?}"
+            );
+        }
+    }
+}

@@ -26,6 +26,7 @@
 
 mod context;
 mod device;
+mod layout;
 mod prefilter;
 mod profile;
 mod raster;

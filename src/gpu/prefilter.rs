@@ -14,6 +14,7 @@ use std::sync::Arc;
 use bytemuck::{Pod, Zeroable};
 
 use super::device::Device;
+use super::layout::wgsl_mirror;
 use super::GpuError;
 use crate::envmap::prefilter::{ConvolutionTable, Kernel};
 use crate::envmap::{CubeMap, PrefilterPlan};
@@ -26,23 +27,25 @@ const NO_NORMALIZER: u32 = u32::MAX;
 /// prefilter keeps.
 const THRESHOLD_SLACK: f64 = 1e-5;
 
-/// `ConvParams` of prefilter.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-struct ConvParamsGpu {
-    grid: [u32; 4],
-    tables: [u32; 4],
-    kind: [u32; 4],
-    kernel: [f32; 4],
-    io: [u32; 4],
+wgsl_mirror! {
+    /// `ConvParams` of prefilter.wgsl.
+    #[derive(Clone, Copy, Debug, Pod, Zeroable)]
+    struct ConvParamsGpu = "ConvParams" {
+        grid: [u32; 4],
+        tables: [u32; 4],
+        kind: [u32; 4],
+        kernel: [f32; 4],
+        io: [u32; 4],
+    }
 }
 
-/// `LevelParams` of prefilter.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-struct LevelParamsGpu {
-    level: [u32; 4],
-    same: [u32; 4],
+wgsl_mirror! {
+    /// `LevelParams` of prefilter.wgsl.
+    #[derive(Clone, Copy, Debug, Pod, Zeroable)]
+    struct LevelParamsGpu = "LevelParams" {
+        level: [u32; 4],
+        same: [u32; 4],
+    }
 }
 
 pub(super) struct PrefilterKernels {
@@ -446,5 +449,16 @@ impl DevicePrefilter {
     /// The raw gradient of the last [`Self::encode_backward`]: one f32 per raw value.
     pub(super) fn raw_gradient(&self) -> (&wgpu::Buffer, u64) {
         (&self.raw_grad, self.levels[0].texels * 3 * 4)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn prefilter_params_mirror_the_wgsl() {
+        crate::gpu::layout::assert_mirrors::<ConvParamsGpu>(&[PREFILTER]);
+        crate::gpu::layout::assert_mirrors::<LevelParamsGpu>(&[PREFILTER]);
     }
 }

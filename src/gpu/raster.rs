@@ -38,6 +38,7 @@ use tracing::info_span;
 use wgpu::util::DeviceExt;
 
 use super::device::Device;
+use super::layout::wgsl_mirror;
 use super::shade::{Lighting, ShadePipelines};
 use super::{GpuContext, GpuError};
 use crate::brdf_lut::BrdfLut;
@@ -108,19 +109,20 @@ pub struct GpuOptions {
     pub profile: bool,
 }
 
-/// `Params` of shaders/common.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub(super) struct ParamsGpu {
-    rot: [[f32; 4]; 3],
-    trans: [f32; 4],
-    origin: [f32; 4],
-    intr: [f32; 4],
-    dims: [u32; 4],
-    counts: [u32; 4],
-    thr0: [f32; 4],
-    thr1: [f32; 4],
-    band: [u32; 4],
+wgsl_mirror! {
+    /// `Params` of shaders/common.wgsl.
+    #[derive(Clone, Copy, Debug, Pod, Zeroable)]
+    pub(super) struct ParamsGpu = "Params" {
+        rot: [[f32; 4]; 3],
+        trans: [f32; 4],
+        origin: [f32; 4],
+        intr: [f32; 4],
+        dims: [u32; 4],
+        counts: [u32; 4],
+        thr0: [f32; 4],
+        thr1: [f32; 4],
+        band: [u32; 4],
+    }
 }
 
 impl ParamsGpu {
@@ -220,14 +222,15 @@ impl Band {
     }
 }
 
-/// `Raw` of shaders/common.wgsl: a surfel's raw parameters, 16 values.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
-pub(super) struct RawGpu {
-    pub(super) pos_op: [f32; 4],
-    pub(super) quat: [f32; 4],
-    pub(super) scale_rough_ior: [f32; 4],
-    pub(super) albedo: [f32; 4],
+wgsl_mirror! {
+    /// `Raw` of shaders/common.wgsl: a surfel's raw parameters, 16 values.
+    #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+    pub(super) struct RawGpu = "Raw" {
+        pub(super) pos_op: [f32; 4],
+        pub(super) quat: [f32; 4],
+        pub(super) scale_rough_ior: [f32; 4],
+        pub(super) albedo: [f32; 4],
+    }
 }
 
 /// The surfels' raw parameters in the kernels' layout (f32).
@@ -258,13 +261,14 @@ const RADIX_BITS: u32 = 4;
 /// Entries per radix-sort workgroup (`RADIX_BLOCK`).
 pub(super) const RADIX_BLOCK: u64 = 2048;
 
-/// One radix-sort pass (`RadixPass` in shaders/radix_sort.wgsl).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-struct RadixPassGpu {
-    shift: u32,
-    word: u32,
-    unused: [u32; 2],
+wgsl_mirror! {
+    /// One radix-sort pass (`RadixPass` in shaders/radix_sort.wgsl).
+    #[derive(Clone, Copy, Debug, Pod, Zeroable)]
+    struct RadixPassGpu = "RadixPass" {
+        shift: u32,
+        word: u32,
+        unused: [u32; 2],
+    }
 }
 
 /// How the radix sort's block kernels are dispatched.
@@ -1270,6 +1274,14 @@ mod tests {
             expected.sort_by_key(|e| (e[0], e[1]));
             assert_eq!(device_sort(&gpu, &entries, bits), expected, "{n} entries");
         }
+    }
+
+    #[test]
+    fn uniform_and_storage_structs_mirror_the_wgsl() {
+        use crate::gpu::layout::assert_mirrors;
+        assert_mirrors::<ParamsGpu>(&[COMMON, PROJECT]);
+        assert_mirrors::<RawGpu>(&[COMMON, PROJECT]);
+        assert_mirrors::<RadixPassGpu>(&[RADIX_SORT]);
     }
 
     #[test]

@@ -25,6 +25,7 @@ use glam::DVec3;
 use tracing::info_span;
 
 use super::device::Device;
+use super::layout::wgsl_mirror;
 use super::raster::GpuBackend;
 use super::GpuError;
 use crate::brdf_lut::BrdfLut;
@@ -118,19 +119,20 @@ impl<'a> Lighting<'a> {
     }
 }
 
-/// `ShadeParams` of shade_common.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub(super) struct ShadeParamsGpu {
-    rot: [[f32; 4]; 3],
-    up: [f32; 4],
-    intr: [f32; 4],
-    dims: [u32; 4],
-    light_layout: [u32; 4],
-    rough: [f32; 4],
-    iors: [[f32; 4]; 2],
-    grid_counts: [u32; 4],
-    grid_geometry: [f32; 4],
+wgsl_mirror! {
+    /// `ShadeParams` of shade_common.wgsl.
+    #[derive(Clone, Copy, Debug, Pod, Zeroable)]
+    pub(super) struct ShadeParamsGpu = "ShadeParams" {
+        rot: [[f32; 4]; 3],
+        up: [f32; 4],
+        intr: [f32; 4],
+        dims: [u32; 4],
+        light_layout: [u32; 4],
+        rough: [f32; 4],
+        iors: [[f32; 4]; 2],
+        grid_counts: [u32; 4],
+        grid_geometry: [f32; 4],
+    }
 }
 
 fn v4(v: DVec3) -> [f32; 4] {
@@ -631,6 +633,11 @@ impl GpuBackend {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shade_params_mirror_the_wgsl() {
+        crate::gpu::layout::assert_mirrors::<ShadeParamsGpu>(&[SHADE_COMMON, LIGHT_GLOBAL, SHADE]);
+    }
 
     #[test]
     fn chunks_cover_every_pixel_once() {

@@ -7,6 +7,7 @@ use glam::DVec3;
 use super::buffers::{FrameBuffers, GROUP_SLOTS};
 use super::DeviceStep;
 use crate::gpu::device::Device;
+use crate::gpu::layout::wgsl_mirror;
 use crate::gpu::GpuError;
 use crate::loss::LossWeights;
 use crate::optim::AdamConfig;
@@ -78,29 +79,31 @@ impl TrainKernels {
     }
 }
 
-/// `ScanParams` of scan.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub(super) struct ScanParamsGpu {
-    pub(super) n: u32,
-    pub(super) capacity: u32,
-    pub(super) max_groups: u32,
-    pub(super) unused: u32,
+wgsl_mirror! {
+    /// `ScanParams` of scan.wgsl.
+    #[derive(Clone, Copy, Debug, Pod, Zeroable)]
+    pub(super) struct ScanParamsGpu = "ScanParams" {
+        pub(super) n: u32,
+        pub(super) capacity: u32,
+        pub(super) max_groups: u32,
+        pub(super) unused: u32,
+    }
 }
 
-/// `TrainParams` of train_params.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
-pub(super) struct TrainParamsGpu {
-    pub(super) dims: [u32; 4],
-    pub(super) mode: [u32; 4],
-    pub(super) theta: [f32; 4],
-    pub(super) weights: [f32; 4],
-    pub(super) weights2: [f32; 4],
-    pub(super) rot: [[f32; 4]; 3],
-    pub(super) origin: [f32; 4],
-    pub(super) intr: [f32; 4],
-    pub(super) gauss: [f32; 12],
+wgsl_mirror! {
+    /// `TrainParams` of train_params.wgsl.
+    #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+    pub(super) struct TrainParamsGpu = "TrainParams" {
+        pub(super) dims: [u32; 4],
+        pub(super) mode: [u32; 4],
+        pub(super) theta: [f32; 4],
+        pub(super) weights: [f32; 4],
+        pub(super) weights2: [f32; 4],
+        pub(super) rot: [[f32; 4]; 3],
+        pub(super) origin: [f32; 4],
+        pub(super) intr: [f32; 4],
+        pub(super) gauss: [f32; 12],
+    }
 }
 
 fn v4(v: DVec3) -> [f32; 4] {
@@ -167,17 +170,18 @@ impl TrainParamsGpu {
     }
 }
 
-/// `AdamParams` of train_update.wgsl: per raw slot, its group's rate, bias corrections and
-/// whether it is trained.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
-pub(super) struct AdamParamsGpu {
-    pub(super) counts: [u32; 4],
-    pub(super) betas: [f32; 4],
-    pub(super) lr: [f32; 16],
-    pub(super) bias1: [f32; 16],
-    pub(super) bias2: [f32; 16],
-    pub(super) trained: [u32; 16],
+wgsl_mirror! {
+    /// `AdamParams` of train_update.wgsl: per raw slot, its group's rate, bias corrections and
+    /// whether it is trained.
+    #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+    pub(super) struct AdamParamsGpu = "AdamParams" {
+        pub(super) counts: [u32; 4],
+        pub(super) betas: [f32; 4],
+        pub(super) lr: [f32; 16],
+        pub(super) bias1: [f32; 16],
+        pub(super) bias2: [f32; 16],
+        pub(super) trained: [u32; 16],
+    }
 }
 
 impl AdamParamsGpu {
@@ -244,6 +248,14 @@ mod tests {
                 None
             }
         }
+    }
+
+    #[test]
+    fn trainer_params_mirror_the_wgsl() {
+        use crate::gpu::layout::assert_mirrors;
+        assert_mirrors::<ScanParamsGpu>(&[SCAN]);
+        assert_mirrors::<TrainParamsGpu>(&[TRAIN_COMMON, TRAIN_PARAMS, TRAIN_PIXELS]);
+        assert_mirrors::<AdamParamsGpu>(&[TRAIN_COMMON, TRAIN_UPDATE]);
     }
 
     /// The three scan kernels give the exclusive prefix sum of random tile counts, the total,

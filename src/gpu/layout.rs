@@ -1,0 +1,171 @@
+//! Rust mirrors of the WGSL uniform and storage structs, declared once with [`wgsl_mirror!`]:
+//! the macro writes the `#[repr(C)]` struct and a description of its fields (offset, size,
+//! scalar type), and each mirror's test ([`assert_mirrors`]) parses the WGSL with naga, lays it
+//! out as the device will, and checks that the Rust struct has the WGSL struct's size and that
+//! every Rust field covers exactly the WGSL members at its bytes, of the same scalar type. A
+//! field swapped, resized or retyped on one side fails there instead of in a parity test.
+
+/// The scalar type of a WGSL member or of a Rust field's elements.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ScalarKind {
+    F32,
+    U32,
+    I32,
+}
+
+/// Plain data made of one scalar type.
+pub(crate) trait Scalars {
+    const KIND: ScalarKind;
+}
+
+impl Scalars for f32 {
+    const KIND: ScalarKind = ScalarKind::F32;
+}
+
+impl Scalars for u32 {
+    const KIND: ScalarKind = ScalarKind::U32;
+}
+
+impl Scalars for i32 {
+    const KIND: ScalarKind = ScalarKind::I32;
+}
+
+impl<T: Scalars, const N: usize> Scalars for [T; N] {
+    const KIND: ScalarKind = T::KIND;
+}
+
+/// One field of a mirror.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FieldLayout {
+    pub(crate) name: &'static str,
+    pub(crate) offset: usize,
+    pub(crate) size: usize,
+    pub(crate) kind: ScalarKind,
+}
+
+/// A `#[repr(C)]` struct that mirrors the WGSL struct `WGSL_NAME`.
+pub(crate) trait WgslMirror: Sized {
+    const WGSL_NAME: &'static str;
+    fn fields() -> Vec<FieldLayout>;
+}
+
+/// Declares a `#[repr(C)]` mirror of a WGSL struct:
+/// `wgsl_mirror! { /// doc  #[derive(..)] pub(super) struct ParamsGpu = "Params" { a: [f32; 4], .. } }`.
+macro_rules! wgsl_mirror {
+    (
+        $(#[$meta:meta])*
+        $vis:vis struct $name:ident = $wgsl:literal {
+            $($(#[$field_meta:meta])* $field_vis:vis $field:ident : $ty:ty),* $(,)?
+        }
+    ) => {
+        $(#[$meta])*
+        #[repr(C)]
+        $vis struct $name {
+            $($(#[$field_meta])* $field_vis $field: $ty),*
+        }
+
+        impl $crate::gpu::layout::WgslMirror for $name {
+            const WGSL_NAME: &'static str = $wgsl;
+            fn fields() -> Vec<$crate::gpu::layout::FieldLayout> {
+                vec![$($crate::gpu::layout::FieldLayout {
+                    name: stringify!($field),
+                    offset: std::mem::offset_of!($name, $field),
+                    size: std::mem::size_of::<$ty>(),
+                    kind: <$ty as $crate::gpu::layout::Scalars>::KIND,
+                }),*]
+            }
+        }
+    };
+}
+pub(crate) use wgsl_mirror;
+
+/// Parses `sources` (concatenated, as a pipeline composes them) and asserts that `T` mirrors
+/// its WGSL struct: same size, and each Rust field spans exactly the WGSL members that start
+/// within its bytes, back to back, all of its scalar type.
+#[cfg(test)]
+pub(crate) fn assert_mirrors<T: WgslMirror>(sources: &[&str]) {
+    use naga::{ScalarKind as Kind, TypeInner};
+    let source = sources.concat();
+    let module = naga::front::wgsl::parse_str(&source)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+    let mut layouter = naga::proc::Layouter::default();
+    layouter.update(module.to_ctx()).expect("the WGSL lays out");
+    let name = T::WGSL_NAME;
+    let (_, ty) = module
+        .types
+        .iter()
+        .find(|(_, t)| t.name.as_deref() == Some(name))
+        .unwrap_or_else(|| panic!("no struct `{name}` in the WGSL"));
+    let TypeInner::Struct { members, span } = &ty.inner else {
+        panic!("`{name}` is not a struct");
+    };
+    assert_eq!(
+        *span as usize,
+        std::mem::size_of::<T>(),
+        "size of `{name}` and its Rust mirror"
+    );
+    let scalar_kind = |inner: &TypeInner| -> ScalarKind {
+        let scalar = match inner {
+            TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } => *s,
+            TypeInner::Matrix { scalar, .. } => *scalar,
+            TypeInner::Array { base, .. } => match &module.types[*base].inner {
+                TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } => *s,
+                other => panic!("`{name}`: unsupported array element {other:?}"),
+            },
+            other => panic!("`{name}`: unsupported member type {other:?}"),
+        };
+        match scalar.kind {
+            Kind::Float => ScalarKind::F32,
+            Kind::Uint => ScalarKind::U32,
+            Kind::Sint => ScalarKind::I32,
+            other => panic!("`{name}`: unsupported scalar {other:?}"),
+        }
+    };
+    let wgsl: Vec<(&str, usize, usize, ScalarKind)> = members
+        .iter()
+        .map(|m| {
+            (
+                m.name.as_deref().unwrap_or("?"),
+                m.offset as usize,
+                layouter[m.ty].size as usize,
+                scalar_kind(&module.types[m.ty].inner),
+            )
+        })
+        .collect();
+    let mut covered = 0;
+    for field in T::fields() {
+        let end = field.offset + field.size;
+        let inside: Vec<_> = wgsl
+            .iter()
+            .filter(|m| m.1 >= field.offset && m.1 < end)
+            .collect();
+        let what = format!(
+            "`{name}` field `{}` (bytes {}..{end})",
+            field.name, field.offset
+        );
+        assert!(!inside.is_empty(), "{what}: no WGSL member there");
+        let mut at = field.offset;
+        for (member, offset, size, kind) in &inside {
+            assert_eq!(
+                *offset, at,
+                "{what}: WGSL member `{member}` is not where expected"
+            );
+            assert_eq!(
+                *kind, field.kind,
+                "{what}: WGSL member `{member}` has another type"
+            );
+            at += size;
+        }
+        assert_eq!(
+            at, end,
+            "{what}: the WGSL members there span {}..{at}",
+            field.offset
+        );
+        covered += inside.len();
+    }
+    assert_eq!(
+        covered,
+        wgsl.len(),
+        "`{name}`: WGSL members without a Rust field"
+    );
+}

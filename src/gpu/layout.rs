@@ -3,9 +3,11 @@
 //! scalar type), and each mirror's test ([`assert_mirrors`]) parses the WGSL with naga, lays it
 //! out as the device will, and checks that the Rust struct has the WGSL struct's size and that
 //! every Rust field covers exactly the WGSL members at its bytes, of the same scalar type. A
-//! field swapped, resized or retyped on one side fails there instead of in a parity test.
+//! field swapped, resized or retyped on one side fails there instead of in a parity test. The
+//! descriptions exist in test builds only.
 
 /// The scalar type of a WGSL member or of a Rust field's elements.
+#[cfg(test)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum ScalarKind {
     F32,
@@ -14,27 +16,33 @@ pub(crate) enum ScalarKind {
 }
 
 /// Plain data made of one scalar type.
+#[cfg(test)]
 pub(crate) trait Scalars {
     const KIND: ScalarKind;
 }
 
+#[cfg(test)]
 impl Scalars for f32 {
     const KIND: ScalarKind = ScalarKind::F32;
 }
 
+#[cfg(test)]
 impl Scalars for u32 {
     const KIND: ScalarKind = ScalarKind::U32;
 }
 
+#[cfg(test)]
 impl Scalars for i32 {
     const KIND: ScalarKind = ScalarKind::I32;
 }
 
+#[cfg(test)]
 impl<T: Scalars, const N: usize> Scalars for [T; N] {
     const KIND: ScalarKind = T::KIND;
 }
 
 /// One field of a mirror.
+#[cfg(test)]
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct FieldLayout {
     pub(crate) name: &'static str,
@@ -44,6 +52,7 @@ pub(crate) struct FieldLayout {
 }
 
 /// A `#[repr(C)]` struct that mirrors the WGSL struct `WGSL_NAME`.
+#[cfg(test)]
 pub(crate) trait WgslMirror: Sized {
     const WGSL_NAME: &'static str;
     fn fields() -> Vec<FieldLayout>;
@@ -64,6 +73,7 @@ macro_rules! wgsl_mirror {
             $($(#[$field_meta])* $field_vis $field: $ty),*
         }
 
+        #[cfg(test)]
         impl $crate::gpu::layout::WgslMirror for $name {
             const WGSL_NAME: &'static str = $wgsl;
             fn fields() -> Vec<$crate::gpu::layout::FieldLayout> {

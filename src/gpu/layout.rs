@@ -1,6 +1,6 @@
 //! Rust mirrors of the WGSL uniform and storage structs, declared once with [`wgsl_mirror!`]:
 //! the macro writes the `#[repr(C)]` struct and a description of its fields (offset, size,
-//! scalar type), and each mirror's test ([`assert_mirrors`]) parses the WGSL with naga, lays it
+//! scalar type), and each mirror's test (`assert_mirrors`) parses the WGSL with naga, lays it
 //! out as the device will, and checks that the Rust struct has the WGSL struct's size and that
 //! every Rust field covers exactly the WGSL members at its bytes, of the same scalar type. A
 //! field swapped, resized or retyped on one side fails there instead of in a parity test. The

@@ -47,86 +47,166 @@ const PAPER_SCHEDULE_RATIO: f64 = 15_000.0 / DEFAULT_ITERATIONS as f64;
 /// Default surfel budget per pixel of object (see `TrainConfig::surfels_per_mask_pixel`).
 pub const SURFELS_PER_MASK_PIXEL: f64 = 4.0;
 
-/// Every setting of a training run.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+/// An on/off setting on the command line (`on`, `off`, `true` or `false`).
+fn parse_switch(value: &str) -> Result<bool, String> {
+    match value {
+        "on" | "true" => Ok(true),
+        "off" | "false" => Ok(false),
+        other => Err(format!("`{other}`: expected on or off")),
+    }
+}
+
+/// Every setting of a training run; also the training flags of the command line (each field a
+/// `--long-name` flag with the default as its default), so the CLI, the config file and the
+/// service's job `config` are one type.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, clap::Args)]
 #[serde(default, deny_unknown_fields)]
 pub struct TrainConfig {
     /// Total optimization steps (one random training view each).
+    #[arg(long, default_value_t = TrainConfig::default().iterations)]
     pub iterations: u32,
+    /// Measurement used for the loss (auto: chosen from the capture).
+    #[arg(long, value_enum, default_value_t = TrainConfig::default().mode)]
     pub mode: Mode,
+    /// Compute backend.
+    #[arg(long, value_enum, default_value_t = TrainConfig::default().backend)]
     pub backend: BackendChoice,
     /// Seed of every random choice; equal seeds give equal runs.
+    #[arg(long, default_value_t = TrainConfig::default().seed)]
     pub seed: u64,
     /// GridMap self-occlusion-aware lighting (METHOD.md §5).
+    #[arg(
+        long,
+        value_name = "on|off",
+        value_parser = parse_switch,
+        action = clap::ArgAction::Set,
+        // The struct's default (a test holds them equal), in the flag's own words.
+        default_value = "on"
+    )]
     pub gridmap: bool,
     /// Weight the irradiance integral by the Fresnel transmission of the incoming light
     /// (METHOD.md §4, "known gaps" (2)); off reproduces the published model.
+    #[arg(
+        long,
+        value_name = "on|off",
+        value_parser = parse_switch,
+        action = clap::ArgAction::Set,
+        default_value = "off"
+    )]
     pub fresnel_irradiance: bool,
 
     /// End of the plain-2DGS stage, as a fraction of `iterations` (the paper's 3,000 / 15,000).
+    #[arg(long, default_value_t = TrainConfig::default().geometry_stage_end)]
     pub geometry_stage_end: f64,
     /// End of the environment/material warm-up, as a fraction of `iterations` (the paper's
     /// 5,000 / 15,000).
+    #[arg(long, default_value_t = TrainConfig::default().material_stage_end)]
     pub material_stage_end: f64,
 
     /// Surfels sampled inside the visual hull at start.
+    #[arg(long, default_value_t = TrainConfig::default().initial_surfels)]
     pub initial_surfels: u32,
     /// Upper bound on the surfel count (densification stops growing past it).
+    #[arg(long, default_value_t = TrainConfig::default().max_surfels)]
     pub max_surfels: u32,
     /// Surfel budget per pixel of object in a training view (the mean mask area): densification
     /// stops growing past this many times the object's pixels, or `max_surfels`, whichever is
     /// lower (never below `initial_surfels`). 0 leaves only `max_surfels`.
+    #[arg(long, default_value_t = TrainConfig::default().surfels_per_mask_pixel)]
     pub surfels_per_mask_pixel: f64,
     /// Densification starts at this fraction of `iterations` (the paper's 500 / 15,000).
+    #[arg(long, default_value_t = TrainConfig::default().densify_from)]
     pub densify_from: f64,
     /// Densification (and opacity resets) stop after this fraction of `iterations`.
+    #[arg(long, default_value_t = TrainConfig::default().densify_until)]
     pub densify_until: f64,
     /// Steps between densifications during the geometry stage.
+    #[arg(long, default_value_t = TrainConfig::default().densify_interval)]
     pub densify_interval: u32,
     /// Steps between densify/prune passes once PolarDR is on.
+    #[arg(long, default_value_t = TrainConfig::default().densify_interval_polar)]
     pub densify_interval_polar: u32,
     /// Screen-space gradient threshold for clone/split (pixels, averaged over views).
+    #[arg(long, default_value_t = TrainConfig::default().densify_grad_threshold)]
     pub densify_grad_threshold: f64,
     /// Surfels with opacity below this are pruned.
+    #[arg(long, default_value_t = TrainConfig::default().prune_opacity)]
     pub prune_opacity: f64,
     /// Steps between opacity resets.
+    #[arg(long, default_value_t = TrainConfig::default().opacity_reset_interval)]
     pub opacity_reset_interval: u32,
 
-    /// Learning rates (METHOD.md §7); positions are scaled by the scene extent.
+    /// Learning rate of positions at the start of the run (METHOD.md §7), scaled by the scene
+    /// extent.
+    #[arg(long, default_value_t = TrainConfig::default().lr_position_init)]
     pub lr_position_init: f64,
+    /// Learning rate of positions at the end of the run (decays exponentially from the initial one).
+    #[arg(long, default_value_t = TrainConfig::default().lr_position_final)]
     pub lr_position_final: f64,
+    /// Learning rate of albedo.
+    #[arg(long, default_value_t = TrainConfig::default().lr_albedo)]
     pub lr_albedo: f64,
+    /// Learning rate of opacity (logit).
+    #[arg(long, default_value_t = TrainConfig::default().lr_opacity)]
     pub lr_opacity: f64,
+    /// Learning rate of the log-scales.
+    #[arg(long, default_value_t = TrainConfig::default().lr_scale)]
     pub lr_scale: f64,
+    /// Learning rate of the rotation quaternions.
+    #[arg(long, default_value_t = TrainConfig::default().lr_rotation)]
     pub lr_rotation: f64,
+    /// Learning rate of the index of refraction.
+    #[arg(long, default_value_t = TrainConfig::default().lr_ior)]
     pub lr_ior: f64,
+    /// Learning rate of roughness.
+    #[arg(long, default_value_t = TrainConfig::default().lr_roughness)]
     pub lr_roughness: f64,
+    /// Learning rate of the environment map.
+    #[arg(long, default_value_t = TrainConfig::default().lr_envmap)]
     pub lr_envmap: f64,
+    /// Learning rate of the learned polarizer angles (partial mode).
+    #[arg(long, default_value_t = TrainConfig::default().lr_polarizer)]
     pub lr_polarizer: f64,
 
-    /// Loss weights (METHOD.md §6).
+    /// Weight of the SSIM term of the photometric loss (METHOD.md §6).
+    #[arg(long, default_value_t = TrainConfig::default().lambda_ssim)]
     pub lambda_ssim: f64,
+    /// Weight of the S1/S2 Stokes loss.
+    #[arg(long, default_value_t = TrainConfig::default().lambda_stokes)]
     pub lambda_stokes: f64,
+    /// Weight of the mask loss.
+    #[arg(long, default_value_t = TrainConfig::default().lambda_mask)]
     pub lambda_mask: f64,
+    /// Weight of the normal smoothness loss.
+    #[arg(long, default_value_t = TrainConfig::default().lambda_normal_smooth)]
     pub lambda_normal_smooth: f64,
+    /// Weight of the depth–normal consistency loss.
+    #[arg(long, default_value_t = TrainConfig::default().lambda_depth_normal)]
     pub lambda_depth_normal: f64,
 
     /// Cube-map face size of the learned environment.
+    #[arg(long, default_value_t = TrainConfig::default().envmap_resolution)]
     pub envmap_resolution: u32,
     /// Steps between rebuilds of the environment's prefiltered mip chain and irradiance map while
     /// the map is being learned (the map moves little per step; a rebuild costs ~0.1 s at D = 64).
+    #[arg(long, default_value_t = TrainConfig::default().envmap_prefilter_interval)]
     pub envmap_prefilter_interval: u32,
     /// Steps between checkpoints (0: only at the end).
+    #[arg(long, default_value_t = TrainConfig::default().checkpoint_interval)]
     pub checkpoint_interval: u32,
     /// Steps between test-view evaluations (0: only at the end).
+    #[arg(long, default_value_t = TrainConfig::default().eval_interval)]
     pub eval_interval: u32,
     /// Steps between mesh re-extractions for GridMap.
+    #[arg(long, default_value_t = TrainConfig::default().mesh_interval)]
     pub mesh_interval: u32,
     /// Steps between GridMap rebuilds.
+    #[arg(long, default_value_t = TrainConfig::default().gridmap_interval)]
     pub gridmap_interval: u32,
     /// Steps after an opacity reset before GridMap's mesh and probes are rebuilt again (a mesh
     /// extracted from freshly reset, nearly transparent surfels is empty); a remesh that falls due
     /// meanwhile runs when they are over.
+    #[arg(long, default_value_t = TrainConfig::default().opacity_recovery_steps)]
     pub opacity_recovery_steps: u32,
 }
 
@@ -261,6 +341,23 @@ impl TrainConfig {
         Ok(())
     }
 
+    /// `self` (the defaults, or a config file's settings) with every setting that was given on
+    /// the command line taken from `flags`, the same struct as parsed by clap from `matches`.
+    pub fn overridden_by(&self, flags: &TrainConfig, matches: &clap::ArgMatches) -> Self {
+        let (Ok(serde_json::Value::Object(mut merged)), Ok(serde_json::Value::Object(given))) =
+            (serde_json::to_value(self), serde_json::to_value(flags))
+        else {
+            unreachable!("a TrainConfig serializes to a JSON object");
+        };
+        for (key, value) in given {
+            if matches.value_source(&key) == Some(clap::parser::ValueSource::CommandLine) {
+                merged.insert(key, value);
+            }
+        }
+        serde_json::from_value(serde_json::Value::Object(merged))
+            .expect("a merge of two TrainConfigs is a TrainConfig")
+    }
+
     /// First iteration of the environment/material warm-up.
     pub fn material_stage_start(&self) -> u32 {
         (self.geometry_stage_end * self.iterations as f64).round() as u32
@@ -292,6 +389,52 @@ mod tests {
         assert_eq!(e.key, "lr_albedo");
         let e = TrainConfig::from_json(r#"{"iterations": 0}"#).unwrap_err();
         assert_eq!(e.key, "iterations");
+    }
+
+    /// The command line's flags are the config's fields with their defaults; a flag given
+    /// overrides the file, one not given leaves it.
+    #[test]
+    fn flags_override_the_file_and_defaults_are_the_structs() {
+        #[derive(clap::Parser)]
+        struct Cli {
+            #[command(flatten)]
+            config: TrainConfig,
+        }
+        use clap::{CommandFactory, FromArgMatches};
+        let parse = |args: &[&str]| {
+            let matches = Cli::command().try_get_matches_from(args).unwrap();
+            let cli = Cli::from_arg_matches(&matches).unwrap();
+            (cli.config, matches)
+        };
+        let (flags, matches) = parse(&["phygap"]);
+        assert_eq!(flags, TrainConfig::default(), "defaults are the struct's");
+        let file = TrainConfig::from_json(r#"{"iterations": 300, "lr_albedo": 0.5}"#).unwrap();
+        assert_eq!(file.overridden_by(&flags, &matches), file);
+        let (flags, matches) = parse(&[
+            "phygap",
+            "--iterations",
+            "900",
+            "--gridmap",
+            "off",
+            "--mode",
+            "rgb",
+            "--lambda-stokes",
+            "3",
+        ]);
+        let merged = file.overridden_by(&flags, &matches);
+        assert_eq!(
+            (
+                merged.iterations,
+                merged.gridmap,
+                merged.mode,
+                merged.lambda_stokes
+            ),
+            (900, false, Mode::Rgb, 3.0)
+        );
+        assert_eq!(merged.lr_albedo, 0.5, "kept from the file");
+        assert!(Cli::command()
+            .try_get_matches_from(["phygap", "--gridmap", "maybe"])
+            .is_err());
     }
 
     #[test]

@@ -12,9 +12,9 @@ mod render;
 mod synth;
 mod train;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Subcommand};
 
-#[derive(Parser)]
+#[derive(clap::Parser)]
 #[command(
     name = "phygap",
     version,
@@ -71,10 +71,17 @@ fn override_gridmap(model: &mut phygap::model::Model, switch: Option<Switch>) {
     }
 }
 
-fn run(command: Command) -> anyhow::Result<()> {
+/// Runs `command`; `matches` are the command line's (the training settings need to know which
+/// flags were given, to override a config file with those only).
+fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {
     match command {
         Command::Inspect(args) => inspect::run(&args),
-        Command::Train(args) => train::run(&args),
+        Command::Train(args) => {
+            let train_matches = matches
+                .subcommand_matches("train")
+                .expect("the train subcommand's matches");
+            train::run(&args, train_matches)
+        }
         Command::Render(args) => render::run(&args),
         Command::Eval(args) => eval::run(&args),
         Command::Relight(args) => relight::run(&args),
@@ -104,7 +111,9 @@ fn main() {
         .with_span_events(tracing_subscriber::fmt::format::FmtSpan::CLOSE)
         .init();
     // Errors are printed as one line (with their causes), never as a debug dump or backtrace.
-    if let Err(e) = run(Cli::parse().command) {
+    let matches = Cli::command().get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
+    if let Err(e) = run(cli.command, &matches) {
         eprintln!("error: {e:#}");
         std::process::exit(1);
     }

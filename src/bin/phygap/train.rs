@@ -10,11 +10,9 @@ use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use phygap::capture;
-use phygap::config::{BackendChoice, Mode, TrainConfig};
+use phygap::config::TrainConfig;
 use phygap::events::TrainEvent;
 use phygap::train::{self, TrainOutcome};
-
-use crate::Switch;
 
 #[derive(Args, Debug)]
 pub struct TrainArgs {
@@ -23,21 +21,6 @@ pub struct TrainArgs {
     /// Model folder to write.
     #[arg(long)]
     pub out: PathBuf,
-    /// Optimization steps (default 6000).
-    #[arg(long)]
-    pub iterations: Option<u32>,
-    /// Measurement used for the loss (default: chosen from the capture).
-    #[arg(long, value_enum)]
-    pub mode: Option<Mode>,
-    /// Compute backend.
-    #[arg(long, value_enum)]
-    pub backend: Option<BackendChoice>,
-    /// Seed of every random choice.
-    #[arg(long)]
-    pub seed: Option<u64>,
-    /// GridMap self-occlusion-aware lighting in the PolarDR stage (default on).
-    #[arg(long, value_enum)]
-    pub gridmap: Option<Switch>,
     /// JSON file with any training settings (keys: the long flag names in snake_case; see
     /// `phygap config`). Flags given on the command line override it.
     #[arg(long)]
@@ -45,6 +28,9 @@ pub struct TrainArgs {
     /// Continue from the model folder's last checkpoint.
     #[arg(long)]
     pub resume: bool,
+    /// Every training setting, as a flag.
+    #[command(flatten)]
+    pub settings: TrainConfig,
 }
 
 /// The defaults, overridden by the config file at `path` when given.
@@ -60,31 +46,16 @@ pub fn read_config(path: Option<&std::path::Path>) -> Result<TrainConfig> {
 }
 
 impl TrainArgs {
-    /// Defaults, then the config file, then the flags.
-    pub fn config(&self) -> Result<TrainConfig> {
-        let mut config = read_config(self.config.as_deref())?;
-        if let Some(v) = self.iterations {
-            config.iterations = v;
-        }
-        if let Some(v) = self.mode {
-            config.mode = v;
-        }
-        if let Some(v) = self.backend {
-            config.backend = v;
-        }
-        if let Some(v) = self.seed {
-            config.seed = v;
-        }
-        if let Some(v) = self.gridmap {
-            config.gridmap = v == Switch::On;
-        }
+    /// Defaults, then the config file, then the flags given on the command line (`matches`).
+    pub fn config(&self, matches: &clap::ArgMatches) -> Result<TrainConfig> {
+        let config = read_config(self.config.as_deref())?.overridden_by(&self.settings, matches);
         config.validate()?;
         Ok(config)
     }
 }
 
-pub fn run(args: &TrainArgs) -> Result<()> {
-    let config = args.config()?;
+pub fn run(args: &TrainArgs, matches: &clap::ArgMatches) -> Result<()> {
+    let config = args.config(matches)?;
     let capture = capture::load(&args.capture)?;
     for warning in &capture.warnings {
         eprintln!("warning: {warning}");

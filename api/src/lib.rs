@@ -14,6 +14,7 @@ pub mod auth;
 pub mod cli;
 pub mod core_pipeline;
 pub mod error;
+pub mod material_mesh;
 pub mod metrics;
 pub mod openapi;
 pub mod pipeline;

@@ -5,6 +5,7 @@ mod artifacts;
 mod captures;
 mod health;
 mod jobs;
+mod viewer;
 
 use axum::extract::DefaultBodyLimit;
 use axum::http::Method;
@@ -84,6 +85,18 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
             "/v1/jobs/{id}/artifacts/{*name}",
             true,
             get(artifacts::download),
+        ),
+        entry(
+            Method::GET,
+            "/v1/jobs/{id}/material-mesh",
+            true,
+            get(viewer::material_mesh),
+        ),
+        entry(
+            Method::GET,
+            "/v1/jobs/{id}/ground-truth/{kind}/{view}",
+            true,
+            get(viewer::ground_truth),
         ),
     ]
 }

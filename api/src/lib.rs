@@ -21,6 +21,7 @@ pub mod pipeline;
 pub mod queue;
 pub mod routes;
 pub mod store;
+pub mod web;
 
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};

@@ -117,6 +117,7 @@ pub fn router(state: AppState) -> Router {
         crate::auth::require_token,
     ));
     open.merge(protected)
+        .merge(crate::web::router())
         .fallback(not_found_fallback)
         .method_not_allowed_fallback(method_not_allowed_fallback)
         .layer(axum::middleware::from_fn_with_state(

@@ -97,9 +97,14 @@ fn srgb_level(linear: f64) -> f64 {
 }
 
 /// `mesh.ply` and `surfels.ply` (their bytes) → the material mesh's PLY bytes.
-pub fn material_mesh_ply(mesh_ply: &[u8], surfels_ply: &[u8]) -> Result<Vec<u8>, MaterialMeshError> {
+pub fn material_mesh_ply(
+    mesh_ply: &[u8],
+    surfels_ply: &[u8],
+) -> Result<Vec<u8>, MaterialMeshError> {
     let mesh = parse_ply(mesh_ply).map_err(MaterialMeshError::Mesh)?;
-    let vertex = mesh.require_element("vertex").map_err(MaterialMeshError::Mesh)?;
+    let vertex = mesh
+        .require_element("vertex")
+        .map_err(MaterialMeshError::Mesh)?;
     let column = |name: &str| vertex.require_scalar(name).map_err(MaterialMeshError::Mesh);
     let (x, y, z) = (column("x")?, column("y")?, column("z")?);
     let points: Vec<DVec3> = (0..vertex.count)
@@ -114,7 +119,11 @@ pub fn material_mesh_ply(mesh_ply: &[u8], surfels_ply: &[u8]) -> Result<Vec<u8>,
         .with_scalar("x", ScalarType::F32, x.to_vec())
         .with_scalar("y", ScalarType::F32, y.to_vec())
         .with_scalar("z", ScalarType::F32, z.to_vec());
-    if let (Some(nx), Some(ny), Some(nz)) = (vertex.scalar("nx"), vertex.scalar("ny"), vertex.scalar("nz")) {
+    if let (Some(nx), Some(ny), Some(nz)) = (
+        vertex.scalar("nx"),
+        vertex.scalar("ny"),
+        vertex.scalar("nz"),
+    ) {
         out_vertex = out_vertex
             .with_scalar("nx", ScalarType::F32, nx.to_vec())
             .with_scalar("ny", ScalarType::F32, ny.to_vec())
@@ -125,8 +134,16 @@ pub fn material_mesh_ply(mesh_ply: &[u8], surfels_ply: &[u8]) -> Result<Vec<u8>,
         out_vertex = out_vertex.with_scalar(name, ScalarType::U8, levels);
     }
     out_vertex = out_vertex
-        .with_scalar("roughness", ScalarType::F32, materials.iter().map(|m| m.roughness).collect())
-        .with_scalar("ior", ScalarType::F32, materials.iter().map(|m| m.ior).collect());
+        .with_scalar(
+            "roughness",
+            ScalarType::F32,
+            materials.iter().map(|m| m.roughness).collect(),
+        )
+        .with_scalar(
+            "ior",
+            ScalarType::F32,
+            materials.iter().map(|m| m.ior).collect(),
+        );
     let mut elements = vec![out_vertex];
     if let Some(face) = mesh.element("face") {
         let polygons = face
@@ -143,7 +160,9 @@ pub fn material_mesh_ply(mesh_ply: &[u8], surfels_ply: &[u8]) -> Result<Vec<u8>,
     }
     let ply = Ply {
         format: PlyFormat::BinaryLittleEndian,
-        comments: vec!["phygap mesh with learned materials (albedo as sRGB colour, roughness, ior)".into()],
+        comments: vec![
+            "phygap mesh with learned materials (albedo as sRGB colour, roughness, ior)".into(),
+        ],
         elements,
     };
     to_binary_le(&ply).map_err(MaterialMeshError::Write)
@@ -173,24 +192,59 @@ mod tests {
         let mut surfels = Vec::new();
         for k in 0..10 {
             let jitter = DVec3::new(0.0, 0.01 * k as f64, 0.0);
-            surfels.push(surfel(DVec3::new(-1.0, 0.0, 0.0) + jitter, DVec3::new(0.8, 0.1, 0.1), 0.9, 1.4, 0.95));
-            surfels.push(surfel(DVec3::new(1.0, 0.0, 0.0) + jitter, DVec3::new(0.1, 0.1, 0.8), 0.1, 2.0, 0.95));
+            surfels.push(surfel(
+                DVec3::new(-1.0, 0.0, 0.0) + jitter,
+                DVec3::new(0.8, 0.1, 0.1),
+                0.9,
+                1.4,
+                0.95,
+            ));
+            surfels.push(surfel(
+                DVec3::new(1.0, 0.0, 0.0) + jitter,
+                DVec3::new(0.1, 0.1, 0.8),
+                0.1,
+                2.0,
+                0.95,
+            ));
         }
-        surfels.push(surfel(DVec3::new(-1.0, 0.0, 0.0), DVec3::new(0.0, 1.0, 0.0), 0.5, 1.7, 0.05));
+        surfels.push(surfel(
+            DVec3::new(-1.0, 0.0, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+            0.5,
+            1.7,
+            0.05,
+        ));
         let points = [DVec3::new(-1.0, 0.0, 0.0), DVec3::new(1.0, 0.05, 0.0)];
         let m = transfer_materials(&points, &surfels).unwrap();
-        assert!((m[0].albedo - DVec3::new(0.8, 0.1, 0.1)).length() < 1e-9, "{:?}", m[0]);
+        assert!(
+            (m[0].albedo - DVec3::new(0.8, 0.1, 0.1)).length() < 1e-9,
+            "{:?}",
+            m[0]
+        );
         assert!((m[0].roughness - 0.9).abs() < 1e-9 && (m[0].ior - 1.4).abs() < 1e-9);
-        assert!((m[1].albedo - DVec3::new(0.1, 0.1, 0.8)).length() < 1e-9, "{:?}", m[1]);
+        assert!(
+            (m[1].albedo - DVec3::new(0.1, 0.1, 0.8)).length() < 1e-9,
+            "{:?}",
+            m[1]
+        );
         assert!((m[1].roughness - 0.1).abs() < 1e-9 && (m[1].ior - 2.0).abs() < 1e-9);
-        assert!(matches!(transfer_materials(&points, &[]), Err(MaterialMeshError::NoSurfels)));
+        assert!(matches!(
+            transfer_materials(&points, &[]),
+            Err(MaterialMeshError::NoSurfels)
+        ));
     }
 
     #[test]
     fn garbage_inputs_are_errors_not_panics() {
-        assert!(matches!(material_mesh_ply(b"not a ply", b"ply\n"), Err(MaterialMeshError::Mesh(_))));
+        assert!(matches!(
+            material_mesh_ply(b"not a ply", b"ply\n"),
+            Err(MaterialMeshError::Mesh(_))
+        ));
         let triangle = b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
 property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-        assert!(matches!(material_mesh_ply(triangle, b"junk"), Err(MaterialMeshError::Surfels(_))));
+        assert!(matches!(
+            material_mesh_ply(triangle, b"junk"),
+            Err(MaterialMeshError::Surfels(_))
+        ));
     }
 }

@@ -35,7 +35,10 @@ fn asset(name: &str) -> Response {
     match DIST.get_file(name) {
         Some(file) => (
             [
-                (header::CONTENT_TYPE, HeaderValue::from_static(content_type(name))),
+                (
+                    header::CONTENT_TYPE,
+                    HeaderValue::from_static(content_type(name)),
+                ),
                 // The files change with the binary, not their names: revalidate every time.
                 (header::CACHE_CONTROL, HeaderValue::from_static("no-cache")),
             ],

@@ -128,7 +128,10 @@ fn captured_preview(view: &View, kind: &str) -> Result<(Image, bool), String> {
             };
             Ok((masked(&grey), false))
         }
-        _ => Err(format!("{} has no full Stokes measurement, so no {kind}", view.name)),
+        _ => Err(format!(
+            "{} has no full Stokes measurement, so no {kind}",
+            view.name
+        )),
     }
 }
 

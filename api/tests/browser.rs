@@ -111,7 +111,10 @@ async fn assert_canvas_draws(session: &Session, css: &str) {
         stats["distinct"].as_u64().unwrap() > 200,
         "the canvas shows a shaded object over an environment, not a flat fill: {stats}"
     );
-    assert!(stats["centre"].as_f64().unwrap() > 5.0, "the centre is lit: {stats}");
+    assert!(
+        stats["centre"].as_f64().unwrap() > 5.0,
+        "the centre is lit: {stats}"
+    );
 }
 
 async fn screenshot(session: &Session, dir: &Option<PathBuf>, name: &str) {
@@ -169,15 +172,25 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
     session.goto(&format!("{base}/")).await;
     // The first API call is refused (401): the page asks for the token once.
     session
-        .wait_for("the token dialog", "return document.querySelector('#token-dialog').open", WAIT)
+        .wait_for(
+            "the token dialog",
+            "return document.querySelector('#token-dialog').open",
+            WAIT,
+        )
         .await;
     session.type_into("#token-dialog input", TOKEN).await;
     session.click("#token-dialog button").await;
     session
-        .wait_for("the job list", "return document.querySelector('#job-list p')?.textContent", WAIT)
+        .wait_for(
+            "the job list",
+            "return document.querySelector('#job-list p')?.textContent",
+            WAIT,
+        )
         .await;
 
-    session.type_into("#capture-file", broken.to_str().unwrap()).await;
+    session
+        .type_into("#capture-file", broken.to_str().unwrap())
+        .await;
     let problems = session
         .wait_for(
             "the validation report",
@@ -185,23 +198,49 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
             WAIT,
         )
         .await;
-    let problems: Vec<&str> = problems.as_array().unwrap().iter().map(|p| p.as_str().unwrap()).collect();
-    assert!(problems.len() > 1, "every problem on its own line: {problems:?}");
-    assert!(problems[0].starts_with("frame 0") && problems[0].contains("missing file"), "{problems:?}");
+    let problems: Vec<&str> = problems
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p.as_str().unwrap())
+        .collect();
+    assert!(
+        problems.len() > 1,
+        "every problem on its own line: {problems:?}"
+    );
+    assert!(
+        problems[0].starts_with("frame 0") && problems[0].contains("missing file"),
+        "{problems:?}"
+    );
 
-    session.type_into("#capture-file", good.to_str().unwrap()).await;
+    session
+        .type_into("#capture-file", good.to_str().unwrap())
+        .await;
     let accepted = session
-        .wait_for("the accepted capture", "return document.querySelector('#upload-report .accepted')?.textContent", WAIT)
+        .wait_for(
+            "the accepted capture",
+            "return document.querySelector('#upload-report .accepted')?.textContent",
+            WAIT,
+        )
         .await;
     let views = format!("{} views", scenario.views);
     assert!(accepted.as_str().unwrap().contains(&views), "{accepted}");
-    let progress = session.script("return document.querySelector('#upload-progress').value", json!([])).await;
+    let progress = session
+        .script(
+            "return document.querySelector('#upload-progress').value",
+            json!([]),
+        )
+        .await;
     assert_eq!(progress, json!(1), "the upload bar ends full");
 
     let iterations = scenario.iterations.to_string();
-    session.type_into("#job-form input[name=iterations]", &iterations).await;
+    session
+        .type_into("#job-form input[name=iterations]", &iterations)
+        .await;
     if !scenario.extra.is_empty() {
-        session.type_into("#job-form textarea[name=extra]", scenario.extra).await;
+        session
+            .type_into("#job-form textarea[name=extra]", scenario.extra)
+            .await;
     }
     if !scenario.gridmap {
         session.click("#job-form input[name=gridmap]").await;
@@ -210,44 +249,78 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
     let message = session
         .wait_for("the queued job", "const m = document.querySelector('#job-message').textContent; return m.startsWith('Job ') ? m : null", WAIT)
         .await;
-    let job_id = message.as_str().unwrap().split(' ').nth(1).unwrap().to_string();
-    let state = session.wait_for("the job's end", &card_state_script(&job_id), scenario.training).await;
+    let job_id = message
+        .as_str()
+        .unwrap()
+        .split(' ')
+        .nth(1)
+        .unwrap()
+        .to_string();
+    let state = session
+        .wait_for(
+            "the job's end",
+            &card_state_script(&job_id),
+            scenario.training,
+        )
+        .await;
     assert_eq!(state, "succeeded");
     let stats = session
         .text(&format!("article.job[data-job-id=\"{job_id}\"] .job-stats"))
         .await;
     let done = format!("iteration {iterations} / {iterations}");
-    assert!(stats.contains(&done) && stats.contains("test PSNR"), "{stats}");
+    assert!(
+        stats.contains(&done) && stats.contains("test PSNR"),
+        "{stats}"
+    );
     let (_, job) = {
         let response = t.get_with_token(&format!("/v1/jobs/{job_id}"), TOKEN).await;
         status_and_json(response).await
     };
-    assert_eq!(job["config"]["gridmap"], scenario.gridmap, "the form's settings reached the job: {job}");
+    assert_eq!(
+        job["config"]["gridmap"], scenario.gridmap,
+        "the form's settings reached the job: {job}"
+    );
     screenshot(&session, &screenshots, "web-jobs.png").await;
 
     // The result viewer.
     session.goto(&format!("{base}/#/jobs/{job_id}")).await;
     session
-        .wait_for("the viewer", "return document.querySelector('#viewer-canvas')?.dataset.ready", WAIT)
-        .await;
-    assert_canvas_draws(&session, "#viewer-canvas").await;
-    let images = session
         .wait_for(
-            "the captured views and renders",
-            "const imgs = [...document.querySelectorAll('#comparisons img')];\
-             return imgs.length >= 6 && imgs.every(i => i.complete && i.naturalWidth > 0) ? imgs.length : null",
+            "the viewer",
+            "return document.querySelector('#viewer-canvas')?.dataset.ready",
             WAIT,
         )
         .await;
-    assert_eq!(images, json!(6 * scenario.test_views), "per test view: (S0, DoLP, AoLP) × (captured, rendered)");
+    assert_canvas_draws(&session, "#viewer-canvas").await;
+    // Per test view: (S0, DoLP, AoLP) × (captured, rendered), every one decoded.
+    let expected = 6 * scenario.test_views;
+    session
+        .wait_for(
+            "the captured views and renders",
+            &format!(
+                "const imgs = [...document.querySelectorAll('#comparisons img')];\
+                 return imgs.length === {expected} && imgs.every(i => i.complete && i.naturalWidth > 0)"
+            ),
+            WAIT,
+        )
+        .await;
     let facts = session.text(".facts").await;
-    assert!(facts.contains("roughness") && facts.contains("IoR") && facts.contains("Polarizer angles"), "{facts}");
+    assert!(
+        facts.contains("roughness") && facts.contains("IoR") && facts.contains("Polarizer angles"),
+        "{facts}"
+    );
     screenshot(&session, &screenshots, "web-viewer.png").await;
 
     // Relighting from the page.
-    session.goto(&format!("{base}/#/jobs/{job_id}/relight")).await;
     session
-        .wait_for("the relight preview", "return document.querySelector('#relight-canvas')?.dataset.ready", WAIT)
+        .goto(&format!("{base}/#/jobs/{job_id}/relight"))
+        .await;
+    session
+        .wait_for(
+            "the relight preview",
+            "return document.querySelector('#relight-canvas')?.dataset.ready",
+            WAIT,
+        )
         .await;
     session.click("#relight-form button[type=submit]").await;
     session
@@ -265,12 +338,22 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
     session.set_window_size(390, 844).await;
     session.goto(&format!("{base}/#/jobs/{job_id}")).await;
     session
-        .wait_for("the viewer on a phone", "return document.querySelector('#viewer-canvas')?.dataset.ready", WAIT)
+        .wait_for(
+            "the viewer on a phone",
+            "return document.querySelector('#viewer-canvas')?.dataset.ready",
+            WAIT,
+        )
         .await;
     let widths: Value = session
-        .script("return [document.documentElement.scrollWidth, window.innerWidth]", json!([]))
+        .script(
+            "return [document.documentElement.scrollWidth, window.innerWidth]",
+            json!([]),
+        )
         .await;
-    assert!(widths[0].as_u64() <= widths[1].as_u64(), "no horizontal scrolling: {widths}");
+    assert!(
+        widths[0].as_u64() <= widths[1].as_u64(),
+        "no horizontal scrolling: {widths}"
+    );
     assert_canvas_draws(&session, "#viewer-canvas").await;
     screenshot(&session, &screenshots, "web-phone.png").await;
 

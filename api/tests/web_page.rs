@@ -13,7 +13,10 @@ async fn the_page_is_served_from_the_binary() {
     assert_eq!(page.status(), 200);
     assert_eq!(page.headers()["content-type"], "text/html; charset=utf-8");
     let html = page.text().await.unwrap();
-    assert!(html.contains("/assets/app.js") && html.contains("/assets/app.css"), "{html}");
+    assert!(
+        html.contains("/assets/app.js") && html.contains("/assets/app.css"),
+        "{html}"
+    );
     for (path, content_type, min_size) in [
         ("/assets/app.js", "text/javascript; charset=utf-8", 100_000),
         ("/assets/app.css", "text/css; charset=utf-8", 1_000),
@@ -32,7 +35,12 @@ async fn the_page_is_served_from_the_binary() {
     assert_eq!(status, 401);
     // Every embedded file is one build.sh makes.
     let files = phygap_api::web::files();
-    for expected in ["index.html", "assets/app.js", "assets/app.css", "assets/envmaps/sky.hdr"] {
+    for expected in [
+        "index.html",
+        "assets/app.js",
+        "assets/app.css",
+        "assets/envmaps/sky.hdr",
+    ] {
         assert!(files.contains(&expected), "{expected} in {files:?}");
     }
     t.server.shutdown().await;

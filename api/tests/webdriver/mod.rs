@@ -38,9 +38,13 @@ impl Browser {
     }
 }
 
-/// A chromedriver process (killed on drop) and one browser session in it.
+/// A chromedriver process and one browser session in it; dropping it (also when a test panics)
+/// closes the browser, then stops chromedriver.
 pub struct Session {
     driver: Child,
+    port: u16,
+    /// `/session/ID` once the session exists.
+    path: String,
     base: String,
     http: reqwest::Client,
     _profile: tempfile::TempDir,
@@ -48,6 +52,21 @@ pub struct Session {
 
 impl Drop for Session {
     fn drop(&mut self) {
+        // A killed chromedriver leaves its browser running, so the session is deleted first, with
+        // a plain blocking request (no async runtime is guaranteed here).
+        if !self.path.is_empty() {
+            use std::io::{Read, Write};
+            if let Ok(mut stream) = std::net::TcpStream::connect(("127.0.0.1", self.port)) {
+                let _ = stream.set_read_timeout(Some(Duration::from_secs(10)));
+                let request = format!(
+                    "DELETE {} HTTP/1.1\r\nHost: 127.0.0.1:{}\r\nContent-Length: 0\r\nConnection: close\r\n\r\n",
+                    self.path, self.port
+                );
+                if stream.write_all(request.as_bytes()).is_ok() {
+                    let _ = stream.read_to_end(&mut Vec::new());
+                }
+            }
+        }
         let _ = self.driver.kill();
         let _ = self.driver.wait();
     }
@@ -75,6 +94,8 @@ impl Session {
         let profile = tempfile::tempdir().unwrap();
         let mut session = Session {
             driver,
+            port,
+            path: String::new(),
             base: format!("http://127.0.0.1:{port}"),
             http: reqwest::Client::builder()
                 .timeout(Duration::from_secs(120))
@@ -84,7 +105,11 @@ impl Session {
         };
         let deadline = Instant::now() + Duration::from_secs(30);
         loop {
-            let ready = session.http.get(format!("{}/status", session.base)).send().await;
+            let ready = session
+                .http
+                .get(format!("{}/status", session.base))
+                .send()
+                .await;
             if let Ok(r) = ready {
                 let status: Value = r.json().await.unwrap_or(Value::Null);
                 if status["value"]["ready"] == true {
@@ -116,18 +141,23 @@ impl Session {
                 "goog:loggingPrefs": {"browser": "ALL"},
             }}
         });
-        let answer = session.call(reqwest::Method::POST, "/session", capabilities).await;
+        let answer = session
+            .call(reqwest::Method::POST, "/session", capabilities)
+            .await;
         let id = answer["sessionId"]
             .as_str()
             .unwrap_or_else(|| panic!("no session: {answer}"))
             .to_string();
-        session.base = format!("{}/session/{id}", session.base);
+        session.path = format!("/session/{id}");
+        session.base = format!("{}{}", session.base, session.path);
         session
     }
 
     /// One WebDriver command; panics on a WebDriver error. Returns `value`.
     async fn call(&self, method: reqwest::Method, path: &str, body: Value) -> Value {
-        let mut request = self.http.request(method.clone(), format!("{}{path}", self.base));
+        let mut request = self
+            .http
+            .request(method.clone(), format!("{}{path}", self.base));
         if method != reqwest::Method::GET {
             request = request.json(&body);
         }
@@ -139,7 +169,8 @@ impl Session {
     }
 
     pub async fn goto(&self, url: &str) {
-        self.call(reqwest::Method::POST, "/url", json!({ "url": url })).await;
+        self.call(reqwest::Method::POST, "/url", json!({ "url": url }))
+            .await;
     }
 
     pub async fn set_window_size(&self, width: u32, height: u32) {
@@ -175,7 +206,8 @@ impl Session {
             assert!(
                 Instant::now() < deadline,
                 "timed out waiting for {what}; page text: {}",
-                self.script("return document.body.innerText", json!([])).await
+                self.script("return document.body.innerText", json!([]))
+                    .await
             );
             tokio::time::sleep(Duration::from_millis(200)).await;
         }
@@ -230,8 +262,36 @@ impl Session {
         .to_string()
     }
 
-    /// A PNG of the viewport, written to `path`.
+    /// A PNG of the whole page (the window grown to the page's height, at most 2400 px, then
+    /// restored), written to `path`.
     pub async fn screenshot(&self, path: &Path) {
+        let size = self
+            .script(
+                "return [window.outerWidth, window.outerHeight, document.documentElement.scrollHeight]",
+                json!([]),
+            )
+            .await;
+        let number = |i: usize| size[i].as_u64().unwrap_or(0) as u32;
+        let (width, height, page) = (number(0), number(1), number(2));
+        self.set_window_size(
+            width,
+            (page + height.saturating_sub(self.viewport_height().await)).min(2400),
+        )
+        .await;
+        tokio::time::sleep(Duration::from_millis(800)).await;
+        self.viewport_screenshot(path).await;
+        self.set_window_size(width, height).await;
+    }
+
+    async fn viewport_height(&self) -> u32 {
+        self.script("return window.innerHeight", json!([]))
+            .await
+            .as_u64()
+            .unwrap_or(0) as u32
+    }
+
+    /// A PNG of the viewport, written to `path`.
+    pub async fn viewport_screenshot(&self, path: &Path) {
         let value = self
             .call(reqwest::Method::GET, "/screenshot", Value::Null)
             .await;

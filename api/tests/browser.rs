@@ -282,6 +282,41 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
     );
     screenshot(&session, &screenshots, "web-jobs.png").await;
 
+    // A long job, cancelled from its card while it runs.
+    session
+        .script(
+            "document.querySelector('#job-form input[name=iterations]').value = '100000'",
+            json!([]),
+        )
+        .await;
+    session.click("#job-form button[type=submit]").await;
+    let long_id = session
+        .wait_for(
+            "the long job",
+            &format!(
+                "const m = document.querySelector('#job-message').textContent;\
+                 return m.startsWith('Job ') && !m.includes('{job_id}') ? m.split(' ')[1] : null"
+            ),
+            WAIT,
+        )
+        .await;
+    let long_id = long_id.as_str().unwrap();
+    let card = format!("article.job[data-job-id=\"{long_id}\"]");
+    session
+        .wait_for(
+            "the long job running",
+            &format!(
+                "return document.querySelector('{card} .job-state')?.textContent === 'running'"
+            ),
+            WAIT,
+        )
+        .await;
+    session.click(&format!("{card} .cancel")).await;
+    let state = session
+        .wait_for("the cancel", &card_state_script(long_id), WAIT)
+        .await;
+    assert_eq!(state, "cancelled");
+
     // The result viewer.
     session.goto(&format!("{base}/#/jobs/{job_id}")).await;
     session

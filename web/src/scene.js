@@ -126,7 +126,7 @@ export class ModelView {
     const sphere = new THREE.Box3().setFromObject(this.mesh).getBoundingSphere(new THREE.Sphere());
     const distance = (sphere.radius / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2))) * 1.15;
     this.controls.target.copy(sphere.center);
-    this.camera.position.copy(sphere.center).add(new THREE.Vector3(0, 0.35, 1).normalize().multiplyScalar(distance));
+    this.camera.position.copy(sphere.center).add(new THREE.Vector3(1, 0.45, 1).normalize().multiplyScalar(distance));
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
     this.camera.updateProjectionMatrix();

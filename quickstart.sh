@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job in one command: build everything, render a sample capture with the project's own
 # renderer, start the reconstruction service (embedded SQLite store under ./phygap-data), upload the
-# capture, train it, and list the results. The service keeps running afterwards (Ctrl-C stops it).
+# capture, train it, and list the results. The service keeps running afterwards (Ctrl-C stops it),
+# and its web page (the jobs, the reconstructed object in 3D, relighting) is at the address printed last.
 #
 # Settings (environment): PHYGAP_PORT (8080), PHYGAP_DATA_DIR (./phygap-data),
 # PHYGAP_QUICKSTART_ITERATIONS (default: the default training schedule's).
@@ -55,4 +56,6 @@ echo "service running at $base (data in $data); fetch e.g.:"
 echo "  curl -o mesh.ply $base/v1/jobs/$job/artifacts/mesh.ply"
 echo "  curl -o envmap.exr $base/v1/jobs/$job/artifacts/envmap.exr"
 echo "Ctrl-C stops it."
+echo
+echo "Open the web page to see the reconstructed object: $base/#/jobs/$job"
 wait "$server"

@@ -1,5 +1,5 @@
 //! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
-//! EXR), the extracted mesh (`mesh.ply`), configuration, metrics, and S0/normal/albedo renders of
+//! EXR), the extracted mesh (`mesh.ply`), configuration, metrics, and S0/normal/albedo/DoLP/AoLP renders of
 //! the capture's test views. This is what the service publishes as a job's artifacts and what
 //! `phygap export` writes.
 
@@ -41,8 +41,8 @@ const COPIED: [&str; 5] = [
 /// The mesh written into the export folder.
 pub const MESH_FILE: &str = "mesh.ply";
 
-/// Kinds rendered for every test camera.
-const RENDERED: [&str; 3] = ["s0", "normal", "albedo"];
+/// Kinds rendered for every test camera (DoLP and AoLP: the polarization the model predicts).
+const RENDERED: [&str; 5] = ["s0", "normal", "albedo", "dolp", "aolp"];
 
 /// Writes the deliverables of `model_dir` into `out_dir` (created if needed); returns the files.
 pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportError> {

@@ -19,6 +19,7 @@ pub mod bucket;
 pub mod cli;
 pub mod core_pipeline;
 pub mod error;
+pub mod material_mesh;
 pub mod metrics;
 pub mod openapi;
 pub mod pipeline;
@@ -26,6 +27,7 @@ pub mod purge;
 pub mod queue;
 pub mod routes;
 pub mod store;
+pub mod web;
 
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};

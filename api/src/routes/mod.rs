@@ -5,6 +5,7 @@ mod artifacts;
 mod captures;
 mod health;
 mod jobs;
+mod viewer;
 
 use axum::extract::DefaultBodyLimit;
 use axum::http::Method;
@@ -86,12 +87,24 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
             true,
             get(artifacts::download),
         ),
+        entry(
+            Method::GET,
+            "/v1/jobs/{id}/material-mesh",
+            true,
+            get(viewer::material_mesh),
+        ),
+        entry(
+            Method::GET,
+            "/v1/jobs/{id}/ground-truth/{kind}/{view}",
+            true,
+            get(viewer::ground_truth),
+        ),
     ]
 }
 
 /// The complete application: routes, auth on `/v1` and `/metrics`, JSON fallbacks, HTTP
-/// metrics, panic guard. A worker process (`config.api` false) serves only `/healthz` and
-/// `/metrics`.
+/// metrics, panic guard, and the web page at `/`. A worker process (`config.api` false) serves
+/// only `/healthz` and `/metrics`.
 pub fn router(state: AppState) -> Router {
     let mut open = Router::new();
     let mut protected = Router::new();
@@ -106,16 +119,20 @@ pub fn router(state: AppState) -> Router {
             open = open.route(route.path, route.handler);
         }
     }
-    open.merge(protected.route_layer(axum::middleware::from_fn_with_state(
+    open = open.merge(protected.route_layer(axum::middleware::from_fn_with_state(
         state.clone(),
         crate::auth::require_token,
-    )))
-    .fallback(not_found_fallback)
-    .method_not_allowed_fallback(method_not_allowed_fallback)
-    .layer(axum::middleware::from_fn_with_state(
-        state.clone(),
-        crate::metrics::track_http,
-    ))
-    .layer(CatchPanicLayer::custom(panic_response))
-    .with_state(state)
+    )));
+    if state.config.api {
+        // The web page, for people (a worker process serves health and metrics only).
+        open = open.merge(crate::web::router());
+    }
+    open.fallback(not_found_fallback)
+        .method_not_allowed_fallback(method_not_allowed_fallback)
+        .layer(axum::middleware::from_fn_with_state(
+            state.clone(),
+            crate::metrics::track_http,
+        ))
+        .layer(CatchPanicLayer::custom(panic_response))
+        .with_state(state)
 }

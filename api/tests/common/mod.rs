@@ -35,7 +35,7 @@ pub fn write_capture(dir: &Path) {
 }
 
 /// Every file under `dir` as (relative name, bytes), sorted.
-fn files_of(dir: &Path) -> Vec<(String, Vec<u8>)> {
+pub fn files_of(dir: &Path) -> Vec<(String, Vec<u8>)> {
     fn walk(dir: &Path, prefix: &str, out: &mut Vec<(String, Vec<u8>)>) {
         for entry in std::fs::read_dir(dir).unwrap() {
             let entry = entry.unwrap();

@@ -30,10 +30,10 @@ use rayon::prelude::*;
 use tracing::info_span;
 
 use self::tile::{
-    plane_scale, BackwardScratch, ForwardScratch, LocalGrad, PixelConsts, PixelUpstream,
-    PlaneFrame, TileOutput, TileSplat, NUM_SUMS, TILE, TILE_PIXELS,
+    BackwardScratch, ForwardScratch, LocalGrad, PixelConsts, PixelUpstream, PlaneFrame, Splat,
+    TileOutput, NUM_SUMS, TILE, TILE_PIXELS,
 };
-use super::project::{self, Projected, ProjectedGrad, ProjectionCamera};
+use super::project::{self, Projected, ProjectionCamera};
 use super::{
     begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
@@ -148,36 +148,23 @@ impl TileGrid {
             (rect[3] as usize - 1) / TILE + 1,
         ]
     }
-    /// The frame of tile `t` for a surfel of plane scale `scale`.
-    fn frame(&self, t: usize, scale: f64) -> PlaneFrame {
-        let [x0, y0, _, _] = self.bounds(t);
-        PlaneFrame {
-            scale,
-            origin: [x0 as f64 + 0.5, y0 as f64 + 0.5],
-        }
-    }
-}
-
-/// A surfel that survived projection, and its plane scale ([`tile::plane_scale`]).
-#[derive(Clone, Copy, Debug)]
-struct Visible {
-    projected: Projected,
-    scale: f64,
 }
 
 /// Visible surfels binned into tiles.
 struct Bins {
-    /// Per surfel (`None`: culled).
-    visible: Vec<Option<Visible>>,
-    visible_count: usize,
+    /// Per surfel, its projection (`None`: culled).
+    projected: Vec<Option<Projected>>,
+    /// The visible surfels in depth order (front to back, ties by index).
+    splats: Vec<Splat>,
     /// Per tile `t`, entries `tile_offsets[t]..tile_offsets[t + 1]`, front to back.
     tile_offsets: Vec<usize>,
-    /// Entry → surfel index.
+    /// Entry → index into `splats`.
     entries: Vec<u32>,
-    /// Per surfel, `surfel_entries[surfel_offsets[i]..surfel_offsets[i + 1]]` are its entries,
-    /// in tile order.
-    surfel_offsets: Vec<usize>,
-    surfel_entries: Vec<usize>,
+    /// Slots of the backward pass's per-entry gradients, grouped by surfel: surfel `i` owns
+    /// slots `surfel_slots[i]..surfel_slots[i + 1]`, one per tile it touches, in tile order.
+    surfel_slots: Vec<usize>,
+    /// Entry → its slot (a permutation of `0..entries.len()`).
+    entry_slots: Vec<usize>,
 }
 
 impl Bins {
@@ -185,15 +172,14 @@ impl Bins {
         self.tile_offsets[t]..self.tile_offsets[t + 1]
     }
 
-    /// Tile `t`'s surfels, front to back, in the tile's frame.
-    fn gather(&self, grid: &TileGrid, t: usize, buf: &mut Vec<TileSplat>) {
-        let bounds = grid.bounds(t);
+    /// Copies tile `t`'s splats, front to back, into `buf` (contiguous for the per-pixel loops;
+    /// read in increasing address order, as a tile's list follows the depth order).
+    fn gather(&self, t: usize, buf: &mut Vec<Splat>) {
         buf.clear();
         buf.extend(
             self.entries[self.tile_range(t)]
                 .iter()
-                .filter_map(|&i| self.visible[i as usize].as_ref())
-                .map(|v| TileSplat::new(&v.projected, v.scale, bounds)),
+                .map(|&r| self.splats[r as usize]),
         );
     }
 }
@@ -206,44 +192,39 @@ fn project_and_bin(
     grid: &TileGrid,
 ) -> Bins {
     let cam = ProjectionCamera::new(camera);
-    let visible: Vec<Option<Visible>> = {
+    let (projected, splats_by_index): (Vec<Option<Projected>>, Vec<Splat>) = {
         let _span = info_span!("project", surfels = surfels.len()).entered();
         (0..surfels.len())
             .into_par_iter()
             .map(|i| {
-                project::project(surfels, i, &cam, settings).map(|p| Visible {
-                    scale: plane_scale(&p.q),
-                    projected: p,
-                })
+                let p = project::project(surfels, i, &cam, settings);
+                let splat = p.as_ref().map(Splat::new).unwrap_or_default();
+                (p, splat)
             })
-            .collect()
+            .unzip()
     };
     let _span = info_span!("bin").entered();
     // Sort by centre depth; depths are > near ≥ 0, so their bit patterns order like the values.
     // Ties are broken by index: the order is deterministic.
-    let mut keys: Vec<(u64, u32)> = visible
+    let mut keys: Vec<(u64, u32)> = projected
         .iter()
         .enumerate()
-        .filter_map(|(i, v)| {
-            v.as_ref()
-                .map(|v| (v.projected.view_depth.to_bits(), i as u32))
-        })
+        .filter_map(|(i, p)| p.as_ref().map(|p| (p.view_depth.to_bits(), i as u32)))
         .collect();
     keys.par_sort_unstable();
-    let tiles_of = |i: u32| {
-        visible[i as usize]
-            .as_ref()
-            .map(|v| grid.tiles_of(v.projected.rect))
-    };
+    let splats: Vec<Splat> = keys
+        .par_iter()
+        .map(|&(_, i)| splats_by_index[i as usize])
+        .collect();
+    drop(splats_by_index);
     let mut counts = vec![0usize; grid.count() + 1];
-    let mut surfel_offsets = vec![0usize; surfels.len() + 1];
-    for &(_, i) in &keys {
-        if let Some([tx0, ty0, tx1, ty1]) = tiles_of(i) {
-            surfel_offsets[i as usize + 1] = (tx1 - tx0) * (ty1 - ty0);
-            for ty in ty0..ty1 {
-                for tx in tx0..tx1 {
-                    counts[ty * grid.nx + tx + 1] += 1;
-                }
+    let mut surfel_slots = vec![0usize; surfels.len() + 1];
+    for (&(_, i), sp) in keys.iter().zip(&splats) {
+        let [tx0, ty0, tx1, ty1] = grid.tiles_of(sp.rect);
+        surfel_slots[i as usize + 1] = (tx1 - tx0) * (ty1 - ty0);
+        for ty in ty0..ty1 {
+            for count in &mut counts[ty * grid.nx + tx0 + 1..ty * grid.nx + tx1 + 1] {
+                *count += 1;
             }
         }
     }
@@ -251,34 +232,67 @@ fn project_and_bin(
         counts[t + 1] += counts[t];
     }
     for i in 0..surfels.len() {
-        surfel_offsets[i + 1] += surfel_offsets[i];
+        surfel_slots[i + 1] += surfel_slots[i];
     }
     let offsets = counts;
     let mut cursor = offsets.clone();
     let total = offsets[grid.count()];
     let mut entries = vec![0u32; total];
-    let mut surfel_entries = vec![0usize; total];
-    for &(_, i) in &keys {
-        if let Some([tx0, ty0, tx1, ty1]) = tiles_of(i) {
-            let mut slot = surfel_offsets[i as usize];
-            for ty in ty0..ty1 {
-                for tx in tx0..tx1 {
-                    let t = ty * grid.nx + tx;
-                    entries[cursor[t]] = i;
-                    surfel_entries[slot] = cursor[t];
-                    cursor[t] += 1;
-                    slot += 1;
-                }
+    let mut entry_slots = vec![0usize; total];
+    for (rank, (&(_, i), sp)) in keys.iter().zip(&splats).enumerate() {
+        let [tx0, ty0, tx1, ty1] = grid.tiles_of(sp.rect);
+        let mut slot = surfel_slots[i as usize];
+        for ty in ty0..ty1 {
+            for tx in tx0..tx1 {
+                let t = ty * grid.nx + tx;
+                entries[cursor[t]] = rank as u32;
+                entry_slots[cursor[t]] = slot;
+                cursor[t] += 1;
+                slot += 1;
             }
         }
     }
     Bins {
-        visible_count: keys.len(),
-        visible,
+        projected,
+        splats,
         tile_offsets: offsets,
         entries,
-        surfel_offsets,
-        surfel_entries,
+        surfel_slots,
+        entry_slots,
+    }
+}
+
+/// Writes [`LocalGrad`]s into a slice from several threads at once, each thread to slots no
+/// other thread touches (the backward pass's scatter into [`Bins::entry_slots`]).
+struct SlotWriter<'a> {
+    ptr: *mut LocalGrad,
+    len: usize,
+    _slots: std::marker::PhantomData<&'a mut [LocalGrad]>,
+}
+
+// SAFETY: the writer only hands out writes through `write`, whose callers guarantee that no two
+// threads write the same slot and that nobody reads the slice while the writer lives (it borrows
+// the slice mutably for its lifetime).
+unsafe impl Sync for SlotWriter<'_> {}
+
+impl<'a> SlotWriter<'a> {
+    fn new(slots: &'a mut [LocalGrad]) -> Self {
+        SlotWriter {
+            ptr: slots.as_mut_ptr(),
+            len: slots.len(),
+            _slots: std::marker::PhantomData,
+        }
+    }
+
+    /// Writes `slot` (bounds-checked).
+    ///
+    /// # Safety
+    /// No other thread may write `slot` while this writer lives.
+    unsafe fn write(&self, slot: usize, value: LocalGrad) {
+        assert!(slot < self.len, "slot {slot} out of {}", self.len);
+        // SAFETY: in bounds (checked above) of a slice borrowed mutably for 'a; exclusive per
+        // the caller's guarantee.
+        unsafe { self.ptr.add(slot).write(value) };
     }
 }
 
@@ -377,15 +391,14 @@ impl Backend for FastBackend {
                 .map_init(
                     || (Vec::new(), ForwardScratch::default()),
                     |(list, scratch), (t, (sums, transmittance, contributors))| {
-                        bins.gather(&grid, t, list);
-                        let [x0, y0, x1, y1] = grid.bounds(t);
+                        bins.gather(t, list);
                         let out = TileOutput {
                             sums,
                             transmittance,
                             contributors,
                         };
-                        let live = (x1 - x0) * (y1 - y0);
-                        tile::forward_tile(self.path, list, live, &consts, scratch, out)
+                        let bounds = grid.bounds(t).map(|v| v as u32);
+                        tile::forward_tile(self.path, list, bounds, &consts, scratch, out)
                     },
                 )
                 .sum()
@@ -403,7 +416,7 @@ impl Backend for FastBackend {
             gb.depth_normal = depth_normals(camera, &gb.depth, &gb.alpha, eps);
         }
         let stats = RasterStats {
-            visible_surfels: bins.visible_count,
+            visible_surfels: bins.splats.len(),
             tile_entries: bins.entries.len(),
             pixel_evaluations: evaluations,
         };
@@ -449,26 +462,21 @@ impl Backend for FastBackend {
         let grid = saved.grid;
         let consts = PixelConsts::new(settings);
         let bins = &saved.bins;
-        // One gradient slot per (tile, surfel) entry; each tile writes its own slice.
-        let mut entry_grads = vec![LocalGrad::default(); bins.entries.len()];
+        // One gradient slot per (tile, surfel) entry, grouped by surfel: each tile scatters its
+        // entries' gradients to their slots, so that each surfel then reads its own contiguously.
+        let mut slot_grads = vec![LocalGrad::default(); bins.entries.len()];
         {
             let _span = info_span!("rasterize_backward").entered();
-            let mut slices: Vec<&mut [LocalGrad]> = Vec::with_capacity(grid.count());
-            let mut rest = entry_grads.as_mut_slice();
-            for t in 0..grid.count() {
-                let (head, tail) = rest.split_at_mut(bins.tile_range(t).len());
-                slices.push(head);
-                rest = tail;
-            }
-            slices.into_par_iter().enumerate().for_each_init(
-                || (Vec::new(), BackwardScratch::default()),
-                |(list, scratch), (t, out)| {
+            let slots = SlotWriter::new(&mut slot_grads);
+            (0..grid.count()).into_par_iter().for_each_init(
+                || (Vec::new(), BackwardScratch::default(), Vec::new()),
+                |(list, scratch, local), t| {
                     let base = t * TILE_PIXELS;
                     let contributors = &saved.contributors[base..base + TILE_PIXELS];
                     if contributors.iter().all(|&c| c == 0) {
                         return;
                     }
-                    bins.gather(&grid, t, list);
+                    bins.gather(t, list);
                     scratch.clear();
                     let [x0, y0, x1, y1] = grid.bounds(t);
                     for y in y0..y1 {
@@ -486,7 +494,18 @@ impl Backend for FastBackend {
                             );
                         }
                     }
-                    tile::backward_tile(self.path, list, &consts, scratch, out);
+                    local.clear();
+                    local.resize(list.len(), LocalGrad::default());
+                    let bounds = [x0, y0, x1, y1].map(|v| v as u32);
+                    tile::backward_tile(self.path, list, bounds, &consts, scratch, local);
+                    let own_slots = &bins.entry_slots[bins.tile_range(t)];
+                    for (&slot, g) in own_slots.iter().zip(local.iter()) {
+                        // SAFETY: `entry_slots` is a permutation of the entries (`project_and_bin`
+                        // hands out each slot once, to one entry) and this tile alone owns the
+                        // entries of `tile_range(t)`, so no other thread writes this slot, and
+                        // nothing reads the slots until the parallel loop has ended.
+                        unsafe { slots.write(slot, *g) };
+                    }
                 },
             );
         }
@@ -505,23 +524,20 @@ impl Backend for FastBackend {
             grads.roughness.par_iter_mut(),
             grads.ior.par_iter_mut(),
             mean2d.par_iter_mut(),
-            bins.visible.par_iter(),
+            bins.projected.par_iter(),
         )
             .into_par_iter()
             .enumerate()
-            .for_each(|(i, (pos, ls, rot, op, alb, rough, ior, m2d, v))| {
-                let Some(v) = v else {
+            .for_each(|(i, (pos, ls, rot, op, alb, rough, ior, m2d, p))| {
+                let Some(p) = p else {
                     return;
                 };
-                let mut g = ProjectedGrad::default();
-                let own = &bins.surfel_entries[bins.surfel_offsets[i]..bins.surfel_offsets[i + 1]];
-                // The entries were recorded walking the surfel's tiles in this order.
-                let [tx0, ty0, tx1, ty1] = grid.tiles_of(v.projected.rect);
-                let tiles = (ty0..ty1).flat_map(|ty| (tx0..tx1).map(move |tx| ty * grid.nx + tx));
-                for (&e, t) in own.iter().zip(tiles) {
-                    entry_grads[e].accumulate_into(&grid.frame(t, v.scale), &mut g);
+                let mut sum = LocalGrad::<f64>::default();
+                for g in &slot_grads[bins.surfel_slots[i]..bins.surfel_slots[i + 1]] {
+                    sum.add(g);
                 }
-                let r = project::project_backward(surfels, &v.projected, &cam, &g);
+                let g = sum.to_projected(&PlaneFrame::of(p));
+                let r = project::project_backward(surfels, p, &cam, &g);
                 *pos = r.position;
                 *ls = r.log_scale;
                 *rot = r.rotation;
@@ -586,5 +602,51 @@ fn pixel_upstream(
         g_sums,
         transmittance: 1.0,
         contributors: 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    /// Every entry has its own slot, among its surfel's contiguous slots.
+    #[test]
+    fn entry_slots_are_a_permutation_grouped_by_surfel() {
+        let camera = Camera::look_at(
+            70,
+            50,
+            0.8,
+            DVec3::new(0.5, -3.0, 0.6),
+            DVec3::ZERO,
+            DVec3::Z,
+        );
+        let surfels = crate::bench::shell_surfels(400, 3);
+        let settings = RasterSettings::default();
+        let grid = TileGrid::new(70, 50);
+        let bins = project_and_bin(&surfels, &camera, &settings, &grid);
+        let total = bins.entries.len();
+        assert!(total > bins.splats.len(), "some surfels span several tiles");
+        let mut seen = vec![false; total];
+        for &slot in &bins.entry_slots {
+            assert!(
+                !std::mem::replace(&mut seen[slot], true),
+                "slot {slot} twice"
+            );
+        }
+        assert_eq!(bins.surfel_slots[surfels.len()], total);
+        // Splat of each surfel index, to map entries (depth ranks) back to surfels.
+        let index_of = |sp: &Splat| {
+            (0..surfels.len())
+                .find(|&i| bins.projected[i].as_ref().map(Splat::new).as_ref() == Some(sp))
+                .unwrap()
+        };
+        for t in 0..grid.count() {
+            for e in bins.tile_range(t) {
+                let i = index_of(&bins.splats[bins.entries[e] as usize]);
+                let slot = bins.entry_slots[e];
+                assert!((bins.surfel_slots[i]..bins.surfel_slots[i + 1]).contains(&slot));
+            }
+        }
     }
 }

@@ -6,10 +6,10 @@
 //! aarch64) and, on x86-64, with AVX2 enabled; [`SimdPath`] picks one at run time. Both compute the
 //! same bits (no fused operations, see [`super::lanes`]).
 //!
-//! A tile's list holds its surfels front to back as [`TileSplat`]s: their ray–plane rows and
-//! centre are rebased on the tile's first pixel centre (in f64, before the cast to f32), so the
-//! per-pixel arithmetic works on coordinates `0..16` and small plane values, not on absolute pixel
-//! positions whose f32 products would cancel. For one surfel, each row of its (tile-clipped) pixel
+//! A tile's list holds its surfels front to back as [`Splat`]s, whose ray–plane rows and centre
+//! are rebased on the first pixel of the surfel's box (in f64, before the cast to f32, see
+//! [`PlaneFrame`]), so the per-pixel arithmetic works on offsets within the box and small plane
+//! values, not on absolute pixel positions whose f32 products would cancel. For one surfel, each row of its (tile-clipped) pixel
 //! box is walked in groups of 8 lanes starting at the box's left edge; lanes beyond the box are
 //! masked. Per-pixel state is stored tile-row-major with [`LANES`] values of padding at the end,
 //! so a group that runs past the tile's right edge reads the next row's first pixels (or the
@@ -37,53 +37,61 @@ pub const NUM_SUMS: usize = 2 + NUM_FEATURES;
 /// Per-pixel upstream gradients of the backward replay: depth, then the features.
 const NUM_PIXEL_GRADS: usize = NUM_SUMS - 1;
 
-/// One surfel's projection in one tile's frame, f32: what the per-pixel loops read.
+/// One surfel's projection as the per-pixel loops read it: f32, in the surfel's own frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct TileSplat {
-    /// Rows `(a, b, c)` of the ray–plane map: `p_k = a lx + b ly + c` at tile-local pixel
-    /// `(lx, ly)`, i.e. `λ Q` rebased on the tile's first pixel centre ([`PlaneFrame`]).
+pub struct Splat {
+    /// Rows `(a, b, c)` of the ray–plane map: `p_k = a u + b v + c` at the pixel `(u, v)` pixels
+    /// right of and below the anchor (the box's first pixel), i.e. `λ Q` rebased on the anchor's
+    /// centre ([`PlaneFrame`]).
     pub plane: [[f32; 3]; 3],
     /// `λ det(M)`: the intersection depth is `det / p_z`.
     pub det: f32,
-    /// Projected centre, tile-local.
+    /// Projected centre relative to the anchor's centre.
     pub mean: [f32; 2],
     pub opacity: f32,
     /// At most `f32::MAX`, so `ρ ≤ rho_cut` rejects `ρ = ∞`.
     pub rho_cut: f32,
     pub view_depth: f32,
     pub features: [f32; NUM_FEATURES],
-    /// Pixel box clipped to the tile, tile-local `[x0, y0, x1, y1)`; never empty.
-    pub rect: [u8; 4],
+    /// Pixel box `[x0, y0, x1, y1)` in the image, never empty; `(x0, y0)` is the anchor.
+    pub rect: [u32; 4],
 }
 
-/// How a surfel's `Q` and `det` are scaled and rebased for one tile: `λ` (a power of two, exact)
-/// brings `max |Q|` near 1 so that neither overflows nor underflows f32 (`s`, `t` and the depth
-/// are invariant under a common scale of `Q` and `det`), and the tile's first pixel centre
-/// `origin` becomes local `(0, 0)`.
+/// How a surfel's `Q` and `det` are scaled and rebased: `λ` (a power of two, exact) brings
+/// `max |Q|` near 1 so that neither overflows nor underflows f32 (`s`, `t` and the depth are
+/// invariant under a common scale of `Q` and `det`), and the anchor pixel's centre `origin`
+/// becomes `(0, 0)`, so the per-pixel products work on offsets within the surfel's box, not on
+/// absolute pixel coordinates whose f32 products would cancel.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlaneFrame {
     pub scale: f64,
     pub origin: [f64; 2],
 }
 
-/// The power of two nearest `1 / max |q|` (1 for an all-zero `q`).
-pub fn plane_scale(q: &[f64; 9]) -> f64 {
-    let largest = q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    if largest > 0.0 && largest.is_finite() {
-        2f64.powi(-(largest.log2().round() as i32))
-    } else {
-        1.0
+impl PlaneFrame {
+    /// The frame of projection `p`.
+    pub fn of(p: &Projected) -> Self {
+        let largest = p.q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        // 2^−e for the binary exponent e of the largest entry (|e| ≤ 1023 for finite values
+        // that are normal; the scale is clamped to the normal range).
+        let scale = if largest > 0.0 && largest.is_finite() {
+            let exponent = ((largest.to_bits() >> 52) & 0x7ff) as i64 - 1023;
+            f64::from_bits(((1023 - exponent).clamp(1, 2046) as u64) << 52)
+        } else {
+            1.0
+        };
+        PlaneFrame {
+            scale,
+            origin: [p.rect[0] as f64 + 0.5, p.rect[1] as f64 + 0.5],
+        }
     }
 }
 
-impl TileSplat {
-    /// `p` in the frame of the tile whose pixel bounds are `bounds` (`[x0, y0, x1, y1)`).
-    pub fn new(p: &Projected, scale: f64, bounds: [usize; 4]) -> Self {
-        let frame = PlaneFrame {
-            scale,
-            origin: [bounds[0] as f64 + 0.5, bounds[1] as f64 + 0.5],
-        };
-        let [ox, oy] = frame.origin;
+impl Splat {
+    /// `p` in its frame ([`PlaneFrame::of`]).
+    pub fn new(p: &Projected) -> Self {
+        let PlaneFrame { scale, origin } = PlaneFrame::of(p);
+        let [ox, oy] = origin;
         let q = &p.q;
         let row = |k: usize| {
             let (a, b, c) = (q[3 * k], q[3 * k + 1], q[3 * k + 2]);
@@ -93,8 +101,7 @@ impl TileSplat {
                 (scale * (a * ox + b * oy + c)) as f32,
             ]
         };
-        let local = |v: u32, lo: usize, hi: usize| (v as usize).clamp(lo, hi) - lo;
-        TileSplat {
+        Splat {
             plane: [row(0), row(1), row(2)],
             det: (scale * p.det) as f32,
             mean: [(p.mean[0] - ox) as f32, (p.mean[1] - oy) as f32],
@@ -102,13 +109,23 @@ impl TileSplat {
             rho_cut: p.rho_cut.min(f32::MAX as f64) as f32,
             view_depth: p.view_depth as f32,
             features: p.features.map(|f| f as f32),
-            rect: [
-                local(p.rect[0], bounds[0], bounds[2]) as u8,
-                local(p.rect[1], bounds[1], bounds[3]) as u8,
-                local(p.rect[2], bounds[0], bounds[2]) as u8,
-                local(p.rect[3], bounds[1], bounds[3]) as u8,
-            ],
+            rect: p.rect,
         }
+    }
+
+    /// The part of the box inside a tile with pixel bounds `tile` (`[x0, y0, x1, y1)`), in tile
+    /// pixels, and the tile's first pixel in the surfel's frame (exact: integers below 2²⁴).
+    #[inline(always)]
+    fn in_tile(&self, tile: [u32; 4]) -> ([usize; 4], [f32; 2]) {
+        let r = self.rect;
+        let local = [
+            r[0].clamp(tile[0], tile[2]) - tile[0],
+            r[1].clamp(tile[1], tile[3]) - tile[1],
+            r[2].clamp(tile[0], tile[2]) - tile[0],
+            r[3].clamp(tile[1], tile[3]) - tile[1],
+        ];
+        let offset = [tile[0] as f32 - r[0] as f32, tile[1] as f32 - r[1] as f32];
+        (local.map(|v| v as usize), offset)
     }
 }
 
@@ -150,8 +167,9 @@ struct RowConsts {
 
 impl RowConsts {
     #[inline(always)]
-    fn new(sp: &TileSplat, ly: usize) -> Self {
-        let lyf = ly as f32;
+    /// Row `v` of the surfel's frame.
+    fn new(sp: &Splat, v: f32) -> Self {
+        let lyf = v;
         let dy = lyf - sp.mean[1];
         RowConsts {
             p: sp.plane.map(|r| r[1] * lyf + r[2]),
@@ -181,10 +199,11 @@ struct Hit {
     dx: F32x8,
 }
 
-/// Evaluates `sp` at the pixel centres `lx` of one row (the lane version of the reference's
-/// `evaluate`; the order of the tests differs, the lanes kept do not).
+/// Evaluates `sp` at the pixel centres `lx` of one row for the `alive` lanes (the lane version
+/// of the reference's `evaluate`, with the same cheap rejection before the division; the order
+/// of the other tests differs, the lanes kept do not). `None` when no lane passes the cheap test.
 #[inline(always)]
-fn evaluate(sp: &TileSplat, row: &RowConsts, lx: F32x8, c: &PixelConsts) -> Hit {
+fn evaluate(sp: &Splat, row: &RowConsts, lx: F32x8, alive: Mask8, c: &PixelConsts) -> Option<Hit> {
     let [r0, r1, r2] = sp.plane;
     let px = lx * r0[0] + row.p[0];
     let py = lx * r1[0] + row.p[1];
@@ -195,6 +214,13 @@ fn evaluate(sp: &TileSplat, row: &RowConsts, lx: F32x8, c: &PixelConsts) -> Hit 
     } else {
         F32x8::splat(f32::INFINITY)
     };
+    // Both ρ_3d = (px² + py²) / pz² and ρ_2d beyond the cut (also rejects NaN).
+    let cut = F32x8::splat(sp.rho_cut);
+    let num = px * px + py * py;
+    let candidates = alive.and(rho2.le(cut).or(num.le(cut * (pz * pz))));
+    if !candidates.any() {
+        return None;
+    }
     let inv = F32x8::splat(1.0) / pz;
     let s = px * inv;
     let t = py * inv;
@@ -203,7 +229,7 @@ fn evaluate(sp: &TileSplat, row: &RowConsts, lx: F32x8, c: &PixelConsts) -> Hit 
     let use3d = rho3.le(rho2);
     let rho = use3d.select(rho3, rho2);
     // rho_cut is finite, so this also rejects ρ = ∞ and NaN.
-    let inside = rho.le(F32x8::splat(sp.rho_cut));
+    let inside = candidates.and(rho.le(cut));
     let z_plane = inv * sp.det;
     let beyond_near = z_plane
         .gt(F32x8::splat(c.near))
@@ -215,7 +241,7 @@ fn evaluate(sp: &TileSplat, row: &RowConsts, lx: F32x8, c: &PixelConsts) -> Hit 
     let clamped = oa.gt(F32x8::splat(c.alpha_max));
     let alpha = clamped.select(F32x8::splat(c.alpha_max), oa);
     let ok = ok.and_not(alpha.lt(F32x8::splat(c.alpha_min)));
-    Hit {
+    Some(Hit {
         ok,
         alpha,
         g,
@@ -228,7 +254,7 @@ fn evaluate(sp: &TileSplat, row: &RowConsts, lx: F32x8, c: &PixelConsts) -> Hit 
         py,
         z,
         dx,
-    }
+    })
 }
 
 /// `1 − α` in f64, with the reference's exact factor where α is clamped.
@@ -268,12 +294,12 @@ pub struct TileOutput<'a> {
     pub contributors: &'a mut [u32],
 }
 
-/// Composites `list` (front to back) into one tile whose image part holds `live_pixels`
-/// pixels; returns the (pixel, surfel) pairs evaluated.
+/// Composites `list` (front to back) into the tile with pixel bounds `tile` (`[x0, y0, x1, y1)`,
+/// clipped to the image); returns the (pixel, surfel) pairs evaluated.
 pub fn forward_tile(
     path: SimdPath,
-    list: &[TileSplat],
-    live_pixels: usize,
+    list: &[Splat],
+    tile: [u32; 4],
     consts: &PixelConsts,
     scratch: &mut ForwardScratch,
     out: TileOutput,
@@ -283,27 +309,27 @@ pub fn forward_tile(
         // SAFETY: `SimdPath::Avx2` is only ever constructed after `is_x86_feature_detected!`
         // ("avx2") returned true ([`SimdPath::detect`], [`SimdPath::is_available`]), so the CPU
         // running this has every feature the function is compiled with.
-        SimdPath::Avx2 => unsafe { forward_tile_avx2(list, live_pixels, consts, scratch, out) },
-        _ => forward_body(list, live_pixels, consts, scratch, out),
+        SimdPath::Avx2 => unsafe { forward_tile_avx2(list, tile, consts, scratch, out) },
+        _ => forward_body(list, tile, consts, scratch, out),
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn forward_tile_avx2(
-    list: &[TileSplat],
-    live_pixels: usize,
+    list: &[Splat],
+    tile: [u32; 4],
     consts: &PixelConsts,
     scratch: &mut ForwardScratch,
     out: TileOutput,
 ) -> u64 {
-    forward_body(list, live_pixels, consts, scratch, out)
+    forward_body(list, tile, consts, scratch, out)
 }
 
 #[inline(always)]
 fn forward_body(
-    list: &[TileSplat],
-    live_pixels: usize,
+    list: &[Splat],
+    tile: [u32; 4],
     c: &PixelConsts,
     s: &mut ForwardScratch,
     out: TileOutput,
@@ -313,14 +339,15 @@ fn forward_body(
     s.contrib.fill(0);
     s.sums.fill(0.0);
     let t_min = F64x8::splat(c.transmittance_min);
+    let live_pixels = ((tile[2] - tile[0]) * (tile[3] - tile[1])) as usize;
     let mut evaluations = 0u64;
     let mut n_done = 0usize;
     for (k, sp) in list.iter().enumerate() {
-        let [rx0, ry0, rx1, ry1] = sp.rect.map(usize::from);
+        let ([rx0, ry0, rx1, ry1], [ox, oy]) = sp.in_tile(tile);
         let entry_count = [k as u32 + 1; LANES];
         let features = sp.features.map(F32x8::splat);
         for ly in ry0..ry1 {
-            let row = RowConsts::new(sp, ly);
+            let row = RowConsts::new(sp, ly as f32 + oy);
             for lx in (rx0..rx1).step_by(LANES) {
                 let base = ly * TILE + lx;
                 let alive = Mask8::first(rx1 - lx).and_not(Mask8::nonzero(&s.done[base..]));
@@ -328,8 +355,11 @@ fn forward_body(
                     continue;
                 }
                 evaluations += u64::from(alive.count());
-                let hit = evaluate(sp, &row, F32x8::ramp(lx as f32), c);
-                let valid = alive.and(hit.ok);
+                let lxv = F32x8::ramp(lx as f32 + ox);
+                let Some(hit) = evaluate(sp, &row, lxv, alive, c) else {
+                    continue;
+                };
+                let valid = hit.ok;
                 if !valid.any() {
                     continue;
                 }
@@ -373,37 +403,55 @@ fn forward_body(
     evaluations
 }
 
-/// Gradient of one tile's loss with respect to one [`TileSplat`] (its tile-local, scaled frame).
+/// Gradient of one tile's loss with respect to one [`Splat`] (in the surfel's frame): `f32` per
+/// (tile, surfel) entry, `f64` for a surfel's sum over its entries.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct LocalGrad {
-    /// Per plane row: `Σ g_p lx`, `Σ g_p ly`, `Σ g_p`.
-    pub plane: [[f32; 3]; 3],
-    pub det: f32,
-    pub mean: [f32; 2],
-    pub opacity: f32,
-    pub view_depth: f32,
-    pub features: [f32; NUM_FEATURES],
+pub struct LocalGrad<T = f32> {
+    /// Per plane row: `Σ g_p u`, `Σ g_p v`, `Σ g_p` (`(u, v)`: the pixel in the surfel's frame).
+    pub plane: [[T; 3]; 3],
+    pub det: T,
+    pub mean: [T; 2],
+    pub opacity: T,
+    pub view_depth: T,
+    pub features: [T; NUM_FEATURES],
 }
 
-impl LocalGrad {
-    /// Adds this gradient, taken back to the surfel's [`Projected`] values (f64), to `out`.
-    pub fn accumulate_into(&self, frame: &PlaneFrame, out: &mut ProjectedGrad) {
+impl LocalGrad<f64> {
+    /// Adds one entry's gradient.
+    pub fn add(&mut self, g: &LocalGrad) {
+        for (row, r) in self.plane.iter_mut().zip(&g.plane) {
+            for (a, b) in row.iter_mut().zip(r) {
+                *a += f64::from(*b);
+            }
+        }
+        self.det += f64::from(g.det);
+        self.mean[0] += f64::from(g.mean[0]);
+        self.mean[1] += f64::from(g.mean[1]);
+        self.opacity += f64::from(g.opacity);
+        self.view_depth += f64::from(g.view_depth);
+        for (a, b) in self.features.iter_mut().zip(&g.features) {
+            *a += f64::from(*b);
+        }
+    }
+
+    /// The gradient on the surfel's [`Projected`] values, for a splat made in `frame`.
+    pub fn to_projected(&self, frame: &PlaneFrame) -> ProjectedGrad {
         let [ox, oy] = frame.origin;
         let l = frame.scale;
-        for (k, r) in self.plane.iter().enumerate() {
-            let [ga, gb, gc] = r.map(f64::from);
-            // p_k = λ (q_k0 (lx + ox) + q_k1 (ly + oy) + q_k2).
-            out.q[3 * k] += l * (ga + ox * gc);
-            out.q[3 * k + 1] += l * (gb + oy * gc);
-            out.q[3 * k + 2] += l * gc;
+        let mut q = [0.0; 9];
+        for (k, &[ga, gb, gc]) in self.plane.iter().enumerate() {
+            // p_k = λ (q_k0 (u + ox) + q_k1 (v + oy) + q_k2).
+            q[3 * k] = l * (ga + ox * gc);
+            q[3 * k + 1] = l * (gb + oy * gc);
+            q[3 * k + 2] = l * gc;
         }
-        out.det += l * f64::from(self.det);
-        out.mean[0] += f64::from(self.mean[0]);
-        out.mean[1] += f64::from(self.mean[1]);
-        out.opacity += f64::from(self.opacity);
-        out.view_depth += f64::from(self.view_depth);
-        for (o, g) in out.features.iter_mut().zip(self.features) {
-            *o += f64::from(g);
+        ProjectedGrad {
+            q,
+            det: l * self.det,
+            mean: self.mean,
+            opacity: self.opacity,
+            features: self.features,
+            view_depth: self.view_depth,
         }
     }
 }
@@ -462,11 +510,12 @@ impl BackwardScratch {
     }
 }
 
-/// Replays one tile's list back to front from the state [`BackwardScratch::pixel`] set; writes
+/// Replays the list of the tile with pixel bounds `tile` back to front from the state [`BackwardScratch::pixel`] set; writes
 /// the gradient of each entry to `grads` (entries no pixel composited stay untouched).
 pub fn backward_tile(
     path: SimdPath,
-    list: &[TileSplat],
+    list: &[Splat],
+    tile: [u32; 4],
     consts: &PixelConsts,
     scratch: &mut BackwardScratch,
     grads: &mut [LocalGrad],
@@ -474,20 +523,21 @@ pub fn backward_tile(
     match path {
         #[cfg(target_arch = "x86_64")]
         // SAFETY: as in `forward_tile`: `SimdPath::Avx2` exists only where AVX2 was detected.
-        SimdPath::Avx2 => unsafe { backward_tile_avx2(list, consts, scratch, grads) },
-        _ => backward_body(list, consts, scratch, grads),
+        SimdPath::Avx2 => unsafe { backward_tile_avx2(list, tile, consts, scratch, grads) },
+        _ => backward_body(list, tile, consts, scratch, grads),
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn backward_tile_avx2(
-    list: &[TileSplat],
+    list: &[Splat],
+    tile: [u32; 4],
     consts: &PixelConsts,
     scratch: &mut BackwardScratch,
     grads: &mut [LocalGrad],
 ) {
-    backward_body(list, consts, scratch, grads)
+    backward_body(list, tile, consts, scratch, grads)
 }
 
 /// Lane accumulators of one entry's [`LocalGrad`].
@@ -517,7 +567,8 @@ impl GradLanes {
 
 #[inline(always)]
 fn backward_body(
-    list: &[TileSplat],
+    list: &[Splat],
+    tile: [u32; 4],
     c: &PixelConsts,
     s: &mut BackwardScratch,
     grads: &mut [LocalGrad],
@@ -526,11 +577,11 @@ fn backward_body(
     let lowpass_scale = -2.0 * c.inv_sigma2;
     for k in (0..max_contrib.min(list.len())).rev() {
         let sp = &list[k];
-        let [rx0, ry0, rx1, ry1] = sp.rect.map(usize::from);
+        let ([rx0, ry0, rx1, ry1], [ox, oy]) = sp.in_tile(tile);
         let features = sp.features.map(F32x8::splat);
         let mut acc = GradLanes::default();
         for ly in ry0..ry1 {
-            let row = RowConsts::new(sp, ly);
+            let row = RowConsts::new(sp, ly as f32 + oy);
             let lyv = F32x8::splat(row.ly);
             for lx in (rx0..rx1).step_by(LANES) {
                 let base = ly * TILE + lx;
@@ -539,9 +590,11 @@ fn backward_body(
                 if !alive.any() {
                     continue;
                 }
-                let lxv = F32x8::ramp(lx as f32);
-                let hit = evaluate(sp, &row, lxv, c);
-                let valid = alive.and(hit.ok);
+                let lxv = F32x8::ramp(lx as f32 + ox);
+                let Some(hit) = evaluate(sp, &row, lxv, alive, c) else {
+                    continue;
+                };
+                let valid = hit.ok;
                 if !valid.any() {
                     continue;
                 }

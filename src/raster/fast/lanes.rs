@@ -197,15 +197,26 @@ impl Mask8 {
         Mask8(out)
     }
 
+    /// One bit per lane, bit `l` set where lane `l` is true (the idiom LLVM turns into a
+    /// single `movmskps`).
+    #[inline(always)]
+    pub fn bits(self) -> u32 {
+        let mut bits = 0;
+        for l in 0..LANES {
+            bits |= (self.0[l] >> 31) << l;
+        }
+        bits
+    }
+
     #[inline(always)]
     pub fn any(self) -> bool {
-        self.0.iter().fold(0, |acc, &m| acc | m) != 0
+        self.bits() != 0
     }
 
     /// Number of true lanes.
     #[inline(always)]
     pub fn count(self) -> u32 {
-        self.0.iter().map(|&m| m & 1).sum()
+        self.bits().count_ones()
     }
 
     /// `a` where true, else `b`.

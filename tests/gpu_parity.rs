@@ -8,13 +8,12 @@
 //! backend must be the one named, so a silent fallback to another API fails.
 
 use glam::DVec3;
-use phygap::camera::Camera;
-use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions, Walk};
+use phygap::gpu::{AtomicsMode, GpuOptions, Walk};
 use phygap::raster::cpu::CpuBackend;
 use phygap::raster::{Backend, GBuffers, RasterSettings};
 use phygap::surfels::{SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
-use rand::{Rng, SeedableRng};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 mod common;

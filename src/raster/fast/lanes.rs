@@ -13,6 +13,11 @@
 //! IEEE-754 results bit for bit.
 //!
 //! Masks are lanes of `u32`, all ones (true) or zero (false).
+//!
+//! The lane loops index their arrays with the lane number on purpose (clippy's
+//! `needless_range_loop` is off here): several arrays advance in step, one lane per iteration,
+//! which is the shape the vectorizer turns into one vector instruction.
+#![allow(clippy::needless_range_loop)]
 
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 
@@ -357,13 +362,13 @@ pub fn exp(x: F32x8) -> F32x8 {
         8.333_452e-3,
         4.166_579_6e-2,
         1.666_666_5e-1,
-        5.000_000_1e-1,
+        0.5,
     ];
     let mut out = [0.0; LANES];
     for l in 0..LANES {
         let v = x.0[l];
         // NaN and tiny arguments give 0 (the comparison is false for NaN).
-        let underflow = !(v >= EXP_MIN_ARG);
+        let underflow = (v < EXP_MIN_ARG) | v.is_nan();
         let v = if underflow { 0.0 } else { v };
         let t = v * LOG2E + ROUND;
         let n = t - ROUND;

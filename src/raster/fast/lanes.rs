@@ -202,15 +202,33 @@ impl Mask8 {
         Mask8(out)
     }
 
-    /// One bit per lane, bit `l` set where lane `l` is true (the idiom LLVM turns into a
-    /// single `movmskps`).
+    /// One bit per lane, bit `l` set where lane `l` is true.
+    ///
+    /// On x86-64 two SSE2 `movmskps` (LLVM turns the portable loop below into per-lane word
+    /// extractions: 18% of the forward kernel in a knot geometry step).
     #[inline(always)]
     pub fn bits(self) -> u32 {
-        let mut bits = 0;
-        for l in 0..LANES {
-            bits |= (self.0[l] >> 31) << l;
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::{__m128i, _mm_castsi128_ps, _mm_loadu_si128, _mm_movemask_ps};
+            let lanes = self.0.as_ptr().cast::<__m128i>();
+            // SAFETY: SSE2 is part of the x86-64 baseline, so the intrinsics exist on every CPU
+            // this binary runs on; the two unaligned 16-byte loads read lanes 0–3 and 4–7 of
+            // `self.0` (32 bytes), in bounds.
+            unsafe {
+                let lo = _mm_movemask_ps(_mm_castsi128_ps(_mm_loadu_si128(lanes)));
+                let hi = _mm_movemask_ps(_mm_castsi128_ps(_mm_loadu_si128(lanes.add(1))));
+                (lo | (hi << 4)) as u32
+            }
         }
-        bits
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let mut bits = 0;
+            for l in 0..LANES {
+                bits |= (self.0[l] >> 31) << l;
+            }
+            bits
+        }
     }
 
     #[inline(always)]
@@ -425,6 +443,11 @@ mod tests {
             [0.0; LANES]
         );
         assert_eq!(Mask8::first(5).and_not(m).count(), 2);
+        assert_eq!(m.bits(), 0b111);
+        assert_eq!(
+            Mask8::greater(&[0, 9, 0, 9, 0, 0, 0, 9], 1).bits(),
+            0b1000_1010
+        );
         assert_eq!(a.sum(), 28.0);
         let counts = [0u32, 1, 2, 3, 4, 5, 6, 7];
         assert_eq!(Mask8::greater(&counts, 4).count(), 3);

@@ -29,11 +29,13 @@ pub enum Mode {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "snake_case")]
 pub enum BackendChoice {
-    /// A real GPU when one is found, else the cpu backend.
+    /// A real GPU when one is found, else the fast host backend.
     #[default]
     Auto,
-    /// The rayon reference backend.
+    /// The rayon f64 reference backend.
     Cpu,
+    /// The rayon f32 SIMD host backend (the reference's computation, faster).
+    Fast,
     /// The wgpu backend (lavapipe on machines without a GPU).
     Gpu,
 }

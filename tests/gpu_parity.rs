@@ -8,17 +8,19 @@
 //! backend must be the one named, so a silent fallback to another API fails.
 
 use glam::DVec3;
-use phygap::camera::Camera;
-use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions, Walk};
+use phygap::gpu::{AtomicsMode, GpuOptions, Walk};
 use phygap::raster::cpu::CpuBackend;
 use phygap::raster::{Backend, GBuffers, RasterSettings};
 use phygap::surfels::{SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
-use rand::{Rng, SeedableRng};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 mod common;
-use common::{gpu, random_camera, random_surfels, shell, worst};
+use common::parity::{
+    assert_backward_parity, assert_forward_parity, check_scene, smooth_settings, train_with,
+};
+use common::{deep_stack, gpu, random_camera, random_surfels, shell};
 
 #[test]
 fn adapter_matches_wgpu_backend_env() {
@@ -37,226 +39,6 @@ fn adapter_matches_wgpu_backend_env() {
         if wanted == wgpu::Backends::VULKAN {
             assert_eq!(info.backend, wgpu::Backend::Vulkan);
         }
-    }
-}
-
-/// Asserts the G-buffers agree to 1e-4 relative, `|gpu − cpu| ≤ 1e-4 (|cpu| + floor)`, with floor
-/// 0.1 for α and the α-normalized buffers (an absolute 1e-5 near zero) and floor 1 for the unit
-/// depth normal (a cross product of f32 depth differences between neighbours).
-///
-/// Exceptions, each for a stated f32 reason:
-/// - where the coverage is below 1% (`α < 0.01`, the far tail of the Gaussians) a normalized
-///   value is a ratio of two tiny f32 sums and is held to 1e-2; such pixels weigh < 1% in an image;
-/// - a few pixels may miss the bound (at most one per 1,000, at least one): a surfel whose α lies
-///   within f32 rounding of `alpha_min` (or whose transmittance step lies at `transmittance_min`)
-///   is kept by one backend and skipped by the other, and a surfel seen nearly edge-on has an
-///   ill-conditioned ray–plane intersection in f32. Their α may differ by at most `alpha_min`,
-///   their other buffers by 1e-2, and their depth change may move the depth normals of their 4
-///   neighbours.
-///
-/// Returns the number of such pixels.
-fn assert_forward_parity(gpu: &GBuffers, cpu: &GBuffers, what: &str) -> usize {
-    let (w, n) = (cpu.width, cpu.alpha.len());
-    let tol = 1e-4;
-    let loose = 1e-2;
-    let covered = 0.01;
-    let rel = |g: f64, c: f64, floor: f64| (g - c).abs() / (c.abs() + floor);
-    let m3 = |a: [f64; 3], b: [f64; 3], floor: f64| {
-        (0..3).map(|c| rel(a[c], b[c], floor)).fold(0.0, f64::max)
-    };
-    let pixel_error = |k: usize| -> [f64; 6] {
-        [
-            rel(gpu.alpha[k], cpu.alpha[k], 0.1),
-            rel(gpu.depth[k], cpu.depth[k], 0.1),
-            m3(gpu.normal[k], cpu.normal[k], 0.1),
-            m3(gpu.albedo[k], cpu.albedo[k], 0.1),
-            rel(gpu.roughness[k], cpu.roughness[k], 0.1),
-            rel(gpu.ior[k], cpu.ior[k], 0.1),
-        ]
-    };
-    let names = ["alpha", "depth", "normal", "albedo", "roughness", "ior"];
-    let mut worst_covered = [0.0f64; 6];
-    let mut worst_tail = 0.0f64;
-    let mut outliers = Vec::new();
-    for k in 0..n {
-        let e = pixel_error(k);
-        let normalized_tol = if cpu.alpha[k] >= covered { tol } else { loose };
-        if e[0] < tol && e[1..].iter().all(|&v| v < normalized_tol) {
-            if cpu.alpha[k] >= covered {
-                for (w, v) in worst_covered.iter_mut().zip(e) {
-                    *w = w.max(v);
-                }
-            } else {
-                worst_tail = e[1..].iter().fold(worst_tail, |m, &v| m.max(v));
-            }
-        } else {
-            outliers.push(k);
-        }
-    }
-    for (name, e) in names.iter().zip(worst_covered) {
-        println!("{what} {name}: worst relative error {e:.2e} (α ≥ {covered})");
-    }
-    println!(
-        "{what} normalized buffers where α < {covered}: worst relative error {worst_tail:.2e}"
-    );
-    let near_outlier = |k: usize| {
-        outliers
-            .iter()
-            .any(|&f| f == k || f + 1 == k || k + 1 == f || f + w == k || k + w == f)
-    };
-    let mut worst_dn = 0.0f64;
-    for k in 0..n {
-        if near_outlier(k) {
-            continue;
-        }
-        let e = m3(gpu.depth_normal[k], cpu.depth_normal[k], 1.0);
-        let neighbourhood = [k, k.saturating_sub(1), k + 1, k.saturating_sub(w), k + w];
-        let min_alpha = neighbourhood
-            .iter()
-            .map(|&j| cpu.alpha.get(j).copied().unwrap_or(1.0))
-            .fold(1.0, f64::min);
-        let bound = if min_alpha >= covered { tol } else { loose };
-        if min_alpha >= covered {
-            worst_dn = worst_dn.max(e);
-        }
-        assert!(
-            e < bound,
-            "{what}: depth_normal[{k}] gpu {:?} vs cpu {:?} (relative error {e:.2e})",
-            gpu.depth_normal[k],
-            cpu.depth_normal[k]
-        );
-    }
-    println!("{what} depth_normal: worst relative error {worst_dn:.2e} (α ≥ {covered})");
-    let allowed = (n / 1000).max(1);
-    let alpha_min = RasterSettings::default().alpha_min;
-    for &k in &outliers {
-        let e = pixel_error(k);
-        println!(
-            "{what}: outlier pixel {k}: α gpu {} cpu {}, errors {e:?}",
-            gpu.alpha[k], cpu.alpha[k]
-        );
-        assert!(
-            (gpu.alpha[k] - cpu.alpha[k]).abs() <= alpha_min && e[1..].iter().all(|&v| v < loose),
-            "{what}: pixel {k} differs by more than one threshold surfel: α gpu {} vs cpu {}, \
-             errors {e:?}",
-            gpu.alpha[k],
-            cpu.alpha[k]
-        );
-    }
-    assert!(
-        outliers.len() <= allowed,
-        "{what}: {} of {n} pixels differ by more than {tol:e} relative (allowed {allowed}): {:?}",
-        outliers.len(),
-        &outliers[..outliers.len().min(10)]
-    );
-    outliers.len()
-}
-
-fn flat_groups(g: &SurfelGrads, mean2d: &[f64]) -> Vec<(&'static str, Vec<f64>)> {
-    vec![
-        ("position", g.position.as_flattened().to_vec()),
-        ("log_scale", g.log_scale.as_flattened().to_vec()),
-        ("rotation", g.rotation.as_flattened().to_vec()),
-        ("opacity", g.opacity.clone()),
-        ("albedo", g.albedo.as_flattened().to_vec()),
-        ("roughness", g.roughness.clone()),
-        ("ior", g.ior.clone()),
-        ("mean2d_grad_norm", mean2d.to_vec()),
-    ]
-}
-
-/// Asserts each gradient group agrees to `tol` relative, `‖gpu − cpu‖ ≤ tol ‖cpu‖` over the group,
-/// and every entry within `tol` of the group's largest magnitude.
-fn assert_backward_parity(
-    gpu: &phygap::raster::RasterGrads,
-    cpu: &phygap::raster::RasterGrads,
-    tol: f64,
-    what: &str,
-) {
-    let g = flat_groups(&gpu.surfels, &gpu.mean2d_grad_norm);
-    let c = flat_groups(&cpu.surfels, &cpu.mean2d_grad_norm);
-    for ((name, g), (_, c)) in g.iter().zip(&c) {
-        let norm = c.iter().map(|v| v * v).sum::<f64>().sqrt();
-        let diff = g
-            .iter()
-            .zip(c)
-            .map(|(a, b)| (a - b) * (a - b))
-            .sum::<f64>()
-            .sqrt();
-        let scale = c.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        assert!(norm > 0.0, "{what}: cpu gradient group {name} is all zero");
-        let (entry_err, i) = worst(g, c, scale);
-        println!(
-            "{what} {name}: relative norm error {:.2e}, worst entry {:.2e}",
-            diff / norm,
-            entry_err
-        );
-        assert!(
-            diff <= tol * norm,
-            "{what}: gradient group {name} differs: ‖gpu − cpu‖ / ‖cpu‖ = {:.2e}",
-            diff / norm
-        );
-        assert!(
-            entry_err < tol,
-            "{what}: {name}[{i}] gpu {} vs cpu {} (group max {scale})",
-            g[i],
-            c[i]
-        );
-    }
-}
-
-/// Settings whose discontinuous thresholds sit far below f32 resolution of the result (a surfel
-/// kept by one backend and skipped by the other changes the buffers by ~1e-9), so the backward
-/// passes can be compared entry by entry on any scene.
-fn smooth_settings() -> RasterSettings {
-    RasterSettings {
-        alpha_min: 1e-9,
-        transmittance_min: 1e-12,
-        ..RasterSettings::default()
-    }
-}
-
-/// Forward and backward parity of `gpu` with the cpu backend on one scene.
-///
-/// With the default settings, the forward buffers must agree (see [`assert_forward_parity`]) and
-/// so must the gradients (1e-3) when no pixel met a threshold; a threshold pixel moves the
-/// gradient of its threshold surfel, so with one the gradient groups are only held to 1e-2. With
-/// [`smooth_settings`] both passes must agree to 1e-4 / 1e-3 everywhere.
-fn check_scene(gpu: &GpuBackend, surfels: &Surfels, camera: &Camera, seed: u64, what: &str) {
-    for (settings, label) in [
-        (RasterSettings::default(), "default settings"),
-        (smooth_settings(), "smooth settings"),
-    ] {
-        let what = format!("{what}, {label}");
-        let what = what.as_str();
-        let cpu_fwd = CpuBackend.forward(surfels, camera, &settings).unwrap();
-        let gpu_fwd = gpu.forward(surfels, camera, &settings).unwrap();
-        let covered = cpu_fwd.gbuffers.alpha.iter().filter(|&&a| a > 0.1).count();
-        assert!(
-            covered * 5 > cpu_fwd.gbuffers.alpha.len(),
-            "{what}: scene covers too little ({covered} pixels)"
-        );
-        assert_eq!(
-            gpu_fwd.stats.visible_surfels, cpu_fwd.stats.visible_surfels,
-            "{what}"
-        );
-        let outliers = assert_forward_parity(&gpu_fwd.gbuffers, &cpu_fwd.gbuffers, what);
-
-        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed);
-        let (w, h) = (camera.width as usize, camera.height as usize);
-        let upstream = random_upstream(&mut rng, w, h);
-        let cpu_grad = CpuBackend
-            .backward(surfels, camera, &settings, &cpu_fwd, &upstream)
-            .unwrap();
-        let gpu_grad = gpu
-            .backward(surfels, camera, &settings, &gpu_fwd, &upstream)
-            .unwrap();
-        let tol = if outliers == 0 || label == "smooth settings" {
-            1e-3
-        } else {
-            1e-2
-        };
-        assert_backward_parity(&gpu_grad, &cpu_grad, tol, what);
     }
 }
 
@@ -368,57 +150,6 @@ fn fallback_paths_match_cpu() {
     }
 }
 
-/// The logged (iteration, loss) pairs and the final test PSNR of a 100-iteration run.
-fn train_with(
-    backend: phygap::config::BackendChoice,
-    capture: &phygap::capture::Capture,
-    gridmap: bool,
-) -> (Vec<(u32, f64)>, f64) {
-    use phygap::config::TrainConfig;
-    use phygap::events::TrainEvent;
-    let config = TrainConfig {
-        iterations: 100,
-        backend,
-        seed: 3,
-        gridmap,
-        gridmap_interval: 20,
-        initial_surfels: 3_000,
-        envmap_resolution: 16,
-        checkpoint_interval: 0,
-        eval_interval: 0,
-        ..TrainConfig::default()
-    };
-    let dir = tempfile::tempdir().unwrap();
-    let mut losses = Vec::new();
-    let mut psnr = f64::NAN;
-    let mut backend_name = String::new();
-    let cancel = std::sync::atomic::AtomicBool::new(false);
-    phygap::train::train(
-        capture,
-        dir.path(),
-        &config,
-        false,
-        &cancel,
-        &mut |e| match e {
-            TrainEvent::Started { backend, .. } => backend_name = backend.clone(),
-            TrainEvent::Step {
-                iteration, loss, ..
-            } => losses.push((*iteration, *loss)),
-            TrainEvent::Evaluated { test_psnr, .. } => psnr = *test_psnr,
-            _ => {}
-        },
-    )
-    .unwrap();
-    // The start event names the backend and what it runs on.
-    let expected = match backend {
-        phygap::config::BackendChoice::Gpu => "gpu on ",
-        _ => "cpu (",
-    };
-    assert!(backend_name.starts_with(expected), "{backend_name}");
-    assert!(psnr.is_finite(), "no final evaluation");
-    (losses, psnr)
-}
-
 /// A 100-iteration training run (same seed: same views, same schedule) on a synthetic capture
 /// with the gpu backend (whole steps on the device) follows the cpu run: every logged loss within
 /// 2% of the cpu run's at the same iteration (f32 gradients perturb the trajectory slightly), the
@@ -512,20 +243,6 @@ fn empty_and_fully_culled_scenes() {
         assert_eq!(grads.surfels, SurfelGrads::zeros(surfels.len()));
         assert!(grads.mean2d_grad_norm.iter().all(|&v| v == 0.0));
     }
-}
-
-/// `n` large surfels around the origin, each covering most of a `random_camera` view: many
-/// entries per tile.
-fn deep_stack(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
-    let mut s = random_surfels(rng, n);
-    for i in 0..n {
-        s.position[i] = std::array::from_fn(|_| rng.random_range(-0.3..0.3));
-        s.log_scale[i] = [
-            rng.random_range(0.6f64..1.0).ln(),
-            rng.random_range(0.6f64..1.0).ln(),
-        ];
-    }
-    s
 }
 
 /// Renders whose buffers exceed the binding limit are split into bands of tile rows (by the
@@ -646,7 +363,7 @@ fn profiling_times_every_stage() {
     assert!(profiled.take_stage_times().is_empty());
 }
 
-/// `auto` takes the gpu backend only on a hardware adapter; `gpu` takes any adapter.
+/// `auto` takes the gpu backend only on a hardware adapter (else fast); `gpu` takes any adapter.
 #[test]
 fn auto_prefers_hardware_and_gpu_takes_any_adapter() {
     use phygap::backend::select;
@@ -658,7 +375,8 @@ fn auto_prefers_hardware_and_gpu_takes_any_adapter() {
     assert!(!adapters.is_empty());
     let auto = select(BackendChoice::Auto).unwrap();
     let hardware = adapters.iter().any(|a| !a.software);
-    assert_eq!(auto.name(), if hardware { "gpu" } else { "cpu" });
+    assert_eq!(auto.name(), if hardware { "gpu" } else { "fast" });
     assert_eq!(select(BackendChoice::Gpu).unwrap().name(), "gpu");
     assert_eq!(select(BackendChoice::Cpu).unwrap().name(), "cpu");
+    assert_eq!(select(BackendChoice::Fast).unwrap().name(), "fast");
 }

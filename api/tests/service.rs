@@ -41,7 +41,7 @@ async fn upload_train_and_download_every_artifact() {
     // The backend it trained on, as `--backend auto` resolved it on this machine.
     let backend = done["backend"].as_str().unwrap_or_default();
     assert!(
-        backend.starts_with("cpu (") || backend.starts_with("gpu on "),
+        backend.starts_with("fast (") || backend.starts_with("gpu on "),
         "{done}"
     );
     let psnr = done["test_psnr"].as_f64().unwrap();

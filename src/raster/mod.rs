@@ -3,7 +3,8 @@
 //! This module is the backend-neutral interface: [`Backend`] turns surfels and a camera into
 //! [`GBuffers`] (forward) and turns upstream gradients on every buffer back into gradients on the raw
 //! surfel parameters (backward); it also shades G-buffers (PolarDR, the cpu code of
-//! [`crate::shading`] unless the backend has its own). [`cpu::CpuBackend`] is the f64 reference implementation. The
+//! [`crate::shading`] unless the backend has its own). [`cpu::CpuBackend`] is the f64 reference
+//! implementation, [`fast::FastBackend`] the same computation in f32 SIMD on the host. The
 //! depth-derived normal map and the α-normalization are defined here, once, so every backend
 //! produces the same buffers.
 //!
@@ -14,6 +15,7 @@
 //! wherever the compositing itself is.
 
 pub mod cpu;
+pub mod fast;
 pub mod project;
 
 use std::any::Any;

@@ -1,7 +1,9 @@
-//! Helpers of the gpu test files: opening the backend (or skipping where no adapter exists),
-//! random cameras, surfels and environments, and the relative-error measure of the parity tests.
-//! Each test file uses some of them.
+//! Helpers of the backend test files: opening the gpu backend (or skipping where no adapter
+//! exists), random cameras, surfels and environments, the relative-error measure and the parity
+//! checks against the cpu reference ([`parity`]). Each test file uses some of them.
 #![allow(dead_code)]
+
+pub mod parity;
 
 use glam::{DMat3, DQuat, DVec3};
 use phygap::camera::Camera;
@@ -65,6 +67,20 @@ pub fn random_surfels(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
         s.albedo[i] = std::array::from_fn(|_| rng.random_range(-2.5..2.5));
         s.roughness[i] = rng.random_range(-2.5..2.5);
         s.ior[i] = rng.random_range(-2.5..2.5);
+    }
+    s
+}
+
+/// `n` large surfels around the origin, each covering most of a `random_camera` view: many
+/// entries per tile.
+pub fn deep_stack(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
+    let mut s = random_surfels(rng, n);
+    for i in 0..n {
+        s.position[i] = std::array::from_fn(|_| rng.random_range(-0.3..0.3));
+        s.log_scale[i] = [
+            rng.random_range(0.6f64..1.0).ln(),
+            rng.random_range(0.6f64..1.0).ln(),
+        ];
     }
     s
 }

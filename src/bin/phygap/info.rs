@@ -32,6 +32,7 @@ pub fn run() -> Result<()> {
     for (choice, name) in [
         (BackendChoice::Auto, "auto"),
         (BackendChoice::Cpu, "cpu"),
+        (BackendChoice::Fast, "fast"),
         (BackendChoice::Gpu, "gpu"),
     ] {
         match describe(choice) {

@@ -132,7 +132,13 @@ impl FsArtifacts {
     }
 }
 
-fn walk_files(dir: &Path, prefix: &str, out: &mut Vec<(String, PathBuf)>) -> std::io::Result<()> {
+/// Appends every file under `dir` (recursively) to `out`, named by its `/`-separated path below
+/// `dir` with `prefix` before it.
+pub(crate) fn walk_files(
+    dir: &Path,
+    prefix: &str,
+    out: &mut Vec<(String, PathBuf)>,
+) -> std::io::Result<()> {
     for entry in std::fs::read_dir(dir)? {
         let entry = entry?;
         let file_name = entry.file_name().to_string_lossy().into_owned();

@@ -272,26 +272,8 @@ fn parse_key(relative: &str) -> Result<Key, BucketError> {
 
 /// Every file under `dir` with its `/`-separated relative name.
 fn local_files(dir: &Path) -> Result<Vec<(String, PathBuf)>, BucketError> {
-    fn walk(dir: &Path, prefix: &str, out: &mut Vec<(String, PathBuf)>) -> std::io::Result<()> {
-        for entry in std::fs::read_dir(dir)? {
-            let entry = entry?;
-            let file_name = entry.file_name().to_string_lossy().into_owned();
-            let name = if prefix.is_empty() {
-                file_name
-            } else {
-                format!("{prefix}/{file_name}")
-            };
-            let kind = entry.file_type()?;
-            if kind.is_dir() {
-                walk(&entry.path(), &name, out)?;
-            } else if kind.is_file() {
-                out.push((name, entry.path()));
-            }
-        }
-        Ok(())
-    }
     let mut out = Vec::new();
-    walk(dir, "", &mut out).map_err(io_err(dir))?;
+    crate::artifacts::walk_files(dir, "", &mut out).map_err(io_err(dir))?;
     Ok(out)
 }
 

@@ -45,7 +45,7 @@ use crate::brdf_lut::BrdfLut;
 use crate::camera::Camera;
 use crate::envmap::{EnvGrad, LightKind, LightProbe};
 use crate::raster::{
-    begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
+    begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
     StageTime,
 };
@@ -956,16 +956,7 @@ impl GpuBackend {
         let n = saved.num_surfels;
         let (w, h) = (gb.width, gb.height);
         let eps = settings.normalize_alpha_min;
-        // Upstream on the normalized depth, including the depth-normal chain (host, f64).
-        let depth_grad: Vec<f64> = {
-            let _span = info_span!("depth_normal_backward").entered();
-            let mut g =
-                depth_normals_backward(camera, &gb.depth, &gb.alpha, eps, &upstream.depth_normal);
-            for (a, b) in g.iter_mut().zip(&upstream.depth) {
-                *a += b;
-            }
-            g
-        };
+        let depth_grad = depth_upstream(camera, gb, upstream, eps);
         let up: Vec<f32> = (0..w * h)
             .flat_map(|k| {
                 let n3 = upstream.normal[k];

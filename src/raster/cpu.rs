@@ -23,7 +23,7 @@ use tracing::info_span;
 
 use super::project::{self, Projected, ProjectedGrad, ProjectionCamera, NUM_FEATURES};
 use super::{
-    begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
+    begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
 };
 use crate::camera::Camera;
@@ -473,16 +473,7 @@ impl Backend for CpuBackend {
         let _span = info_span!("raster_backward", backend = "cpu").entered();
         let eps = settings.normalize_alpha_min;
 
-        // Upstream on the normalized depth, including the depth-normal chain.
-        let depth_grad: Vec<f64> = {
-            let _span = info_span!("depth_normal_backward").entered();
-            let mut g =
-                depth_normals_backward(camera, &gb.depth, &gb.alpha, eps, &upstream.depth_normal);
-            for (a, b) in g.iter_mut().zip(&upstream.depth) {
-                *a += b;
-            }
-            g
-        };
+        let depth_grad = depth_upstream(camera, gb, upstream, eps);
 
         let grid = saved.tiles;
         let consts = PixelConsts::new(settings);

@@ -557,6 +557,28 @@ pub fn depth_normals_backward(
         .collect()
 }
 
+/// The upstream gradient on the α-normalized depth buffer: the depth's own plus the depth-normal
+/// map's, chained through [`depth_normals_backward`] (every backend's backward starts with it).
+pub fn depth_upstream(
+    camera: &Camera,
+    gbuffers: &GBuffers,
+    upstream: &GBufferGrads,
+    eps: f64,
+) -> Vec<f64> {
+    let _span = tracing::info_span!("depth_normal_backward").entered();
+    let mut grad = depth_normals_backward(
+        camera,
+        &gbuffers.depth,
+        &gbuffers.alpha,
+        eps,
+        &upstream.depth_normal,
+    );
+    for (g, own) in grad.iter_mut().zip(&upstream.depth) {
+        *g += own;
+    }
+    grad
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -35,7 +35,7 @@ use self::tile::{
 };
 use super::project::{self, Projected, ProjectionCamera};
 use super::{
-    begin_backward, depth_normals, depth_normals_backward, validate_inputs, Backend, GBufferGrads,
+    begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
 };
 use crate::camera::Camera;
@@ -448,16 +448,7 @@ impl Backend for FastBackend {
         let _span = info_span!("raster_backward", backend = "fast").entered();
         let eps = settings.normalize_alpha_min;
 
-        // Upstream on the normalized depth, including the depth-normal chain.
-        let depth_grad: Vec<f64> = {
-            let _span = info_span!("depth_normal_backward").entered();
-            let mut g =
-                depth_normals_backward(camera, &gb.depth, &gb.alpha, eps, &upstream.depth_normal);
-            for (a, b) in g.iter_mut().zip(&upstream.depth) {
-                *a += b;
-            }
-            g
-        };
+        let depth_grad = depth_upstream(camera, gb, upstream, eps);
 
         let grid = saved.grid;
         let consts = PixelConsts::new(settings);

@@ -22,12 +22,14 @@ use rayon::prelude::*;
 use tracing::info_span;
 
 use super::project::{self, Projected, ProjectedGrad, ProjectionCamera, NUM_FEATURES};
+use super::tiles::TileGrid;
 use super::{
-    begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
-    GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
+    begin_backward, chain_to_raw, depth_normals, depth_upstream, unnormalize_upstream,
+    validate_inputs, Backend, GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings,
+    RasterStats, Rasterized, SavedForward,
 };
 use crate::camera::Camera;
-use crate::surfels::{SurfelGrads, Surfels};
+use crate::surfels::Surfels;
 
 /// Running sums per pixel: α, depth, then the features of [`Projected::features`].
 const NUM_SUMS: usize = 2 + NUM_FEATURES;
@@ -53,54 +55,6 @@ impl SavedForward for Saved {
     const NOT_THIS_BACKEND: &'static str = "not a cpu forward result";
     fn scene(&self) -> (usize, &Camera, &RasterSettings) {
         (self.num_surfels, &self.camera, &self.settings)
-    }
-}
-
-#[derive(Clone, Copy, Debug)]
-struct TileGrid {
-    size: usize,
-    nx: usize,
-    ny: usize,
-    width: usize,
-    height: usize,
-}
-
-impl TileGrid {
-    fn new(width: usize, height: usize, size: usize) -> Self {
-        TileGrid {
-            size,
-            nx: width.div_ceil(size),
-            ny: height.div_ceil(size),
-            width,
-            height,
-        }
-    }
-    fn count(&self) -> usize {
-        self.nx * self.ny
-    }
-    fn pixels(&self) -> usize {
-        self.size * self.size
-    }
-    /// Pixel bounds `[x0, y0, x1, y1)` of tile `t`, clipped to the image.
-    fn bounds(&self, t: usize) -> [usize; 4] {
-        let (tx, ty) = (t % self.nx, t / self.nx);
-        let (x0, y0) = (tx * self.size, ty * self.size);
-        [
-            x0,
-            y0,
-            (x0 + self.size).min(self.width),
-            (y0 + self.size).min(self.height),
-        ]
-    }
-    /// Tiles `[tx0, ty0, tx1, ty1)` overlapped by a pixel box.
-    fn tiles_of(&self, rect: [u32; 4]) -> [usize; 4] {
-        let s = self.size;
-        [
-            rect[0] as usize / s,
-            rect[1] as usize / s,
-            (rect[2] as usize - 1) / s + 1,
-            (rect[3] as usize - 1) / s + 1,
-        ]
     }
 }
 
@@ -498,7 +452,6 @@ impl Backend for CpuBackend {
                 });
         }
 
-        let _span = info_span!("project_backward").entered();
         // Reduction per surfel in entry order: deterministic, no shared writes. (Streaming the
         // entries and scattering measured faster than gathering each surfel's entries.)
         let mut per_surfel = vec![ProjectedGrad::default(); surfels.len()];
@@ -506,39 +459,9 @@ impl Backend for CpuBackend {
             per_surfel[i as usize].add(g);
         }
         drop(entry_grads);
-        let cam = ProjectionCamera::new(camera);
-        let mut grads = SurfelGrads::zeros(surfels.len());
-        let mut mean2d = vec![0.0; surfels.len()];
-        (
-            grads.position.par_iter_mut(),
-            grads.log_scale.par_iter_mut(),
-            grads.rotation.par_iter_mut(),
-            grads.opacity.par_iter_mut(),
-            grads.albedo.par_iter_mut(),
-            grads.roughness.par_iter_mut(),
-            grads.ior.par_iter_mut(),
-            mean2d.par_iter_mut(),
-            bins.projected.par_iter(),
-            per_surfel.par_iter(),
-        )
-            .into_par_iter()
-            .for_each(|(pos, ls, rot, op, alb, rough, ior, m2d, p, g)| {
-                if let Some(p) = p {
-                    let r = project::project_backward(surfels, p, &cam, g);
-                    *pos = r.position;
-                    *ls = r.log_scale;
-                    *rot = r.rotation;
-                    *op = r.opacity;
-                    *alb = r.albedo;
-                    *rough = r.roughness;
-                    *ior = r.ior;
-                    *m2d = r.mean2d_norm;
-                }
-            });
-        Ok(RasterGrads {
-            surfels: grads,
-            mean2d_grad_norm: mean2d,
-        })
+        Ok(chain_to_raw(surfels, camera, &bins.projected, |i, _| {
+            per_surfel[i]
+        }))
     }
 }
 
@@ -575,40 +498,7 @@ fn backward_tile(
         for x in x0..x1 {
             let li = (y - y0) * grid.size + x - x0;
             let k = y * w + x;
-            let a = gb.alpha[k];
-            let mut ga = upstream.alpha[k];
-            if a > eps {
-                let g = [
-                    depth_grad[k],
-                    upstream.normal[k][0],
-                    upstream.normal[k][1],
-                    upstream.normal[k][2],
-                    upstream.albedo[k][0],
-                    upstream.albedo[k][1],
-                    upstream.albedo[k][2],
-                    upstream.roughness[k],
-                    upstream.ior[k],
-                ];
-                let out = [
-                    gb.depth[k],
-                    gb.normal[k][0],
-                    gb.normal[k][1],
-                    gb.normal[k][2],
-                    gb.albedo[k][0],
-                    gb.albedo[k][1],
-                    gb.albedo[k][2],
-                    gb.roughness[k],
-                    gb.ior[k],
-                ];
-                let inv = 1.0 / a;
-                let mut dot = 0.0;
-                for c in 0..NUM_SUMS - 1 {
-                    dot += g[c] * out[c];
-                    g_sums[li][c] = g[c] * inv;
-                }
-                ga -= dot * inv;
-            }
-            g_alpha[li] = ga;
+            (g_alpha[li], g_sums[li]) = unnormalize_upstream(gb, upstream, depth_grad, k, eps);
         }
     }
 

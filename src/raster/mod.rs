@@ -17,6 +17,7 @@
 pub mod cpu;
 pub mod fast;
 pub mod project;
+mod tiles;
 
 use std::any::Any;
 
@@ -577,6 +578,103 @@ pub fn depth_upstream(
         *g += own;
     }
     grad
+}
+
+/// Pixel `k`'s upstream gradients before the α-normalization: `dL/dα` (the accumulated
+/// opacity's own, less `Σ_c g_c · out_c / α` where the pixel is normalized) and `dL/dS_c = g_c / α`
+/// on the running sums of depth, normal, albedo, roughness and IoR (zero where `α ≤ eps`).
+/// `depth_grad` is [`depth_upstream`]'s. Every host backend's backward starts each pixel here.
+pub fn unnormalize_upstream(
+    gbuffers: &GBuffers,
+    upstream: &GBufferGrads,
+    depth_grad: &[f64],
+    k: usize,
+    eps: f64,
+) -> (f64, [f64; 9]) {
+    let a = gbuffers.alpha[k];
+    let mut g_alpha = upstream.alpha[k];
+    let mut g_sums = [0.0; 9];
+    if a > eps {
+        let (n, al) = (upstream.normal[k], upstream.albedo[k]);
+        let g = [
+            depth_grad[k],
+            n[0],
+            n[1],
+            n[2],
+            al[0],
+            al[1],
+            al[2],
+            upstream.roughness[k],
+            upstream.ior[k],
+        ];
+        let (n, al) = (gbuffers.normal[k], gbuffers.albedo[k]);
+        let out = [
+            gbuffers.depth[k],
+            n[0],
+            n[1],
+            n[2],
+            al[0],
+            al[1],
+            al[2],
+            gbuffers.roughness[k],
+            gbuffers.ior[k],
+        ];
+        let inv = 1.0 / a;
+        let mut dot = 0.0;
+        for c in 0..9 {
+            dot += g[c] * out[c];
+            g_sums[c] = g[c] * inv;
+        }
+        g_alpha -= dot * inv;
+    }
+    (g_alpha, g_sums)
+}
+
+/// Chains per-surfel gradients on the projections (`grad_of(i, p)` for visible surfel `i`) to
+/// the raw surfel parameters through [`project::project_backward`] (rayon over surfels); culled
+/// surfels get zero gradients.
+pub fn chain_to_raw(
+    surfels: &Surfels,
+    camera: &Camera,
+    projected: &[Option<project::Projected>],
+    grad_of: impl Fn(usize, &project::Projected) -> project::ProjectedGrad + Sync,
+) -> RasterGrads {
+    use rayon::prelude::*;
+    let _span = tracing::info_span!("project_backward").entered();
+    let cam = project::ProjectionCamera::new(camera);
+    let mut grads = SurfelGrads::zeros(surfels.len());
+    let mut mean2d = vec![0.0; surfels.len()];
+    (
+        grads.position.par_iter_mut(),
+        grads.log_scale.par_iter_mut(),
+        grads.rotation.par_iter_mut(),
+        grads.opacity.par_iter_mut(),
+        grads.albedo.par_iter_mut(),
+        grads.roughness.par_iter_mut(),
+        grads.ior.par_iter_mut(),
+        mean2d.par_iter_mut(),
+        projected.par_iter(),
+    )
+        .into_par_iter()
+        .enumerate()
+        .for_each(|(i, (pos, ls, rot, op, alb, rough, ior, m2d, p))| {
+            let Some(p) = p else {
+                return;
+            };
+            let r = project::project_backward(surfels, p, &cam, &grad_of(i, p));
+            *pos = r.position;
+            *ls = r.log_scale;
+            *rot = r.rotation;
+            *op = r.opacity;
+            *alb = r.albedo;
+            *rough = r.roughness;
+            *ior = r.ior;
+            *m2d = r.mean2d_norm;
+        });
+    RasterGrads {
+        surfels: grads,
+        mean2d_grad_norm: mean2d,
+    }
 }
 
 #[cfg(test)]

@@ -34,12 +34,14 @@ use self::tile::{
     TileOutput, NUM_SUMS, TILE, TILE_PIXELS,
 };
 use super::project::{self, Projected, ProjectionCamera};
+use super::tiles::TileGrid;
 use super::{
-    begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
-    GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
+    begin_backward, chain_to_raw, depth_normals, depth_upstream, unnormalize_upstream,
+    validate_inputs, Backend, GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings,
+    RasterStats, Rasterized, SavedForward,
 };
 use crate::camera::Camera;
-use crate::surfels::{SurfelGrads, Surfels};
+use crate::surfels::Surfels;
 
 /// Which compiled copy of the tile kernels runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -106,47 +108,6 @@ impl FastBackend {
 
     pub fn path(&self) -> SimdPath {
         self.path
-    }
-}
-
-#[derive(Clone, Copy, Debug)]
-struct TileGrid {
-    nx: usize,
-    ny: usize,
-    width: usize,
-    height: usize,
-}
-
-impl TileGrid {
-    fn new(width: usize, height: usize) -> Self {
-        TileGrid {
-            nx: width.div_ceil(TILE),
-            ny: height.div_ceil(TILE),
-            width,
-            height,
-        }
-    }
-    fn count(&self) -> usize {
-        self.nx * self.ny
-    }
-    /// Pixel bounds `[x0, y0, x1, y1)` of tile `t`, clipped to the image.
-    fn bounds(&self, t: usize) -> [usize; 4] {
-        let (x0, y0) = ((t % self.nx) * TILE, (t / self.nx) * TILE);
-        [
-            x0,
-            y0,
-            (x0 + TILE).min(self.width),
-            (y0 + TILE).min(self.height),
-        ]
-    }
-    /// Tiles `[tx0, ty0, tx1, ty1)` overlapped by a (non-empty) pixel box.
-    fn tiles_of(&self, rect: [u32; 4]) -> [usize; 4] {
-        [
-            rect[0] as usize / TILE,
-            rect[1] as usize / TILE,
-            (rect[2] as usize - 1) / TILE + 1,
-            (rect[3] as usize - 1) / TILE + 1,
-        ]
     }
 }
 
@@ -371,7 +332,7 @@ impl Backend for FastBackend {
         validate_inputs(surfels, camera, settings)?;
         let _span = info_span!("raster_forward", backend = "fast").entered();
         let (w, h) = (camera.width as usize, camera.height as usize);
-        let grid = TileGrid::new(w, h);
+        let grid = TileGrid::new(w, h, TILE);
         let bins = project_and_bin(surfels, camera, settings, &grid);
         let consts = PixelConsts::new(settings);
 
@@ -501,47 +462,14 @@ impl Backend for FastBackend {
             );
         }
 
-        let _span = info_span!("project_backward").entered();
-        let cam = ProjectionCamera::new(camera);
-        let mut grads = SurfelGrads::zeros(surfels.len());
-        let mut mean2d = vec![0.0; surfels.len()];
         // Per surfel, its entries in tile order: a fixed order, no shared writes.
-        (
-            grads.position.par_iter_mut(),
-            grads.log_scale.par_iter_mut(),
-            grads.rotation.par_iter_mut(),
-            grads.opacity.par_iter_mut(),
-            grads.albedo.par_iter_mut(),
-            grads.roughness.par_iter_mut(),
-            grads.ior.par_iter_mut(),
-            mean2d.par_iter_mut(),
-            bins.projected.par_iter(),
-        )
-            .into_par_iter()
-            .enumerate()
-            .for_each(|(i, (pos, ls, rot, op, alb, rough, ior, m2d, p))| {
-                let Some(p) = p else {
-                    return;
-                };
-                let mut sum = LocalGrad::<f64>::default();
-                for g in &slot_grads[bins.surfel_slots[i]..bins.surfel_slots[i + 1]] {
-                    sum.add(g);
-                }
-                let g = sum.to_projected(&PlaneFrame::of(p));
-                let r = project::project_backward(surfels, p, &cam, &g);
-                *pos = r.position;
-                *ls = r.log_scale;
-                *rot = r.rotation;
-                *op = r.opacity;
-                *alb = r.albedo;
-                *rough = r.roughness;
-                *ior = r.ior;
-                *m2d = r.mean2d_norm;
-            });
-        Ok(RasterGrads {
-            surfels: grads,
-            mean2d_grad_norm: mean2d,
-        })
+        Ok(chain_to_raw(surfels, camera, &bins.projected, |i, p| {
+            let mut sum = LocalGrad::<f64>::default();
+            for g in &slot_grads[bins.surfel_slots[i]..bins.surfel_slots[i + 1]] {
+                sum.add(g);
+            }
+            sum.to_projected(&PlaneFrame::of(p))
+        }))
     }
 }
 
@@ -554,40 +482,7 @@ fn pixel_upstream(
     k: usize,
     eps: f64,
 ) -> PixelUpstream {
-    let a = gb.alpha[k];
-    let mut g_alpha = upstream.alpha[k];
-    let mut g_sums = [0.0; NUM_SUMS - 1];
-    if a > eps {
-        let g = [
-            depth_grad[k],
-            upstream.normal[k][0],
-            upstream.normal[k][1],
-            upstream.normal[k][2],
-            upstream.albedo[k][0],
-            upstream.albedo[k][1],
-            upstream.albedo[k][2],
-            upstream.roughness[k],
-            upstream.ior[k],
-        ];
-        let out = [
-            gb.depth[k],
-            gb.normal[k][0],
-            gb.normal[k][1],
-            gb.normal[k][2],
-            gb.albedo[k][0],
-            gb.albedo[k][1],
-            gb.albedo[k][2],
-            gb.roughness[k],
-            gb.ior[k],
-        ];
-        let inv = 1.0 / a;
-        let mut dot = 0.0;
-        for c in 0..NUM_SUMS - 1 {
-            dot += g[c] * out[c];
-            g_sums[c] = g[c] * inv;
-        }
-        g_alpha -= dot * inv;
-    }
+    let (g_alpha, g_sums) = unnormalize_upstream(gb, upstream, depth_grad, k, eps);
     PixelUpstream {
         g_alpha,
         g_sums,
@@ -614,7 +509,7 @@ mod tests {
         );
         let surfels = crate::bench::shell_surfels(400, 3);
         let settings = RasterSettings::default();
-        let grid = TileGrid::new(70, 50);
+        let grid = TileGrid::new(70, 50, TILE);
         let bins = project_and_bin(&surfels, &camera, &settings, &grid);
         let total = bins.entries.len();
         assert!(total > bins.splats.len(), "some surfels span several tiles");

@@ -9,18 +9,20 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{bail, Context};
-use phygap::brdf_lut::BrdfLut;
-use phygap::capture;
-use phygap::envmap::{LightProbe, PreparedEnv};
-use phygap::events::Stage;
-use phygap::gridmap::GridMap;
-use phygap::loss::LossWeights;
-use phygap::meshing::{self, GRIDMAP_MESH_RESOLUTION};
-use phygap::model::Model;
-use phygap::raster::RasterSettings;
-use phygap::reconstruction::{prefilter_plan, Reconstruction};
-use phygap::train::step::{self, StepInputs};
-use phygap::train::targets::{resolve_mode, ViewTarget};
+use phygap::core::brdf_lut::BrdfLut;
+use phygap::core::envmap::PreparedEnv;
+use phygap::core::events::Stage;
+use phygap::core::gridmap::GridMap;
+use phygap::core::light::LightProbe;
+use phygap::core::loss::LossWeights;
+use phygap::core::raster::RasterSettings;
+use phygap::core::step::ViewTarget;
+use phygap::io::capture;
+use phygap::io::model::Model;
+use phygap::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
+use phygap::pipeline::reconstruction::{prefilter_plan, Reconstruction};
+use phygap::pipeline::train::step::{self, StepInputs};
+use phygap::pipeline::train::targets::{resolve_mode, view_target};
 
 /// CPU seconds (user + system) of this process so far, from /proc (Linux; 0 elsewhere). On a
 /// shared machine CPU time / threads estimates the wall time an idle machine would take.
@@ -73,14 +75,16 @@ fn main() -> anyhow::Result<()> {
     );
 
     for resolution in [256, GRIDMAP_MESH_RESOLUTION] {
-        let (t, mesh) = best(repeats, || meshing::extract_from_model(&model, resolution));
+        let (t, mesh) = best(repeats, || {
+            mesh_extraction::extract_from_model(&model, resolution)
+        });
         let mesh = mesh?;
         println!(
             "mesh R = {resolution}: {t:.2} s ({} triangles)",
             mesh.triangles.len()
         );
     }
-    let mesh = meshing::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)?;
+    let mesh = mesh_extraction::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)?;
     let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
     let env = PreparedEnv::new(&model.envmap, plan)?;
     let cpu_before = cpu_seconds();
@@ -102,11 +106,11 @@ fn main() -> anyhow::Result<()> {
         .iter()
         .enumerate()
         .filter(|(_, v)| v.split == capture::Split::Train)
-        .map(|(i, v)| ViewTarget::new(i, v, mode))
+        .map(|(i, v)| view_target(i, v, mode))
         .collect();
-    let backend = phygap::backend::select(model.config.backend)?;
+    let backend = phygap::pipeline::backend::select(model.config.backend)?;
     let inputs = StepInputs {
-        backend: backend.as_ref(),
+        backend: &*backend,
         settings: RasterSettings::default(),
         lut: BrdfLut::shared(),
         weights: LossWeights::from(&model.config),
@@ -141,7 +145,7 @@ fn main() -> anyhow::Result<()> {
     );
     let (interval, mesh_interval) = (model.config.gridmap_interval, model.config.mesh_interval);
     let (t_mesh128, _) = best(1, || {
-        meshing::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)
+        mesh_extraction::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)
     });
     let amortized = t_grid / per
         + t_build / f64::from(interval.max(1))

@@ -5,8 +5,8 @@
 
 use std::path::Path;
 
-use phygap::mesh::bench::{time_extraction, time_ray_tracing};
-use phygap::mesh::TriangleMesh;
+use phygap::core::mesh::bench::{time_extraction, time_ray_tracing};
+use phygap::core::mesh::TriangleMesh;
 
 fn main() -> anyhow::Result<()> {
     println!("rayon threads: {}", rayon::current_num_threads());

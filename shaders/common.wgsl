@@ -27,10 +27,17 @@ struct Params {
     dims: vec4<u32>,
     // surfels, tile entries, unused, low-pass filter on (1) or off (0).
     counts: vec4<u32>,
-    // near, alpha_min, alpha_max, transmittance_min.
-    thr0: vec4<f32>,
-    // lowpass_sigma_px, 1/σ², α-normalization ε, unused.
-    thr1: vec4<f32>,
+    // Projection and compositing thresholds (RasterSettings).
+    near: f32,
+    alpha_min: f32,
+    alpha_max: f32,
+    transmittance_min: f32,
+    // The screen-space low-pass filter's σ in pixels, and 1/σ² (0 when the filter is off).
+    lowpass_sigma_px: f32,
+    inv_lowpass_sigma2: f32,
+    // ε of the α-normalization of the G-buffers.
+    normalize_alpha_min: f32,
+    pad0: f32,
     // The band of tile rows being rasterized (large images are split into bands): first tile
     // row, end tile row (exclusive), first pixel row, pixel rows. Per-pixel buffers and tile
     // ranges hold the band only, indexed from its first row.
@@ -108,7 +115,7 @@ fn evaluate(p: Proj, x: f32, y: f32, prm: Params) -> Hit {
     let rho_cut = p.q2.w;
     var rho2 = BIG;
     if prm.counts.w != 0u {
-        rho2 = (dx * dx + dy * dy) * prm.thr1.y;
+        rho2 = (dx * dx + dy * dy) * prm.inv_lowpass_sigma2;
     }
     // ρ_3d = (px² + py²) / pz² within the cut, tested without the division.
     let num = px * px + py * py;
@@ -138,15 +145,15 @@ fn evaluate(p: Proj, x: f32, y: f32, prm: Params) -> Hit {
     var z = p.q1.w;
     if use3d {
         z = p.q0.w * inv;
-        if !(z > prm.thr0.x && z < BIG) {
+        if !(z > prm.near && z < BIG) {
             return h;
         }
     }
     let g = exp(-0.5 * rho);
     let oa = p.mean_op.z * g;
-    let clamped = oa > prm.thr0.z;
-    let alpha = select(oa, prm.thr0.z, clamped);
-    if alpha < prm.thr0.y {
+    let clamped = oa > prm.alpha_max;
+    let alpha = select(oa, prm.alpha_max, clamped);
+    if alpha < prm.alpha_min {
         return h;
     }
     h.ok = true;

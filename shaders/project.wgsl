@@ -50,13 +50,13 @@ fn project(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
     tile_counts[i] = 0u;
 
     let r = raw[i];
-    let alpha_min = prm.thr0.y;
+    let alpha_min = prm.alpha_min;
     let opacity = sigmoid(r.pos_op.w);
     if !(opacity >= alpha_min) || opacity <= 0.0 {
         return;
     }
     let geo = geometry(r, prm);
-    if !(geo.c.z > prm.thr0.x) {
+    if !(geo.c.z > prm.near) {
         return;
     }
     let m0 = geo.m0;
@@ -108,7 +108,7 @@ fn project(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
         hi = vec2<f32>(ex.y, ey.y);
     }
     if prm.counts.w != 0u {
-        let r2d = min(prm.thr1.x * radius, BIG);
+        let r2d = min(prm.lowpass_sigma_px * radius, BIG);
         lo = min(lo, mean - vec2<f32>(r2d));
         hi = max(hi, mean + vec2<f32>(r2d));
     }

@@ -48,7 +48,7 @@ fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id)
             continue;
         }
         let next_t = trans * (1.0 - hit.alpha);
-        if next_t < prm.thr0.w {
+        if next_t < prm.transmittance_min {
             break;
         }
         let w = hit.alpha * trans;
@@ -64,7 +64,7 @@ fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id)
     let o = pix * NUM_OUT;
     gbuf[o] = alpha_sum;
     var inv = 0.0;
-    if alpha_sum > prm.thr1.z {
+    if alpha_sum > prm.normalize_alpha_min {
         inv = 1.0 / alpha_sum;
     }
     gbuf[o + 1u] = depth_sum * inv;

@@ -37,7 +37,7 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
     var g_depth = 0.0;
     var g_feat0 = vec4<f32>(0.0);
     var g_feat1 = vec4<f32>(0.0);
-    if a > prm.thr1.z {
+    if a > prm.normalize_alpha_min {
         let inv_a = 1.0 / a;
         var dot_sum = 0.0;
         for (var c = 1u; c < NUM_OUT; c++) {
@@ -50,7 +50,7 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
     }
     let xf = tp.centre.x;
     let yf = tp.centre.y;
-    let inv_sigma2 = prm.thr1.y;
+    let inv_sigma2 = prm.inv_lowpass_sigma2;
     var trans = final_t[pix];
     var b_acc = 0.0;
     for (var kk = walk; kk > 0u; kk--) {

@@ -7,9 +7,9 @@ use std::path::{Path, PathBuf};
 use glam::{DMat3, DVec2, DVec3};
 use rand::Rng;
 
-use crate::mesh::TriangleMesh;
-use crate::raster::{GBufferGrads, GBuffers};
-use crate::surfels::{Surfel, Surfels};
+use crate::core::mesh::TriangleMesh;
+use crate::core::raster::{GBufferGrads, GBuffers};
+use crate::core::surfels::{Surfel, Surfels};
 
 /// `../shared/data` beside the repository, or `None` after printing the skip notice that tests
 /// reading the shared captures give when it is absent (the project passes from a clone alone).

@@ -6,12 +6,12 @@
 //! on every SIMD path; and a short training run.
 
 use glam::{DMat3, DQuat, DVec3};
-use phygap::camera::Camera;
-use phygap::config::BackendChoice;
-use phygap::raster::cpu::CpuBackend;
-use phygap::raster::fast::{FastBackend, SimdPath};
-use phygap::raster::{Backend, GBuffers, RasterGrads, RasterSettings};
-use phygap::surfels::{logit, SurfelGrads, Surfels};
+use phygap::core::camera::Camera;
+use phygap::core::config::BackendChoice;
+use phygap::core::raster::cpu::CpuBackend;
+use phygap::core::raster::fast::{FastBackend, SimdPath};
+use phygap::core::raster::{Backend, GBuffers, RasterGrads, RasterSettings};
+use phygap::core::surfels::{logit, SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -364,10 +364,10 @@ fn results_are_bit_identical_across_runs_threads_and_simd_paths() {
 /// gpu (checked where `auto` did not find one).
 #[test]
 fn fast_is_selectable_and_the_auto_fallback() {
-    let b = phygap::backend::select(BackendChoice::Fast).unwrap();
+    let b = phygap::pipeline::backend::select(BackendChoice::Fast).unwrap();
     assert_eq!(b.name(), "fast");
     assert!(b.description().starts_with("fast ("), "{}", b.description());
-    let auto = phygap::backend::select(BackendChoice::Auto).unwrap();
+    let auto = phygap::pipeline::backend::select(BackendChoice::Auto).unwrap();
     assert!(["gpu", "fast"].contains(&auto.name()), "{}", auto.name());
     let parsed: BackendChoice = serde_json::from_str("\"fast\"").unwrap();
     assert_eq!(parsed, BackendChoice::Fast);
@@ -380,14 +380,14 @@ fn fast_is_selectable_and_the_auto_fallback() {
 #[test]
 fn short_training_run_matches_cpu() {
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::synth::SynthOptions {
-        shape: phygap::synth::Shape::Sphere,
+    let options = phygap::pipeline::synth::SynthOptions {
+        shape: phygap::pipeline::synth::Shape::Sphere,
         views: 8,
         size: 48,
         ..Default::default()
     };
-    phygap::synth::synth(dir.path(), &options).unwrap();
-    let capture = phygap::capture::load(dir.path()).unwrap();
+    phygap::pipeline::synth::synth(dir.path(), &options).unwrap();
+    let capture = phygap::io::capture::load(dir.path()).unwrap();
     let t0 = std::time::Instant::now();
     let (cpu, cpu_psnr) = train_with(BackendChoice::Cpu, &capture, false);
     let t1 = std::time::Instant::now();

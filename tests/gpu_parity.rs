@@ -8,10 +8,10 @@
 //! backend must be the one named, so a silent fallback to another API fails.
 
 use glam::DVec3;
+use phygap::core::raster::cpu::CpuBackend;
+use phygap::core::raster::{Backend, GBuffers, RasterSettings};
+use phygap::core::surfels::{SurfelGrads, Surfels};
 use phygap::gpu::{AtomicsMode, GpuOptions, Walk};
-use phygap::raster::cpu::CpuBackend;
-use phygap::raster::{Backend, GBuffers, RasterSettings};
-use phygap::surfels::{SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -154,23 +154,23 @@ fn fallback_paths_match_cpu() {
 /// with the gpu backend (whole steps on the device) follows the cpu run: every logged loss within
 /// 2% of the cpu run's at the same iteration (f32 gradients perturb the trajectory slightly), the
 /// mean loss over iterations 76–100 within 1%, and the final test PSNR within 0.2 dB.
-fn training_run_matches_cpu(shape: phygap::synth::Shape, gridmap: bool) {
+fn training_run_matches_cpu(shape: phygap::pipeline::synth::Shape, gridmap: bool) {
     if gpu(GpuOptions::default()).is_none() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::synth::SynthOptions {
+    let options = phygap::pipeline::synth::SynthOptions {
         shape,
         views: 8,
         size: 48,
         ..Default::default()
     };
-    phygap::synth::synth(dir.path(), &options).unwrap();
-    let capture = phygap::capture::load(dir.path()).unwrap();
+    phygap::pipeline::synth::synth(dir.path(), &options).unwrap();
+    let capture = phygap::io::capture::load(dir.path()).unwrap();
     let t0 = std::time::Instant::now();
-    let (cpu, cpu_psnr) = train_with(phygap::config::BackendChoice::Cpu, &capture, gridmap);
+    let (cpu, cpu_psnr) = train_with(phygap::core::config::BackendChoice::Cpu, &capture, gridmap);
     let t1 = std::time::Instant::now();
-    let (gpu, gpu_psnr) = train_with(phygap::config::BackendChoice::Gpu, &capture, gridmap);
+    let (gpu, gpu_psnr) = train_with(phygap::core::config::BackendChoice::Gpu, &capture, gridmap);
     let t2 = std::time::Instant::now();
     assert_eq!(cpu.len(), gpu.len(), "different numbers of logged steps");
     assert!(cpu.len() >= 20, "too few logged steps: {}", cpu.len());
@@ -206,14 +206,14 @@ fn training_run_matches_cpu(shape: phygap::synth::Shape, gridmap: bool) {
 /// Global light only.
 #[test]
 fn short_training_run_matches_cpu() {
-    training_run_matches_cpu(phygap::synth::Shape::Sphere, false);
+    training_run_matches_cpu(phygap::pipeline::synth::Shape::Sphere, false);
 }
 
 /// A torus (it occludes parts of itself) under GridMap, rebuilt every 20 steps of the PolarDR
 /// stage: the probes, the occlusion test and the blended light on the device.
 #[test]
 fn short_training_run_with_gridmap_matches_cpu() {
-    training_run_matches_cpu(phygap::synth::Shape::Torus, true);
+    training_run_matches_cpu(phygap::pipeline::synth::Shape::Torus, true);
 }
 
 /// No surfels, and surfels that are all culled (behind the camera), give empty buffers and zero
@@ -366,8 +366,8 @@ fn profiling_times_every_stage() {
 /// `auto` takes the gpu backend only on a hardware adapter (else fast); `gpu` takes any adapter.
 #[test]
 fn auto_prefers_hardware_and_gpu_takes_any_adapter() {
-    use phygap::backend::select;
-    use phygap::config::BackendChoice;
+    use phygap::core::config::BackendChoice;
+    use phygap::pipeline::backend::select;
     if gpu(GpuOptions::default()).is_none() {
         return;
     }

@@ -1,4 +1,4 @@
-//! Parity of the gpu backend's PolarDR shading with the f64 cpu code of `phygap::shading`: the
+//! Parity of the gpu backend's PolarDR shading with the f64 cpu code of `phygap::core::shading`: the
 //! Stokes images, the G-buffer gradients and the light's gradient, on random G-buffers under
 //! random environment maps (plain and Fresnel-weighted irradiance), with float atomics and with
 //! the compare-and-swap path, and on an image shaded in chunks; GridMap's light over two spheres;
@@ -6,12 +6,13 @@
 //! adapter exists.
 
 use glam::DVec3;
-use phygap::brdf_lut::BrdfLut;
-use phygap::camera::Camera;
-use phygap::envmap::{EnvGrad, LightProbe, PreparedEnv};
+use phygap::core::brdf_lut::BrdfLut;
+use phygap::core::camera::Camera;
+use phygap::core::envmap::{EnvGrad, PreparedEnv};
+use phygap::core::light::LightProbe;
+use phygap::core::raster::Backend;
+use phygap::core::shading::{self, GBufferGrad, ShadingBuffers, StokesImage, StokesImageGrad};
 use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions};
-use phygap::raster::Backend;
-use phygap::shading::{self, GBufferGrad, ShadingBuffers, StokesImage, StokesImageGrad};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -414,9 +415,9 @@ fn relative_l2(a: &EnvGrad, b: &EnvGrad) -> f64 {
 /// light's gradient (escaping rays only) to 1% in norm.
 #[test]
 fn gridmap_shading_matches_cpu() {
-    use phygap::bvh::Bvh;
-    use phygap::gridmap::GridMap;
-    use phygap::reconstruction::prefilter_plan;
+    use phygap::core::gridmap::GridMap;
+    use phygap::core::mesh::bvh::Bvh;
+    use phygap::pipeline::reconstruction::prefilter_plan;
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
     };

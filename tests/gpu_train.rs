@@ -8,20 +8,21 @@
 use std::collections::BTreeMap;
 
 use glam::DVec3;
-use phygap::brdf_lut::BrdfLut;
-use phygap::camera::Camera;
-use phygap::config::TrainConfig;
-use phygap::densify::DensifyStats;
-use phygap::envmap::{EnvGrad, LightProbe, PreparedEnv};
-use phygap::events::Stage;
+use phygap::core::brdf_lut::BrdfLut;
+use phygap::core::camera::Camera;
+use phygap::core::config::TrainConfig;
+use phygap::core::densify::DensifyStats;
+use phygap::core::envmap::{EnvGrad, PreparedEnv};
+use phygap::core::events::Stage;
+use phygap::core::light::LightProbe;
+use phygap::core::loss::LossWeights;
+use phygap::core::optim::{Adam, AdamConfig};
+use phygap::core::raster::cpu::CpuBackend;
+use phygap::core::raster::RasterSettings;
+use phygap::core::step::{Polarizer, StepPlan, ViewTarget};
+use phygap::core::surfels::Surfels;
 use phygap::gpu::{DeviceStep, DeviceTrainer, GpuBackend, GpuOptions};
-use phygap::loss::LossWeights;
-use phygap::optim::{Adam, AdamConfig};
-use phygap::raster::cpu::CpuBackend;
-use phygap::raster::RasterSettings;
-use phygap::surfels::Surfels;
-use phygap::train::step::{self, StepInputs, StepPlan};
-use phygap::train::targets::{Polarizer, ViewTarget};
+use phygap::pipeline::train::step::{self, StepInputs};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -155,7 +156,7 @@ fn compare(
     target: &ViewTarget,
     stage: Stage,
     light: &dyn LightProbe,
-    grid: Option<&phygap::gridmap::GridMap>,
+    grid: Option<&phygap::core::gridmap::GridMap>,
 ) -> f64 {
     let settings = RasterSettings::default();
     let angles: BTreeMap<String, f64> = [("cam0".to_owned(), 0.6)].into();
@@ -306,8 +307,8 @@ fn a_device_step_matches_the_host_step() {
 /// back-projects from its depth.
 #[test]
 fn a_device_step_under_gridmap_matches_the_host_step() {
-    use phygap::gridmap::GridMap;
-    use phygap::reconstruction::prefilter_plan;
+    use phygap::core::gridmap::GridMap;
+    use phygap::pipeline::reconstruction::prefilter_plan;
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
     };
@@ -494,8 +495,8 @@ fn a_step_whose_entries_overflow_is_rerun_with_room() {
 /// failing.
 #[test]
 fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
-    use phygap::config::TrainConfig;
-    use phygap::events::TrainEvent;
+    use phygap::core::config::TrainConfig;
+    use phygap::core::events::TrainEvent;
     let limit = 600_000;
     let Some(gpu) = gpu(GpuOptions {
         max_binding_bytes: Some(limit),
@@ -503,14 +504,15 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
     }) else {
         return;
     };
+    let gpu = phygap::pipeline::backend::Engine::Gpu(gpu);
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::synth::SynthOptions {
+    let options = phygap::pipeline::synth::SynthOptions {
         views: 6,
         size: 112,
         ..Default::default()
     };
-    phygap::synth::synth(&dir.path().join("capture"), &options).unwrap();
-    let capture = phygap::capture::load(&dir.path().join("capture")).unwrap();
+    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
+    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
     // The device step needs 112 · 112 · 15 f32 for the SSIM planes: more than the limit.
     assert!(112 * 112 * 15 * 4 > limit);
     let config = TrainConfig {
@@ -525,7 +527,7 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
     let cancel = std::sync::atomic::AtomicBool::new(false);
     let mut steps = Vec::new();
     let mut description = String::new();
-    let outcome = phygap::train::train_on(
+    let outcome = phygap::pipeline::train::train_on(
         &gpu,
         &capture,
         &dir.path().join("model"),
@@ -541,7 +543,7 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
         },
     )
     .unwrap();
-    assert_eq!(outcome, phygap::train::TrainOutcome::Finished);
+    assert_eq!(outcome, phygap::pipeline::train::TrainOutcome::Finished);
     assert!(
         description.ends_with("whole steps on the device"),
         "{description}"
@@ -556,7 +558,7 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
 /// chain (D = 64) with Fresnel-weighted irradiance (five irradiance kernels) and for a small one.
 #[test]
 fn the_device_prefilter_matches_the_host_prefilter() {
-    use phygap::reconstruction::prefilter_plan;
+    use phygap::pipeline::reconstruction::prefilter_plan;
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
     };
@@ -655,20 +657,20 @@ fn the_device_prefilter_matches_the_host_prefilter() {
 /// holds the device's state (surfels, moments, densification statistics, the learned map).
 #[test]
 fn an_interrupted_device_run_resumes_from_its_checkpoint() {
-    use phygap::config::{BackendChoice, TrainConfig};
-    use phygap::events::TrainEvent;
-    use phygap::train::{train, TrainOutcome};
+    use phygap::core::config::{BackendChoice, TrainConfig};
+    use phygap::core::events::TrainEvent;
+    use phygap::pipeline::train::{train, TrainOutcome};
     if gpu(GpuOptions::default()).is_none() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::synth::SynthOptions {
+    let options = phygap::pipeline::synth::SynthOptions {
         views: 8,
         size: 40,
         ..Default::default()
     };
-    phygap::synth::synth(&dir.path().join("capture"), &options).unwrap();
-    let capture = phygap::capture::load(&dir.path().join("capture")).unwrap();
+    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
+    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
     let config = TrainConfig {
         iterations: 60,
         backend: BackendChoice::Gpu,
@@ -708,9 +710,10 @@ fn an_interrupted_device_run_resumes_from_its_checkpoint() {
     })
     .unwrap();
     assert_eq!(outcome, TrainOutcome::Interrupted { iteration: 30 });
-    let (state, _) =
-        phygap::train::state::TrainState::load(&split.join(phygap::train::state::CHECKPOINT_FILE))
-            .unwrap();
+    let (state, _) = phygap::pipeline::train::state::TrainState::load(
+        &split.join(phygap::pipeline::train::state::CHECKPOINT_FILE),
+    )
+    .unwrap();
     assert_eq!(state.iteration, 30);
     assert!(state.surfels.is_finite() && !state.surfels.is_empty());
     assert!(state.adam.group("position").is_some_and(|g| g.step == 30));
@@ -743,20 +746,21 @@ fn an_interrupted_device_run_resumes_from_its_checkpoint() {
 /// rasterizer while the trainer owns the device.
 #[test]
 fn a_device_run_remeshes_gridmap_without_failures() {
-    use phygap::config::TrainConfig;
-    use phygap::events::TrainEvent;
+    use phygap::core::config::TrainConfig;
+    use phygap::core::events::TrainEvent;
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
     };
+    let gpu = phygap::pipeline::backend::Engine::Gpu(gpu);
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::synth::SynthOptions {
-        shape: phygap::synth::Shape::Torus,
+    let options = phygap::pipeline::synth::SynthOptions {
+        shape: phygap::pipeline::synth::Shape::Torus,
         views: 9,
         size: 24,
         ..Default::default()
     };
-    phygap::synth::synth(&dir.path().join("capture"), &options).unwrap();
-    let capture = phygap::capture::load(&dir.path().join("capture")).unwrap();
+    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
+    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
     let run = |recovery: u32| {
         let config = TrainConfig {
             iterations: 200,
@@ -775,7 +779,7 @@ fn a_device_run_remeshes_gridmap_without_failures() {
         let cancel = std::sync::atomic::AtomicBool::new(false);
         let mut warnings = Vec::new();
         let mut description = String::new();
-        phygap::train::train_on(
+        phygap::pipeline::train::train_on(
             &gpu,
             &capture,
             &dir.path().join(format!("model{recovery}")),

@@ -7,15 +7,16 @@
 use std::path::PathBuf;
 
 use glam::DVec3;
-use phygap::brdf_lut::BrdfLut;
-use phygap::capture::{self, Measurement, View};
-use phygap::envmap::{CubeMap, LightProbe, MipChainSpec, PrefilterPlan, PreparedEnv, WorldUp};
-use phygap::gridmap::GridMap;
-use phygap::image_io::{read_image, Image};
-use phygap::mesh::TriangleMesh;
-use phygap::metrics;
-use phygap::shading::{shade, PixelInput};
-use phygap::surfels::{Surfel, Surfels};
+use phygap::core::brdf_lut::BrdfLut;
+use phygap::core::envmap::{CubeMap, MipChainSpec, PrefilterPlan, PreparedEnv, WorldUp};
+use phygap::core::gridmap::GridMap;
+use phygap::core::light::LightProbe;
+use phygap::core::mesh::TriangleMesh;
+use phygap::core::metrics;
+use phygap::core::shading::{shade, PixelInput};
+use phygap::core::surfels::{Surfel, Surfels};
+use phygap::formats::image::{read_image, Image};
+use phygap::io::capture::{self, Measurement, View};
 use phygap::testing::shared_data_dir;
 
 fn image(path: &Option<PathBuf>) -> Image {

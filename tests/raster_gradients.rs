@@ -11,11 +11,11 @@
 //! thresholds on scenes whose few surfels cannot reach the early stop.
 
 use glam::{DMat3, DQuat, DVec3};
-use phygap::camera::Camera;
-use phygap::gradcheck::{numerical_gradient, worst_mismatch};
-use phygap::raster::cpu::CpuBackend;
-use phygap::raster::{Backend, GBufferGrads, GBuffers, RasterError, RasterSettings};
-use phygap::surfels::{sigmoid, Surfels};
+use phygap::core::camera::Camera;
+use phygap::core::gradcheck::{numerical_gradient, worst_mismatch};
+use phygap::core::raster::cpu::CpuBackend;
+use phygap::core::raster::{Backend, GBufferGrads, GBuffers, RasterError, RasterSettings};
+use phygap::core::surfels::{sigmoid, Surfels};
 use phygap::testing::random_upstream;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -566,8 +566,8 @@ fn fuzz_degenerate_scenes_never_produce_nan_or_inf() {
 
 #[test]
 fn output_is_independent_of_tile_size_and_deterministic() {
-    let camera = phygap::bench::shell_camera(70, 50);
-    let s = phygap::bench::shell_surfels(3000, 5);
+    let camera = phygap::pipeline::bench::shell_camera(70, 50);
+    let s = phygap::pipeline::bench::shell_surfels(3000, 5);
     let base = RasterSettings::default();
     let reference = CpuBackend.forward(&s, &camera, &base).unwrap();
     assert!(

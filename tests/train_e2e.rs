@@ -1,4 +1,4 @@
-//! End-to-end training on captures the project makes itself (`phygap::synth`): the loss falls and
+//! End-to-end training on captures the project makes itself (`phygap::pipeline::synth`): the loss falls and
 //! the test PSNR rises over a short run; a run interrupted at a checkpoint and resumed ends
 //! bit-identical to an uninterrupted one; equal seeds give equal runs; every mode trains; the
 //! model folder renders, evaluates and exports.
@@ -6,12 +6,12 @@
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use phygap::capture::{self, Capture};
-use phygap::config::{Mode, TrainConfig};
-use phygap::events::{Stage, TrainEvent};
-use phygap::synth::{synth, SynthOptions};
-use phygap::train::state::{TrainState, CHECKPOINT_FILE};
-use phygap::train::{train, TrainOutcome};
+use phygap::core::config::{Mode, TrainConfig};
+use phygap::core::events::{Stage, TrainEvent};
+use phygap::io::capture::{self, Capture};
+use phygap::pipeline::synth::{synth, SynthOptions};
+use phygap::pipeline::train::state::{TrainState, CHECKPOINT_FILE};
+use phygap::pipeline::train::{train, TrainOutcome};
 
 fn synthetic_capture(dir: &Path, views: usize, size: u32) -> Capture {
     let options = SynthOptions {
@@ -127,16 +127,16 @@ fn training_lowers_the_loss_and_raises_test_psnr() {
     assert!((metrics["psnr"].as_f64().unwrap() - last).abs() < 1e-9);
     let normal_mae = metrics["normal_mae_deg"].as_f64().unwrap();
     assert!(normal_mae > 0.0 && normal_mae < 45.0, "{metrics}");
-    let reloaded = phygap::model::Model::load(&model).unwrap();
+    let reloaded = phygap::io::model::Model::load(&model).unwrap();
     assert_eq!(reloaded.info.mode, Mode::Full);
-    let reconstruction = phygap::reconstruction::Reconstruction::new(reloaded).unwrap();
+    let reconstruction = phygap::pipeline::reconstruction::Reconstruction::new(reloaded).unwrap();
     let report = reconstruction.evaluate(&capture).unwrap();
     assert!(
         (report.psnr.unwrap() - last).abs() < 0.5,
         "reloaded model (f32 PLY) evaluates like the trained one: {} vs {last}",
         report.psnr.unwrap()
     );
-    let exported = phygap::export::export(&model, &dir.path().join("export")).unwrap();
+    let exported = phygap::pipeline::export::export(&model, &dir.path().join("export")).unwrap();
     assert!(exported.iter().any(|p| p.ends_with("renders/s0/000.png")));
 }
 
@@ -228,7 +228,7 @@ fn partial_and_rgb_modes_train_and_partial_recovers_polarizer_angles() {
     {
         let theta = truth[k % 2].to_radians();
         let read = |key: &str| {
-            phygap::image_io::read_image(&root.join(frame[key].as_str().unwrap()))
+            phygap::formats::image::read_image(&root.join(frame[key].as_str().unwrap()))
                 .unwrap()
                 .0
         };
@@ -241,7 +241,7 @@ fn partial_and_rgb_modes_train_and_partial_recovers_polarizer_angles() {
                     + s2.data[i] * (2.0 * theta).sin() as f32);
         }
         let name = format!("lp_{k:03}.exr");
-        phygap::image_io::write_exr(&root.join(&name), &image).unwrap();
+        phygap::formats::image::write_exr(&root.join(&name), &image).unwrap();
         let object = frame.as_object_mut().unwrap();
         for key in ["s0_path", "s1_path", "s2_path"] {
             object.remove(key);

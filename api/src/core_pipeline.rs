@@ -5,17 +5,17 @@
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 
-use phygap::config::TrainConfig;
-use phygap::events::TrainEvent;
+use phygap::core::config::TrainConfig;
+use phygap::core::events::TrainEvent;
 
 use crate::pipeline::{CaptureInfo, Pipeline, PipelineError, RunOutcome};
 
-/// Calls `phygap::capture::load`, `phygap::train::train`, `phygap::export::export` and
-/// `phygap::relight::relight`.
+/// Calls `phygap::io::capture::load`, `phygap::pipeline::train::train`, `phygap::pipeline::export::export` and
+/// `phygap::pipeline::relight::relight`.
 pub struct CorePipeline;
 
-fn load(capture_dir: &Path) -> Result<phygap::capture::Capture, PipelineError> {
-    phygap::capture::load(capture_dir).map_err(|e| PipelineError::InvalidCapture(e.to_string()))
+fn load(capture_dir: &Path) -> Result<phygap::io::capture::Capture, PipelineError> {
+    phygap::io::capture::load(capture_dir).map_err(|e| PipelineError::InvalidCapture(e.to_string()))
 }
 
 /// The error of a core `stage` that failed while running.
@@ -46,9 +46,10 @@ impl Pipeline for CorePipeline {
         on_event: &mut dyn FnMut(&TrainEvent),
     ) -> Result<RunOutcome, PipelineError> {
         let capture = load(capture_dir)?;
-        match phygap::train::train(&capture, model_dir, config, resume, cancel, on_event) {
-            Ok(phygap::train::TrainOutcome::Finished) => Ok(RunOutcome::Finished),
-            Ok(phygap::train::TrainOutcome::Interrupted { iteration }) => {
+        match phygap::pipeline::train::train(&capture, model_dir, config, resume, cancel, on_event)
+        {
+            Ok(phygap::pipeline::train::TrainOutcome::Finished) => Ok(RunOutcome::Finished),
+            Ok(phygap::pipeline::train::TrainOutcome::Interrupted { iteration }) => {
                 Ok(RunOutcome::Interrupted { iteration })
             }
             Err(e) => Err(failed("training", e)),
@@ -56,7 +57,7 @@ impl Pipeline for CorePipeline {
     }
 
     fn export(&self, model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
-        phygap::export::export(model_dir, out_dir).map_err(|e| failed("export", e))
+        phygap::pipeline::export::export(model_dir, out_dir).map_err(|e| failed("export", e))
     }
 
     fn relight(
@@ -67,7 +68,7 @@ impl Pipeline for CorePipeline {
         out_dir: &Path,
         rotate_deg: f64,
     ) -> Result<Vec<PathBuf>, PipelineError> {
-        phygap::relight::relight(model_dir, envmap, cameras, out_dir, rotate_deg)
+        phygap::pipeline::relight::relight(model_dir, envmap, cameras, out_dir, rotate_deg)
             .map_err(|e| failed("relighting", e))
     }
 }

@@ -7,7 +7,7 @@ use clap::Parser;
 use phygap_api::cli::{Cli, Command};
 
 fn main() -> anyhow::Result<()> {
-    phygap::allocator::keep_large_buffers();
+    phygap::pipeline::allocator::keep_large_buffers();
     tokio::runtime::Runtime::new()
         .context("starting the async runtime")?
         .block_on(serve())

@@ -10,10 +10,12 @@
 //! mesh's faces as `vertex_indices`.
 
 use glam::DVec3;
-use phygap::kdtree::KdTree;
-use phygap::ply::{parse_ply, to_binary_le, Element, Ply, PlyError, PlyFormat, ScalarType};
-use phygap::surfels::ply::surfels_from_ply;
-use phygap::surfels::Surfel;
+use phygap::core::kdtree::KdTree;
+use phygap::core::surfels::ply::surfels_from_ply;
+use phygap::core::surfels::Surfel;
+use phygap::formats::ply::{
+    parse_ply, to_binary_le, Element, Ply, PlyError, PlyFormat, ScalarType,
+};
 use thiserror::Error;
 
 /// Surfels averaged per vertex.
@@ -93,7 +95,7 @@ pub fn transfer_materials(
 /// sRGB encoding of a linear value in [0, 1], as an 8-bit level.
 fn srgb_level(linear: f64) -> f64 {
     let v = linear.clamp(0.0, 1.0) as f32;
-    (phygap::image_io::linear_to_srgb(v) * 255.0).round() as f64
+    (phygap::formats::image::linear_to_srgb(v) * 255.0).round() as f64
 }
 
 /// `mesh.ply` and `surfels.ply` (their bytes) → the material mesh's PLY bytes.

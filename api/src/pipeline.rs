@@ -6,8 +6,8 @@
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 
-use phygap::config::TrainConfig;
-use phygap::events::TrainEvent;
+use phygap::core::config::TrainConfig;
+use phygap::core::events::TrainEvent;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 

@@ -53,12 +53,12 @@ impl Scenario {
     /// A capture worth a screenshot, trained with the default settings.
     fn showcase() -> Scenario {
         let dir = tempfile::tempdir().unwrap();
-        let options = phygap::synth::SynthOptions {
-            shape: phygap::synth::Shape::Creature,
-            texture: phygap::synth::Texture::Checker,
+        let options = phygap::pipeline::synth::SynthOptions {
+            shape: phygap::pipeline::synth::Shape::Creature,
+            texture: phygap::pipeline::synth::Texture::Checker,
             ..Default::default()
         };
-        phygap::synth::synth(dir.path(), &options).unwrap();
+        phygap::pipeline::synth::synth(dir.path(), &options).unwrap();
         let iterations = std::env::var("PHYGAP_WEB_ITERATIONS")
             .ok()
             .and_then(|v| v.parse().ok())

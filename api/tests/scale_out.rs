@@ -90,8 +90,11 @@ async fn a_worker_elsewhere_runs_the_job_and_the_api_serves_its_artifacts_from_t
     // A relight job (its inputs uploaded to the API) runs on the worker, which fetches them and
     // the parent's model from the bucket.
     let envmap_path = api_dir.path().join("sky.exr");
-    phygap::image_io::write_exr(&envmap_path, &phygap::image_io::Image::filled(8, 4, 3, 2.0))
-        .unwrap();
+    phygap::formats::image::write_exr(
+        &envmap_path,
+        &phygap::formats::image::Image::filled(8, 4, 3, 2.0),
+    )
+    .unwrap();
     let response = api
         .relight(&job, std::fs::read(&envmap_path).unwrap(), "0")
         .await;

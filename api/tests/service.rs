@@ -515,8 +515,11 @@ async fn relight_runs_as_its_own_job() {
     let train_id = t.start_training(10, 5).await;
     // Not trained yet (or still running): refused.
     let envmap_path = dir.path().join("sky.exr");
-    phygap::image_io::write_exr(&envmap_path, &phygap::image_io::Image::filled(8, 4, 3, 2.0))
-        .unwrap();
+    phygap::formats::image::write_exr(
+        &envmap_path,
+        &phygap::formats::image::Image::filled(8, 4, 3, 2.0),
+    )
+    .unwrap();
     let envmap = std::fs::read(&envmap_path).unwrap();
     t.wait_state(&train_id, "succeeded", LONG).await;
     let response = t.relight(&train_id, b"not an image".to_vec(), "90").await;
@@ -547,7 +550,7 @@ async fn relight_runs_as_its_own_job() {
         .unwrap();
     let relit_path = dir.path().join("relit.exr");
     std::fs::write(&relit_path, &relit).unwrap();
-    let (image, _) = phygap::image_io::read_image(&relit_path).unwrap();
+    let (image, _) = phygap::formats::image::read_image(&relit_path).unwrap();
     let mean = image.data.iter().map(|&v| f64::from(v)).sum::<f64>() / image.data.len() as f64;
     assert!(
         mean > 0.0 && image.first_non_finite().is_none(),

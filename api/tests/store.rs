@@ -8,7 +8,7 @@ use std::collections::HashSet;
 use std::sync::Arc;
 
 use common::postgres::TempPostgres;
-use phygap::config::TrainConfig;
+use phygap::core::config::TrainConfig;
 use phygap_api::store::{
     CaptureRecord, DeleteOutcome, Finish, JobSpec, JobState, NewJob, PostgresStore, Progress,
     QueueCounts, SqliteStore, Store, StoreError,

@@ -52,9 +52,9 @@ async fn material_mesh_and_captured_views_of_a_trained_job() {
         (status, content_type.as_deref()),
         (200, Some("application/x-ply"))
     );
-    let ply = phygap::ply::parse_ply(&ply).unwrap();
+    let ply = phygap::formats::ply::parse_ply(&ply).unwrap();
     let (_, _, mesh) = bytes(format!("/v1/jobs/{id}/artifacts/mesh.ply")).await;
-    let mesh = phygap::ply::parse_ply(&mesh).unwrap();
+    let mesh = phygap::formats::ply::parse_ply(&mesh).unwrap();
     let vertex = ply.element("vertex").unwrap();
     assert_eq!(vertex.count, mesh.element("vertex").unwrap().count);
     assert_eq!(

@@ -12,7 +12,7 @@ use wgpu::util::DeviceExt;
 
 use super::profile::PassProfiler;
 use super::{GpuContext, GpuError};
-use crate::raster::StageTime;
+use crate::core::raster::StageTime;
 
 /// Threads per workgroup of the 1-D kernels (`@workgroup_size(256)`, `linear_index`).
 pub(super) const GROUP: u32 = 256;

@@ -1,8 +1,8 @@
-//! The wgpu compute backend: the rasterizer of [`crate::raster`], PolarDR shading and whole
+//! The wgpu compute backend: the rasterizer of [`crate::core::raster`], PolarDR shading and whole
 //! training steps as WGSL compute kernels (`shaders/*.wgsl`), in f32 on the device.
 //!
 //! [`GpuContext`] opens an adapter (Vulkan, Metal or DX12, including software Vulkan such as
-//! Mesa's lavapipe) and [`GpuBackend`] implements [`crate::raster::Backend`] with it:
+//! Mesa's lavapipe) and [`GpuBackend`] implements [`crate::core::raster::Backend`] with it:
 //! projection and culling (one thread per surfel), an exclusive scan of the per-surfel tile
 //! counts, emission of (tile, depth, surfel) entries and a radix sort of them on the device,
 //! per-tile ranges, forward compositing (one 8×8 workgroup per tile, one thread per pixel),
@@ -71,14 +71,14 @@ pub enum GpuError {
     Device(String),
 }
 
-impl From<GpuError> for crate::raster::RasterError {
+impl From<GpuError> for crate::core::raster::RasterError {
     fn from(e: GpuError) -> Self {
-        crate::raster::RasterError::Gpu(e.to_string())
+        crate::core::raster::RasterError::Gpu(e.to_string())
     }
 }
 
-impl From<GpuError> for crate::shading::ShadingError {
+impl From<GpuError> for crate::core::shading::ShadingError {
     fn from(e: GpuError) -> Self {
-        crate::shading::ShadingError::Gpu(e.to_string())
+        crate::core::shading::ShadingError::Gpu(e.to_string())
     }
 }

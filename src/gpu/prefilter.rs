@@ -1,5 +1,5 @@
 //! The environment prefilter on the device (`shaders/prefilter.wgsl`), an f32 port of
-//! [`crate::envmap::PreparedEnv::new`] and [`crate::envmap::PreparedEnv::backward`] for the
+//! [`crate::core::envmap::PreparedEnv::new`] and [`crate::core::envmap::PreparedEnv::backward`] for the
 //! resident trainer: the learned cube map goes up raw, its prefiltered light is written straight
 //! into the light buffer the shading kernels read, and the light's gradient comes back through
 //! the transposed convolutions as a gradient on the raw texels. A plan's geometry (texel
@@ -16,8 +16,8 @@ use bytemuck::{Pod, Zeroable};
 use super::device::Device;
 use super::layout::wgsl_mirror;
 use super::GpuError;
-use crate::envmap::prefilter::{ConvolutionTable, Kernel};
-use crate::envmap::{CubeMap, PrefilterPlan};
+use crate::core::envmap::prefilter::{ConvolutionTable, Kernel};
+use crate::core::envmap::{CubeMap, PrefilterPlan};
 
 const PREFILTER: &str = include_str!("../../shaders/prefilter.wgsl");
 

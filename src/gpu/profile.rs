@@ -8,7 +8,7 @@
 
 use std::sync::Mutex;
 
-use crate::raster::StageTime;
+use crate::core::raster::StageTime;
 
 /// Passes timed per submission; later passes of the same submission go untimed.
 const MAX_PASSES: u32 = 64;

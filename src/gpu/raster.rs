@@ -41,18 +41,19 @@ use super::device::Device;
 use super::layout::wgsl_mirror;
 use super::shade::{Lighting, ShadePipelines};
 use super::{GpuContext, GpuError};
-use crate::brdf_lut::BrdfLut;
-use crate::camera::Camera;
-use crate::envmap::{EnvGrad, LightKind, LightProbe};
-use crate::raster::{
+use crate::core::brdf_lut::BrdfLut;
+use crate::core::camera::Camera;
+use crate::core::envmap::EnvGrad;
+use crate::core::light::{LightKind, LightProbe};
+use crate::core::raster::{
     begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
     StageTime,
 };
-use crate::shading::{
+use crate::core::shading::{
     self, GBufferGrad, SavedShading, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
 };
-use crate::surfels::{SurfelGrads, Surfels};
+use crate::core::surfels::{SurfelGrads, Surfels};
 
 /// Tile edge of the device kernels (`TILE` in shaders/common.wgsl).
 pub(super) const TILE: u32 = 8;
@@ -119,8 +120,14 @@ wgsl_mirror! {
         intr: [f32; 4],
         dims: [u32; 4],
         counts: [u32; 4],
-        thr0: [f32; 4],
-        thr1: [f32; 4],
+        near: f32,
+        alpha_min: f32,
+        alpha_max: f32,
+        transmittance_min: f32,
+        lowpass_sigma_px: f32,
+        inv_lowpass_sigma2: f32,
+        normalize_alpha_min: f32,
+        pad0: f32,
         band: [u32; 4],
     }
 }
@@ -157,22 +164,18 @@ impl ParamsGpu {
                 camera.height.div_ceil(TILE),
             ],
             counts: [surfels, 0, 0, lowpass as u32],
-            thr0: [
-                settings.near as f32,
-                settings.alpha_min as f32,
-                settings.alpha_max as f32,
-                settings.transmittance_min as f32,
-            ],
-            thr1: [
-                sigma as f32,
-                if lowpass {
-                    (1.0 / (sigma * sigma)) as f32
-                } else {
-                    0.0
-                },
-                settings.normalize_alpha_min as f32,
-                0.0,
-            ],
+            near: settings.near as f32,
+            alpha_min: settings.alpha_min as f32,
+            alpha_max: settings.alpha_max as f32,
+            transmittance_min: settings.transmittance_min as f32,
+            lowpass_sigma_px: sigma as f32,
+            inv_lowpass_sigma2: if lowpass {
+                (1.0 / (sigma * sigma)) as f32
+            } else {
+                0.0
+            },
+            normalize_alpha_min: settings.normalize_alpha_min as f32,
+            pad0: 0.0,
             band: [
                 band.first,
                 band.end,
@@ -1112,10 +1115,6 @@ impl Backend for GpuBackend {
 
     fn take_stage_times(&self) -> Vec<StageTime> {
         self.device.take_stage_times()
-    }
-
-    fn as_gpu(&self) -> Option<&GpuBackend> {
-        Some(self)
     }
 
     /// On the device under the global light or GridMap; other lights with the cpu code.

@@ -1,5 +1,5 @@
 //! PolarDR shading on the device: [`GpuBackend`]'s `shade` and `shade_backward` in f32, a port
-//! of [`crate::shading`] (`shaders/shade_common.wgsl`, `shade.wgsl`, `shade_backward.wgsl`),
+//! of [`crate::core::shading`] (`shaders/shade_common.wgsl`, `shade.wgsl`, `shade_backward.wgsl`),
 //! under the global environment (`light_global*.wgsl`) or GridMap's local probes over it
 //! (`light_gridmap*.wgsl`: anchor weights, blended probe lookups and the occlusion test of mirror
 //! rays against the mesh's BVH). Lights of other kinds are shaded by the cpu code.
@@ -28,11 +28,13 @@ use super::device::Device;
 use super::layout::wgsl_mirror;
 use super::raster::GpuBackend;
 use super::GpuError;
-use crate::brdf_lut::BrdfLut;
-use crate::camera::Camera;
-use crate::envmap::{EnvGrad, PrefilterPlan, PreparedEnv};
-use crate::gridmap::GridMap;
-use crate::shading::{GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad};
+use crate::core::brdf_lut::BrdfLut;
+use crate::core::camera::Camera;
+use crate::core::envmap::{EnvGrad, PrefilterPlan, PreparedEnv};
+use crate::core::gridmap::GridMap;
+use crate::core::shading::{
+    GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
+};
 
 const SHADE_COMMON: &str = include_str!("../../shaders/shade_common.wgsl");
 const SHADE: &str = include_str!("../../shaders/shade.wgsl");

@@ -6,10 +6,10 @@
 pub mod parity;
 
 use glam::{DMat3, DQuat, DVec3};
-use phygap::camera::Camera;
-use phygap::envmap::{CubeMap, MipChainSpec, PrefilterPlan, PreparedEnv};
+use phygap::core::camera::Camera;
+use phygap::core::envmap::{CubeMap, MipChainSpec, PrefilterPlan, PreparedEnv};
+use phygap::core::surfels::{logit, Surfels};
 use phygap::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuOptions};
-use phygap::surfels::{logit, Surfels};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 

@@ -3,10 +3,10 @@
 //! under default and smooth settings, and a short training run.
 #![allow(dead_code)]
 
-use phygap::camera::Camera;
-use phygap::raster::cpu::CpuBackend;
-use phygap::raster::{Backend, GBuffers, RasterSettings};
-use phygap::surfels::{SurfelGrads, Surfels};
+use phygap::core::camera::Camera;
+use phygap::core::raster::cpu::CpuBackend;
+use phygap::core::raster::{Backend, GBuffers, RasterSettings};
+use phygap::core::surfels::{SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -141,8 +141,8 @@ pub fn flat_groups(g: &SurfelGrads, mean2d: &[f64]) -> Vec<(&'static str, Vec<f6
 /// Asserts each gradient group agrees to `tol` relative, `‖got − cpu‖ ≤ tol ‖cpu‖` over the group,
 /// and every entry within `tol` of the group's largest magnitude.
 pub fn assert_backward_parity(
-    got: &phygap::raster::RasterGrads,
-    cpu: &phygap::raster::RasterGrads,
+    got: &phygap::core::raster::RasterGrads,
+    cpu: &phygap::core::raster::RasterGrads,
     tol: f64,
     what: &str,
 ) {
@@ -152,8 +152,8 @@ pub fn assert_backward_parity(
 /// [`assert_backward_parity`], except that the groups named in `zero` must be exactly zero in
 /// both (e.g. `log_scale` where every pixel takes the low-pass branch).
 pub fn assert_backward_parity_with_zero_groups(
-    got: &phygap::raster::RasterGrads,
-    cpu: &phygap::raster::RasterGrads,
+    got: &phygap::core::raster::RasterGrads,
+    cpu: &phygap::core::raster::RasterGrads,
     tol: f64,
     what: &str,
     zero: &[&str],
@@ -260,12 +260,12 @@ pub fn check_scene(
 
 /// The logged (iteration, loss) pairs and the final test PSNR of a 100-iteration run.
 pub fn train_with(
-    backend: phygap::config::BackendChoice,
-    capture: &phygap::capture::Capture,
+    backend: phygap::core::config::BackendChoice,
+    capture: &phygap::io::capture::Capture,
     gridmap: bool,
 ) -> (Vec<(u32, f64)>, f64) {
-    use phygap::config::TrainConfig;
-    use phygap::events::TrainEvent;
+    use phygap::core::config::TrainConfig;
+    use phygap::core::events::TrainEvent;
     let config = TrainConfig {
         iterations: 100,
         backend,
@@ -283,7 +283,7 @@ pub fn train_with(
     let mut psnr = f64::NAN;
     let mut backend_name = String::new();
     let cancel = std::sync::atomic::AtomicBool::new(false);
-    phygap::train::train(
+    phygap::pipeline::train::train(
         capture,
         dir.path(),
         &config,
@@ -301,8 +301,8 @@ pub fn train_with(
     .unwrap();
     // The start event names the backend and what it runs on.
     let expected = match backend {
-        phygap::config::BackendChoice::Gpu => "gpu on ",
-        phygap::config::BackendChoice::Fast => "fast (",
+        phygap::core::config::BackendChoice::Gpu => "gpu on ",
+        phygap::core::config::BackendChoice::Fast => "fast (",
         _ => "cpu (",
     };
     assert!(backend_name.starts_with(expected), "{backend_name}");

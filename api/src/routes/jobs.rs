@@ -13,7 +13,7 @@ use axum::http::{HeaderMap, StatusCode};
 use axum::response::sse::{Event, KeepAlive, Sse};
 use axum::{Extension, Json};
 use futures_util::Stream;
-use phygap::config::TrainConfig;
+use phygap::core::config::TrainConfig;
 use serde::{Deserialize, Serialize};
 use tokio::io::AsyncWriteExt;
 

@@ -10,8 +10,8 @@ use axum::extract::{Path, State};
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::Response;
 use axum::Extension;
-use phygap::capture::{Measurement, View};
-use phygap::image_io::Image;
+use phygap::formats::image::Image;
+use phygap::io::capture::{Measurement, View};
 use tokio::io::AsyncReadExt;
 
 use crate::auth::Caller;
@@ -114,9 +114,9 @@ fn captured_preview(view: &View, kind: &str) -> Result<(Image, bool), String> {
                 .map(|p| {
                     let (a, b, c) = (summed(s0, p), summed(s1, p), summed(s2, p));
                     let value = if kind == "dolp" {
-                        phygap::shading::dolp(a, b, c)
+                        phygap::core::shading::dolp(a, b, c)
                     } else {
-                        phygap::shading::aolp(b, c).rem_euclid(std::f64::consts::PI)
+                        phygap::core::shading::aolp(b, c).rem_euclid(std::f64::consts::PI)
                             / std::f64::consts::PI
                     };
                     value as f32
@@ -163,7 +163,7 @@ pub async fn ground_truth(
         if !capture_dir.is_dir() {
             return Err(ApiError::not_found("capture", &job.capture_id));
         }
-        let capture = phygap::capture::load(&capture_dir)
+        let capture = phygap::io::capture::load(&capture_dir)
             .map_err(|e| ApiError::internal("loading the capture", e))?;
         let view = capture
             .test_views()
@@ -180,7 +180,7 @@ pub async fn ground_truth(
 
 /// The PNG bytes of an image (written through a temporary file, which is removed).
 fn encode_png(tmp: &FsPath, image: &Image, srgb: bool) -> Result<Vec<u8>, ApiError> {
-    let written = phygap::image_io::write_png(tmp, image, srgb)
+    let written = phygap::formats::image::write_png(tmp, image, srgb)
         .map_err(|e| ApiError::internal("encoding a PNG", e))
         .and_then(|()| std::fs::read(tmp).map_err(|e| ApiError::internal("encoding a PNG", e)));
     let _ = std::fs::remove_file(tmp);

@@ -17,7 +17,7 @@ pub use sqlite::SqliteStore;
 
 use std::collections::BTreeMap;
 
-use phygap::config::TrainConfig;
+use phygap::core::config::TrainConfig;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 

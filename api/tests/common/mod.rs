@@ -1,6 +1,6 @@
 //! Shared harness of the integration tests: a real server on loopback over the real core
 //! ([`test_pipeline`]), a reqwest client, capture archives built on the fly (small synthetic
-//! captures from `phygap::synth`) and bounded polling.
+//! captures from `phygap::pipeline::synth`) and bounded polling.
 
 #![allow(dead_code)]
 
@@ -12,7 +12,7 @@ use std::path::Path;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use phygap::synth::{synth, SynthOptions};
+use phygap::pipeline::synth::{synth, SynthOptions};
 use phygap_api::core_pipeline::CorePipeline;
 use phygap_api::pipeline::Pipeline;
 use phygap_api::{Server, ServiceConfig};

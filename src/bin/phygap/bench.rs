@@ -4,13 +4,15 @@
 use anyhow::Result;
 use clap::{Args, Subcommand};
 
-use phygap::backend::select_with;
 use phygap::gpu::GpuOptions;
+use phygap::pipeline::backend::{select_with, Engine};
 use std::path::PathBuf;
 
-use phygap::bench::{bench_gridmap, bench_quality, bench_raster, bench_train, BenchStage};
-use phygap::config::BackendChoice;
-use phygap::model::Model;
+use phygap::core::config::BackendChoice;
+use phygap::io::model::Model;
+use phygap::pipeline::bench::{
+    bench_gridmap, bench_quality, bench_raster, bench_train, BenchStage,
+};
 
 #[derive(Args)]
 pub struct BenchArgs {
@@ -124,7 +126,7 @@ struct RasterBenchArgs {
 }
 
 /// Mean device milliseconds per pass of each stage, one column per surfel count.
-fn print_stages(rows: &[phygap::bench::BenchRow]) {
+fn print_stages(rows: &[phygap::pipeline::bench::BenchRow]) {
     if rows.iter().all(|r| r.stages.is_empty()) {
         println!("no stage times: the backend does not measure them (gpu backend, adapter with timestamp queries)");
         return;
@@ -154,7 +156,7 @@ fn print_stages(rows: &[phygap::bench::BenchRow]) {
 }
 
 /// Calls and mean device milliseconds of each pass of a training run.
-fn print_passes(passes: &[phygap::raster::StageTime]) {
+fn print_passes(passes: &[phygap::core::raster::StageTime]) {
     if passes.is_empty() {
         println!("no pass times: the backend does not measure them (gpu backend, adapter with timestamp queries)");
         return;
@@ -176,7 +178,7 @@ fn print_passes(passes: &[phygap::raster::StageTime]) {
 }
 
 /// The backend `choice` resolves to, timing each device pass when `stages` is asked for.
-fn bench_backend(choice: BackendChoice, stages: bool) -> Result<Box<dyn phygap::raster::Backend>> {
+fn bench_backend(choice: BackendChoice, stages: bool) -> Result<Engine> {
     let options = GpuOptions {
         profile: stages,
         ..GpuOptions::default()
@@ -188,7 +190,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.what {
         BenchWhat::Raster(a) => {
             let backend = bench_backend(a.backend, a.stages)?;
-            let rows = bench_raster(backend.as_ref(), &a.surfels, a.width, a.height, a.repeats)?;
+            let rows = bench_raster(&*backend, &a.surfels, a.width, a.height, a.repeats)?;
             if a.json {
                 println!("{}", serde_json::to_string_pretty(&rows)?);
             } else {
@@ -220,8 +222,8 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 StageArg::Geometry => BenchStage::Geometry,
                 StageArg::Polar => BenchStage::Polar,
             };
-            let capture = phygap::capture::load(&a.capture)?;
-            let t = bench_train(backend.as_ref(), &capture, &config, stage)?;
+            let capture = phygap::io::capture::load(&a.capture)?;
+            let t = bench_train(&backend, &capture, &config, stage)?;
             if a.json {
                 println!("{}", serde_json::to_string_pretty(&t)?);
             } else {
@@ -278,7 +280,7 @@ fn run_quality(a: &QualityBenchArgs) -> Result<()> {
         config.backend = v;
     }
     config.validate()?;
-    let mut truth = phygap::scorecard::GroundTruth::discover(&a.capture);
+    let mut truth = phygap::pipeline::scorecard::GroundTruth::discover(&a.capture);
     truth.relight_envmap = a.relight_envmap.clone().or(truth.relight_envmap);
     truth.mesh = a.gt_mesh.clone().or(truth.mesh);
     let scratch = std::env::temp_dir().join(format!("phygap-bench-quality-{}", std::process::id()));

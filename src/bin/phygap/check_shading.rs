@@ -7,12 +7,12 @@ use std::path::{Path, PathBuf};
 use anyhow::{anyhow, Context, Result};
 use clap::Args;
 
-use phygap::brdf_lut::BrdfLut;
-use phygap::capture::{self, Measurement};
-use phygap::envmap::{CubeMap, PreparedEnv, WorldUp};
-use phygap::image_io::{read_image, Image};
-use phygap::reconstruction::prefilter_plan;
-use phygap::shading::check::{physics_check, GroundTruthView};
+use phygap::core::brdf_lut::BrdfLut;
+use phygap::core::envmap::{CubeMap, PreparedEnv, WorldUp};
+use phygap::core::shading::check::{physics_check, GroundTruthView};
+use phygap::formats::image::{read_image, Image};
+use phygap::io::capture::{self, Measurement};
+use phygap::pipeline::reconstruction::prefilter_plan;
 
 #[derive(Args, Debug)]
 pub struct CheckShadingArgs {

@@ -7,10 +7,10 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
-use phygap::capture;
-use phygap::evaluate::EvalReport;
-use phygap::model::Model;
-use phygap::scorecard::{self, GroundTruth};
+use phygap::io::capture;
+use phygap::io::model::Model;
+use phygap::pipeline::evaluate::EvalReport;
+use phygap::pipeline::scorecard::{self, GroundTruth};
 
 #[derive(Args, Debug)]
 pub struct EvalArgs {

@@ -16,7 +16,7 @@ pub struct ExportArgs {
 }
 
 pub fn run(args: &ExportArgs) -> Result<()> {
-    let files = phygap::export::export(&args.model, &args.out)?;
+    let files = phygap::pipeline::export::export(&args.model, &args.out)?;
     for f in &files {
         println!("{}", f.display());
     }

@@ -2,9 +2,9 @@
 
 use anyhow::Result;
 
-use phygap::backend::describe;
-use phygap::config::BackendChoice;
+use phygap::core::config::BackendChoice;
 use phygap::gpu::list_adapters;
+use phygap::pipeline::backend::describe;
 
 pub fn run() -> Result<()> {
     println!("phygap {}", env!("CARGO_PKG_VERSION"));

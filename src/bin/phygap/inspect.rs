@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
-use phygap::capture::{self, CaptureSummary};
+use phygap::io::capture::{self, CaptureSummary};
 
 /// Arguments of `phygap inspect`.
 #[derive(Args, Debug)]

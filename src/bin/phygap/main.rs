@@ -65,7 +65,7 @@ const GRIDMAP_OVERRIDE_HELP: &str = "Render with GridMap on or off regardless of
 was trained (the ablation of METHOD.md §5); default: as trained";
 
 /// Applies a `--gridmap` override to a loaded model before it is rendered.
-fn override_gridmap(model: &mut phygap::model::Model, switch: Option<Switch>) {
+fn override_gridmap(model: &mut phygap::io::model::Model, switch: Option<Switch>) {
     if let Some(switch) = switch {
         model.config.gridmap = switch == Switch::On;
     }
@@ -92,7 +92,7 @@ fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {
         Command::CheckShading(args) => check_shading::run(&args),
         Command::Info => info::run(),
         Command::Config => {
-            let config = phygap::config::TrainConfig::default();
+            let config = phygap::core::config::TrainConfig::default();
             println!("{}", serde_json::to_string_pretty(&config)?);
             Ok(())
         }
@@ -100,7 +100,7 @@ fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {
 }
 
 fn main() {
-    phygap::allocator::keep_large_buffers();
+    phygap::pipeline::allocator::keep_large_buffers();
     tracing_subscriber::fmt()
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env()

@@ -8,8 +8,8 @@ use std::time::Instant;
 use anyhow::Result;
 use clap::Args;
 
-use phygap::meshing::{self, DEFAULT_MESH_RESOLUTION};
-use phygap::model::Model;
+use phygap::io::model::Model;
+use phygap::pipeline::mesh_extraction::{self, DEFAULT_MESH_RESOLUTION};
 
 #[derive(Args, Debug)]
 pub struct MeshArgs {
@@ -26,8 +26,8 @@ pub struct MeshArgs {
 pub fn run(args: &MeshArgs) -> Result<()> {
     let start = Instant::now();
     let model = Model::load(&args.model)?;
-    let mesh = meshing::extract_from_model(&model, args.resolution)?;
-    meshing::write_mesh(&mesh, &args.out)?;
+    let mesh = mesh_extraction::extract_from_model(&model, args.resolution)?;
+    mesh_extraction::write_mesh(&mesh, &args.out)?;
     println!(
         "wrote {} ({} vertices, {} triangles) in {:.2} s",
         args.out.display(),

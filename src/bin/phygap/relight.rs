@@ -7,9 +7,9 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
-use phygap::capture;
-use phygap::model::{Model, TEST_CAMERAS_FILE};
-use phygap::relight::{relit_reconstruction, RELIGHT_KINDS};
+use phygap::io::capture;
+use phygap::io::model::{Model, TEST_CAMERAS_FILE};
+use phygap::pipeline::relight::{relit_reconstruction, RELIGHT_KINDS};
 
 #[derive(Args, Debug)]
 pub struct RelightArgs {

@@ -6,9 +6,9 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
-use phygap::capture;
-use phygap::model::Model;
-use phygap::reconstruction::{Reconstruction, OUTPUT_KINDS};
+use phygap::io::capture;
+use phygap::io::model::Model;
+use phygap::pipeline::reconstruction::{Reconstruction, OUTPUT_KINDS};
 
 #[derive(Args, Debug)]
 pub struct RenderArgs {

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
-use phygap::synth::{self, Shape, SynthOptions, Texture};
+use phygap::pipeline::synth::{self, Shape, SynthOptions, Texture};
 
 #[derive(Args, Debug)]
 pub struct SynthArgs {

@@ -9,10 +9,10 @@ use anyhow::{Context, Result};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 
-use phygap::capture;
-use phygap::config::TrainConfig;
-use phygap::events::TrainEvent;
-use phygap::train::{self, TrainOutcome};
+use phygap::core::config::TrainConfig;
+use phygap::core::events::TrainEvent;
+use phygap::io::capture;
+use phygap::pipeline::train::{self, TrainOutcome};
 
 #[derive(Args, Debug)]
 pub struct TrainArgs {

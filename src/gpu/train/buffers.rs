@@ -9,9 +9,9 @@ use super::super::raster::{
 use super::super::shade::{GRAD_FLOATS, INPUT_VECTORS, STOKES_FLOATS};
 use super::super::GpuError;
 use super::kernels::{SCAN_BLOCK, SLOTS};
-use crate::densify::DensifyStats;
-use crate::optim::{Adam, GroupState};
-use crate::surfels::Surfels;
+use crate::core::densify::DensifyStats;
+use crate::core::optim::{Adam, GroupState};
+use crate::core::surfels::Surfels;
 
 /// f32 values per surfel of the raw parameters and of each Adam moment (the layout of `Raw`).
 pub(super) const RAW_FLOATS: usize = 16;

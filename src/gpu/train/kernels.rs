@@ -6,13 +6,13 @@ use glam::DVec3;
 
 use super::buffers::{FrameBuffers, GROUP_SLOTS};
 use super::DeviceStep;
+use crate::core::loss::LossWeights;
+use crate::core::optim::AdamConfig;
+use crate::core::raster::RasterSettings;
+use crate::core::render::SHADE_ALPHA_MIN;
 use crate::gpu::device::Device;
 use crate::gpu::layout::wgsl_mirror;
 use crate::gpu::GpuError;
-use crate::loss::LossWeights;
-use crate::optim::AdamConfig;
-use crate::raster::RasterSettings;
-use crate::render::SHADE_ALPHA_MIN;
 
 const SCAN: &str = include_str!("../../../shaders/scan.wgsl");
 const TRAIN_COMMON: &str = include_str!("../../../shaders/train_common.wgsl");
@@ -125,7 +125,7 @@ impl TrainParamsGpu {
             .theta
             .map_or((1.0, 0.0), |t| ((2.0 * t).cos(), (2.0 * t).sin()));
         let r = camera.rotation_opencv();
-        let window = crate::loss::ssim::gaussian_kernel();
+        let window = crate::core::loss::ssim::gaussian_kernel();
         TrainParamsGpu {
             dims: [
                 frame.width,

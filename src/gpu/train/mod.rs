@@ -7,7 +7,7 @@
 //! light's gradient when the environment is updated ([`DeviceTrainer::take_light_grad`]).
 //!
 //! One step ([`DeviceTrainer::step`], each stage a compute pass; the plan of
-//! [`crate::train::step::StepPlan`] decides what applies):
+//! [`crate::core::step::StepPlan`] decides what applies):
 //! projection (`project.wgsl`), a device scan of the tile counts (`scan.wgsl`, which also writes
 //! the indirect dispatch sizes), binning and the radix sort over all 31 depth bits and the tile
 //! bits (indirect), tile ranges, rasterization, the shader's inputs and the depth-derived normals
@@ -39,18 +39,17 @@ use super::prefilter::DevicePrefilter;
 use super::raster::{GpuBackend, ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
 use super::shade::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
 use super::GpuError;
-use crate::brdf_lut::BrdfLut;
-use crate::camera::Camera;
-use crate::densify::DensifyStats;
-use crate::envmap::{CubeMap, EnvGrad, PrefilterPlan, PreparedEnv};
-use crate::gridmap::GridMap;
-use crate::loss::LossWeights;
-use crate::optim::{Adam, AdamConfig};
-use crate::raster::RasterSettings;
-use crate::shading::ShadingError;
-use crate::surfels::Surfels;
-use crate::train::step::{LossSums, StepPlan};
-use crate::train::targets::ViewTarget;
+use crate::core::brdf_lut::BrdfLut;
+use crate::core::camera::Camera;
+use crate::core::densify::DensifyStats;
+use crate::core::envmap::{CubeMap, EnvGrad, PrefilterPlan, PreparedEnv};
+use crate::core::gridmap::GridMap;
+use crate::core::loss::LossWeights;
+use crate::core::optim::{Adam, AdamConfig};
+use crate::core::raster::RasterSettings;
+use crate::core::shading::ShadingError;
+use crate::core::step::{LossSums, StepPlan, ViewTarget};
+use crate::core::surfels::Surfels;
 use buffers::{EntryBuffers, FrameBuffers, SurfelBuffers, GROUP_SLOTS, TARGET_FLOATS};
 use kernels::{
     AdamParamsGpu, ScanParamsGpu, TrainKernels, TrainParamsGpu, STATUS_ENTRIES, STATUS_NONFINITE,

@@ -1,0 +1,345 @@
+//! Training losses of the PolarDR stage (METHOD.md §6), each returning its value and its gradient
+//! with respect to every differentiable input.
+//!
+//! Images are interleaved `f64` slices of `width × height × channels`, row 0 on top. Every loss is
+//! a mean, so its gradient scales as 1 / (number of terms); the trainer multiplies values and
+//! gradients by the weights of [`LossWeights`] and sums them.
+//!
+//! Threading: [`ssim()`] (and so [`photometric`]) uses rayon over channels and rows; the other losses
+//! are single-threaded linear passes.
+
+pub mod ssim;
+
+pub use ssim::{ssim, ssim_map};
+
+use crate::core::config::TrainConfig;
+
+/// A scalar loss and its gradient with respect to the (first) differentiable input.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LossValue {
+    pub value: f64,
+    pub grad: Vec<f64>,
+}
+
+/// Value of the Stokes loss and its gradients with respect to the predicted S1 and S2.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StokesLossValue {
+    pub value: f64,
+    pub grad_s1: Vec<f64>,
+    pub grad_s2: Vec<f64>,
+}
+
+/// Value of the depth–normal consistency loss and its gradients with respect to the raw rendered
+/// normal and the depth-derived normal.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DepthNormalLossValue {
+    pub value: f64,
+    pub grad_normal: Vec<f64>,
+    pub grad_depth_normal: Vec<f64>,
+}
+
+/// Weights of the loss terms (METHOD.md §6). Plain data; the trainer combines the terms.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LossWeights {
+    /// λ of the photometric term: (1 − λ)·L1 + λ·(1 − SSIM).
+    pub lambda_ssim: f64,
+    /// Weight of the S1/S2 L1 term (or of the extra L1 on Î(θ) for partial data).
+    pub lambda_stokes: f64,
+    pub lambda_mask: f64,
+    pub lambda_normal_smooth: f64,
+    pub lambda_depth_normal: f64,
+}
+
+impl From<&TrainConfig> for LossWeights {
+    fn from(config: &TrainConfig) -> Self {
+        LossWeights {
+            lambda_ssim: config.lambda_ssim,
+            lambda_stokes: config.lambda_stokes,
+            lambda_mask: config.lambda_mask,
+            lambda_normal_smooth: config.lambda_normal_smooth,
+            lambda_depth_normal: config.lambda_depth_normal,
+        }
+    }
+}
+
+/// Weight of element `i` when `weight` is per element (same length as the image) or per pixel
+/// (broadcast over `channels` = image length / weight length).
+fn element_weight(weight: Option<&[f64]>, i: usize, channels: usize) -> f64 {
+    weight.map_or(1.0, |w| w[i / channels])
+}
+
+/// Channels a per-pixel weight broadcasts over; panics when the lengths do not fit.
+fn weight_channels(len: usize, weight: Option<&[f64]>, what: &str) -> usize {
+    match weight {
+        None => 1,
+        Some(w) => {
+            assert!(
+                !w.is_empty() && len.is_multiple_of(w.len()),
+                "{what}: weight has {} entries, which is neither one per element nor one per pixel of {len} elements",
+                w.len()
+            );
+            len / w.len()
+        }
+    }
+}
+
+/// Mean absolute error `Σ w·|p − t| / n` over all `n` elements, where the optional `weight_mask`
+/// holds one weight per element or one per pixel (broadcast over channels). The divisor is the
+/// element count, not the weight sum, as `(|p − t| · m).mean()` in the reference code. The
+/// subgradient at `p = t` is 0.
+///
+/// # Panics
+/// If the lengths differ or the weight length divides neither.
+pub fn l1(pred: &[f64], target: &[f64], weight_mask: Option<&[f64]>) -> LossValue {
+    assert_eq!(
+        pred.len(),
+        target.len(),
+        "l1: prediction and target lengths differ"
+    );
+    let channels = weight_channels(pred.len(), weight_mask, "l1");
+    let inv_n = 1.0 / pred.len().max(1) as f64;
+    let mut value = 0.0;
+    let grad = pred
+        .iter()
+        .zip(target)
+        .enumerate()
+        .map(|(i, (&p, &t))| {
+            let w = element_weight(weight_mask, i, channels);
+            let d = p - t;
+            value += w * d.abs();
+            // f64::signum(0.0) is 1, so the subgradient 0 at equality is explicit.
+            let sign = if d > 0.0 {
+                1.0
+            } else if d < 0.0 {
+                -1.0
+            } else {
+                0.0
+            };
+            w * sign * inv_n
+        })
+        .collect();
+    LossValue {
+        value: value * inv_n,
+        grad,
+    }
+}
+
+/// Photometric loss `(1 − λ)·L1 + λ·(1 − SSIM)` (METHOD.md §6, λ = 0.2) and its gradient with
+/// respect to `pred`.
+///
+/// # Panics
+/// If either image is not `width · height · channels` long.
+pub fn photometric(
+    pred: &[f64],
+    target: &[f64],
+    width: usize,
+    height: usize,
+    channels: usize,
+    lambda_ssim: f64,
+) -> LossValue {
+    let l1_term = l1(pred, target, None);
+    let ssim_term = ssim(pred, target, width, height, channels);
+    let grad = l1_term
+        .grad
+        .iter()
+        .zip(&ssim_term.grad)
+        .map(|(gl, gs)| (1.0 - lambda_ssim) * gl - lambda_ssim * gs)
+        .collect();
+    LossValue {
+        value: (1.0 - lambda_ssim) * l1_term.value + lambda_ssim * (1.0 - ssim_term.value),
+        grad,
+    }
+}
+
+/// Stokes loss `L1(Ŝ1, S1) + L1(Ŝ2, S2)` (each a mean as in [`l1`], with the same optional weight).
+///
+/// # Panics
+/// If the lengths differ.
+pub fn stokes_l1(
+    pred_s1: &[f64],
+    target_s1: &[f64],
+    pred_s2: &[f64],
+    target_s2: &[f64],
+    weight_mask: Option<&[f64]>,
+) -> StokesLossValue {
+    let s1 = l1(pred_s1, target_s1, weight_mask);
+    let s2 = l1(pred_s2, target_s2, weight_mask);
+    StokesLossValue {
+        value: s1.value + s2.value,
+        grad_s1: s1.grad,
+        grad_s2: s2.grad,
+    }
+}
+
+/// Mask loss `mean((α − M)²)` and its gradient with respect to the accumulated opacity α.
+///
+/// # Panics
+/// If the lengths differ.
+pub fn mask_mse(alpha: &[f64], mask: &[f64]) -> LossValue {
+    assert_eq!(
+        alpha.len(),
+        mask.len(),
+        "mask_mse: alpha and mask lengths differ"
+    );
+    let inv_n = 1.0 / alpha.len().max(1) as f64;
+    let mut value = 0.0;
+    let grad = alpha
+        .iter()
+        .zip(mask)
+        .map(|(&a, &m)| {
+            let d = a - m;
+            value += d * d;
+            2.0 * d * inv_n
+        })
+        .collect();
+    LossValue {
+        value: value * inv_n,
+        grad,
+    }
+}
+
+/// ε of the smoothed vector norm `‖d‖_ε = sqrt(‖d‖² + ε) − sqrt(ε)` used by [`normal_smoothness`]:
+/// differentiable at d = 0, zero there, and within 1e-3 of ‖d‖ once ‖d‖ > 0.03.
+pub const NORMAL_SMOOTH_EPS: f64 = 1e-6;
+
+/// Edge-aware normal smoothness `mean(|∇N̂| · exp(−|∇S0|))` (METHOD.md §6) with forward
+/// differences, and its gradient with respect to the normal map (`s0` is the captured image and
+/// constant).
+///
+/// Precisely, with `Δx N = N(x+1, y) − N(x, y)` (a 3-vector) and likewise `Δy`:
+/// `L = (1 / (w·h)) · Σ_pixels [ ‖Δx N‖_ε · exp(−mean_c |Δx S0_c|) + ‖Δy N‖_ε · exp(−mean_c |Δy S0_c|) ]`
+/// where a term is absent on the last column (Δx) or last row (Δy), and `‖·‖_ε` is
+/// [`NORMAL_SMOOTH_EPS`]-smoothed Euclidean norm. `normal` has 3 channels; `s0` any number of channels
+/// (its length / (w·h)).
+///
+/// # Panics
+/// If `normal` is not `w·h·3` long or `s0` is not a whole number of channels of `w·h` pixels.
+pub fn normal_smoothness(normal: &[f64], s0: &[f64], width: usize, height: usize) -> LossValue {
+    let pixels = width * height;
+    assert_eq!(
+        normal.len(),
+        pixels * 3,
+        "normal_smoothness: normal is not w·h·3"
+    );
+    assert!(
+        pixels > 0 && s0.len().is_multiple_of(pixels) && !s0.is_empty(),
+        "normal_smoothness: s0 is not a whole number of w·h channels"
+    );
+    let sc = s0.len() / pixels;
+    let inv_n = 1.0 / pixels as f64;
+    let sqrt_eps = NORMAL_SMOOTH_EPS.sqrt();
+    let mut grad = vec![0.0; normal.len()];
+    let mut value = 0.0;
+    let mut pair = |a: usize, b: usize| {
+        // Edge weight from the captured image.
+        let image_grad = (0..sc)
+            .map(|c| (s0[b * sc + c] - s0[a * sc + c]).abs())
+            .sum::<f64>()
+            / sc as f64;
+        let weight = (-image_grad).exp();
+        let d = [
+            normal[b * 3] - normal[a * 3],
+            normal[b * 3 + 1] - normal[a * 3 + 1],
+            normal[b * 3 + 2] - normal[a * 3 + 2],
+        ];
+        let norm = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + NORMAL_SMOOTH_EPS).sqrt();
+        value += weight * (norm - sqrt_eps);
+        let scale = weight * inv_n / norm;
+        for k in 0..3 {
+            grad[b * 3 + k] += scale * d[k];
+            grad[a * 3 + k] -= scale * d[k];
+        }
+    };
+    for y in 0..height {
+        for x in 0..width {
+            let i = y * width + x;
+            if x + 1 < width {
+                pair(i, i + 1);
+            }
+            if y + 1 < height {
+                pair(i, i + width);
+            }
+        }
+    }
+    LossValue {
+        value: value * inv_n,
+        grad,
+    }
+}
+
+/// Below this norm a normal counts as absent (background) in [`depth_normal_consistency`].
+pub const MIN_NORMAL_NORM: f64 = 1e-12;
+
+/// Depth–normal consistency `mean(w · (1 − N̂ · N_d))` (METHOD.md §6) where N̂ = N / ‖N‖ is the
+/// unit rendered normal and N_d the depth-derived normal as given (unit, or scaled by opacity as
+/// 2DGS does). Pixels where either normal is (near) zero are excluded from the sum and from the
+/// count, so the mean is over the valid pixels. The optional per-pixel `weight` (e.g. the
+/// accumulated opacity) is treated as constant. Gradients are with respect to the raw rendered
+/// normal (through the normalization) and to `depth_normal`.
+///
+/// # Panics
+/// If the normals are not the same length, not 3-channel, or the weight is not one per pixel.
+pub fn depth_normal_consistency(
+    normal: &[f64],
+    depth_normal: &[f64],
+    weight: Option<&[f64]>,
+) -> DepthNormalLossValue {
+    assert_eq!(
+        normal.len(),
+        depth_normal.len(),
+        "depth_normal_consistency: normal and depth normal lengths differ"
+    );
+    assert_eq!(
+        normal.len() % 3,
+        0,
+        "depth_normal_consistency: normals are not 3-channel"
+    );
+    let pixels = normal.len() / 3;
+    if let Some(w) = weight {
+        assert_eq!(
+            w.len(),
+            pixels,
+            "depth_normal_consistency: weight is not one per pixel"
+        );
+    }
+    let norm3 = |v: &[f64]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    let valid: Vec<bool> = normal
+        .chunks_exact(3)
+        .zip(depth_normal.chunks_exact(3))
+        .map(|(n, d)| norm3(n) > MIN_NORMAL_NORM && norm3(d) > MIN_NORMAL_NORM)
+        .collect();
+    let count = valid.iter().filter(|&&v| v).count();
+    let mut grad_normal = vec![0.0; normal.len()];
+    let mut grad_depth_normal = vec![0.0; normal.len()];
+    if count == 0 {
+        return DepthNormalLossValue {
+            value: 0.0,
+            grad_normal,
+            grad_depth_normal,
+        };
+    }
+    let inv_n = 1.0 / count as f64;
+    let mut value = 0.0;
+    for p in (0..pixels).filter(|&p| valid[p]) {
+        let w = weight.map_or(1.0, |w| w[p]);
+        let n = &normal[p * 3..p * 3 + 3];
+        let nd = &depth_normal[p * 3..p * 3 + 3];
+        let len = norm3(n);
+        let unit = [n[0] / len, n[1] / len, n[2] / len];
+        let dot = unit[0] * nd[0] + unit[1] * nd[1] + unit[2] * nd[2];
+        value += w * (1.0 - dot);
+        for k in 0..3 {
+            // ∂(N̂·v)/∂N = (v − N̂ (N̂·v)) / ‖N‖.
+            grad_normal[p * 3 + k] = -w * inv_n * (nd[k] - unit[k] * dot) / len;
+            grad_depth_normal[p * 3 + k] = -w * inv_n * unit[k];
+        }
+    }
+    DepthNormalLossValue {
+        value: value * inv_n,
+        grad_normal,
+        grad_depth_normal,
+    }
+}
+
+#[cfg(test)]
+mod tests;

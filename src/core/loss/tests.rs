@@ -1,0 +1,391 @@
+use super::*;
+use crate::core::gradcheck::assert_gradient;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+const W: usize = 13;
+const H: usize = 11;
+const C: usize = 3;
+const SEEDS: [u64; 3] = [1, 2, 3];
+
+fn random_vec(rng: &mut ChaCha8Rng, n: usize, lo: f64, hi: f64) -> Vec<f64> {
+    (0..n).map(|_| rng.random_range(lo..hi)).collect()
+}
+
+/// SSIM map by direct 11×11 summation with explicit zero padding: the plain reference for the
+/// separable implementation.
+fn reference_ssim_map(x: &[f64], y: &[f64], w: usize, h: usize, c: usize) -> Vec<f64> {
+    let k = ssim::gaussian_kernel();
+    let at = |img: &[f64], px: i64, py: i64, ch: usize| -> f64 {
+        if px < 0 || py < 0 || px >= w as i64 || py >= h as i64 {
+            0.0
+        } else {
+            img[(py as usize * w + px as usize) * c + ch]
+        }
+    };
+    let mut map = vec![0.0; x.len()];
+    for py in 0..h as i64 {
+        for px in 0..w as i64 {
+            for ch in 0..c {
+                let (mut mx, mut my, mut exx, mut eyy, mut exy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+                for dy in -5i64..=5 {
+                    for dx in -5i64..=5 {
+                        let g = k[(dy + 5) as usize] * k[(dx + 5) as usize];
+                        let a = at(x, px + dx, py + dy, ch);
+                        let b = at(y, px + dx, py + dy, ch);
+                        mx += g * a;
+                        my += g * b;
+                        exx += g * a * a;
+                        eyy += g * b * b;
+                        exy += g * a * b;
+                    }
+                }
+                let (vx, vy, cov) = (exx - mx * mx, eyy - my * my, exy - mx * my);
+                map[(py as usize * w + px as usize) * c + ch] = (2.0 * mx * my + ssim::SSIM_C1)
+                    * (2.0 * cov + ssim::SSIM_C2)
+                    / ((mx * mx + my * my + ssim::SSIM_C1) * (vx + vy + ssim::SSIM_C2));
+            }
+        }
+    }
+    map
+}
+
+#[test]
+fn gaussian_kernel_is_normalized_and_symmetric() {
+    let k = ssim::gaussian_kernel();
+    assert!((k.iter().sum::<f64>() - 1.0).abs() < 1e-15);
+    for i in 0..11 {
+        assert_eq!(k[i], k[10 - i]);
+    }
+    // exp(−1/(2·1.5²)) is the ratio of neighbours at the centre.
+    assert!((k[6] / k[5] - (-1.0f64 / 4.5).exp()).abs() < 1e-15);
+}
+
+#[test]
+fn l1_of_known_arrays() {
+    let r = l1(&[1.0, 2.0, 3.0, 4.0], &[0.0, 2.0, 5.0, 4.0], None);
+    assert_eq!(r.value, 0.75);
+    assert_eq!(r.grad, vec![0.25, 0.0, -0.25, 0.0]);
+    // Per-pixel weight over 2 channels: pixel 1 is masked out.
+    let r = l1(
+        &[1.0, 2.0, 3.0, 4.0],
+        &[0.0, 0.0, 0.0, 0.0],
+        Some(&[1.0, 0.0]),
+    );
+    assert_eq!(r.value, 3.0 / 4.0);
+    assert_eq!(r.grad, vec![0.25, 0.25, 0.0, 0.0]);
+    // Per-element weight.
+    let r = l1(&[1.0, -2.0], &[0.0, 0.0], Some(&[0.5, 2.0]));
+    assert_eq!(r.value, (0.5 + 4.0) / 2.0);
+    assert_eq!(r.grad, vec![0.25, -1.0]);
+}
+
+#[test]
+fn l1_gradient_matches_finite_differences() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let pred = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let target = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let per_pixel = random_vec(&mut rng, W * H, 0.0, 1.0);
+        let per_element = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        for weight in [None, Some(&per_pixel[..]), Some(&per_element[..])] {
+            let analytic = l1(&pred, &target, weight).grad;
+            assert_gradient(
+                "l1",
+                &mut |p| l1(p, &target, weight).value,
+                &pred,
+                &analytic,
+                1e-6,
+                1e-5,
+                1e-5,
+            );
+        }
+    }
+}
+
+#[test]
+fn ssim_matches_direct_window_summation() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let x = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let y = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let fast = ssim_map(&x, &y, W, H, C);
+        let reference = reference_ssim_map(&x, &y, W, H, C);
+        for (a, b) in fast.iter().zip(&reference) {
+            assert!((a - b).abs() < 1e-12, "{a} vs {b}");
+        }
+        let mean = reference.iter().sum::<f64>() / reference.len() as f64;
+        assert!((ssim(&x, &y, W, H, C).value - mean).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn ssim_of_an_image_with_itself_is_one_and_stationary() {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let x = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+    let r = ssim(&x, &x, W, H, C);
+    assert!((r.value - 1.0).abs() < 1e-12, "{}", r.value);
+    assert!(r.grad.iter().all(|g| g.abs() < 1e-12));
+}
+
+#[test]
+fn ssim_of_constant_images_in_the_interior_is_the_luminance_term() {
+    // 21×21: pixels at least 5 from every border see no padding, so σ = 0 there.
+    let (a, b) = (0.6, 0.3);
+    let map = ssim_map(&vec![a; 21 * 21], &vec![b; 21 * 21], 21, 21, 1);
+    let expected = (2.0 * a * b + ssim::SSIM_C1) / (a * a + b * b + ssim::SSIM_C1);
+    assert!((map[10 * 21 + 10] - expected).abs() < 1e-12);
+    assert!((map[5 * 21 + 15] - expected).abs() < 1e-12);
+    // A corner window is mostly padding: its value differs.
+    assert!((map[0] - expected).abs() > 1e-3);
+}
+
+#[test]
+fn ssim_decreases_with_noise() {
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let (w, h) = (32, 24);
+    let clean: Vec<f64> = (0..w * h * 3)
+        .map(|i| 0.5 + 0.3 * ((i / 3 % w) as f64 * 0.3).sin())
+        .collect();
+    let mut last = 1.0;
+    for amplitude in [0.01, 0.05, 0.2] {
+        let noisy: Vec<f64> = clean
+            .iter()
+            .map(|v| v + amplitude * rng.random_range(-1.0..1.0))
+            .collect();
+        let s = ssim(&noisy, &clean, w, h, 3).value;
+        assert!(s < last, "SSIM {s} at noise {amplitude} not below {last}");
+        last = s;
+    }
+    assert!(last < 0.7);
+}
+
+#[test]
+fn ssim_gradient_matches_finite_differences() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let x = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let y = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let analytic = ssim(&x, &y, W, H, C).grad;
+        assert_gradient(
+            "ssim",
+            &mut |p| ssim(p, &y, W, H, C).value,
+            &x,
+            &analytic,
+            1e-5,
+            1e-5,
+            1e-8,
+        );
+    }
+}
+
+#[test]
+fn photometric_combines_l1_and_ssim_and_its_gradient_matches() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let x = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let y = random_vec(&mut rng, W * H * C, 0.0, 1.0);
+        let r = photometric(&x, &y, W, H, C, 0.2);
+        let expected = 0.8 * l1(&x, &y, None).value + 0.2 * (1.0 - ssim(&x, &y, W, H, C).value);
+        assert!((r.value - expected).abs() < 1e-14);
+        assert_gradient(
+            "photometric",
+            &mut |p| photometric(p, &y, W, H, C, 0.2).value,
+            &x,
+            &r.grad,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+    }
+    let same = vec![0.25; W * H * C];
+    assert!(photometric(&same, &same, W, H, C, 0.2).value.abs() < 1e-14);
+}
+
+#[test]
+fn stokes_l1_sums_both_components_with_their_gradients() {
+    let r = stokes_l1(&[0.5, 0.0], &[0.0, 0.0], &[0.0, -1.0], &[0.0, 0.0], None);
+    assert_eq!(r.value, 0.25 + 0.5);
+    assert_eq!(r.grad_s1, vec![0.5, 0.0]);
+    assert_eq!(r.grad_s2, vec![0.0, -0.5]);
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let n = W * H * C;
+        let (p1, t1) = (
+            random_vec(&mut rng, n, -0.3, 0.3),
+            random_vec(&mut rng, n, -0.3, 0.3),
+        );
+        let (p2, t2) = (
+            random_vec(&mut rng, n, -0.3, 0.3),
+            random_vec(&mut rng, n, -0.3, 0.3),
+        );
+        let mask = random_vec(&mut rng, W * H, 0.0, 1.0);
+        let r = stokes_l1(&p1, &t1, &p2, &t2, Some(&mask));
+        assert_gradient(
+            "stokes_l1 wrt S1",
+            &mut |p| stokes_l1(p, &t1, &p2, &t2, Some(&mask)).value,
+            &p1,
+            &r.grad_s1,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+        assert_gradient(
+            "stokes_l1 wrt S2",
+            &mut |p| stokes_l1(&p1, &t1, p, &t2, Some(&mask)).value,
+            &p2,
+            &r.grad_s2,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+    }
+}
+
+#[test]
+fn mask_mse_of_known_values_and_gradient() {
+    let r = mask_mse(&[1.0, 0.5, 0.0, 0.25], &[1.0, 0.0, 1.0, 0.25]);
+    assert_eq!(r.value, (0.25 + 1.0) / 4.0);
+    assert_eq!(r.grad, vec![0.0, 0.25, -0.5, 0.0]);
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let alpha = random_vec(&mut rng, W * H, 0.0, 1.0);
+        let mask: Vec<f64> = (0..W * H)
+            .map(|_| f64::from(rng.random_bool(0.5)))
+            .collect();
+        let r = mask_mse(&alpha, &mask);
+        assert_gradient(
+            "mask_mse",
+            &mut |a| mask_mse(a, &mask).value,
+            &alpha,
+            &r.grad,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+    }
+}
+
+#[test]
+fn normal_smoothness_of_a_hand_example() {
+    // 2×1 image: one horizontal pair, normals (0,0,1) → (0,1,0), so ‖Δ‖ = √2.
+    let normal = [0.0, 0.0, 1.0, 0.0, 1.0, 0.0];
+    let edge = (2.0 + NORMAL_SMOOTH_EPS).sqrt() - NORMAL_SMOOTH_EPS.sqrt();
+    let flat = normal_smoothness(&normal, &[0.5; 6], 2, 1);
+    assert!((flat.value - edge / 2.0).abs() < 1e-15);
+    // An image edge of mean height 1 damps the term by e^-1.
+    let s0 = [0.0, 0.0, 0.0, 1.0, 2.0, 0.0];
+    let damped = normal_smoothness(&normal, &s0, 2, 1);
+    assert!((damped.value - edge / 2.0 * (-1.0f64).exp()).abs() < 1e-15);
+    // A constant normal map is perfectly smooth.
+    let constant: Vec<f64> = [0.0, 0.6, 0.8].repeat(W * H);
+    let r = normal_smoothness(&constant, &vec![0.3; W * H * 3], W, H);
+    assert_eq!(r.value, 0.0);
+    assert!(r.grad.iter().all(|&g| g == 0.0));
+}
+
+#[test]
+fn normal_smoothness_gradient_matches_finite_differences() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let normal = random_vec(&mut rng, W * H * 3, -1.0, 1.0);
+        let s0 = random_vec(&mut rng, W * H * 3, 0.0, 1.0);
+        let r = normal_smoothness(&normal, &s0, W, H);
+        assert_gradient(
+            "normal_smoothness",
+            &mut |n| normal_smoothness(n, &s0, W, H).value,
+            &normal,
+            &r.grad,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+    }
+}
+
+#[test]
+fn depth_normal_consistency_of_a_hand_example() {
+    // Pixel 0 aligned (rendered normal not unit: normalization matters), pixel 1 orthogonal,
+    // pixel 2 background (zero rendered normal): excluded from the mean.
+    let normal = [0.0, 0.0, 2.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0];
+    let depth = [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+    let r = depth_normal_consistency(&normal, &depth, None);
+    assert!((r.value - 0.5).abs() < 1e-15);
+    assert!(r.grad_normal[6..].iter().all(|&g| g == 0.0));
+    assert!(r.grad_depth_normal[6..].iter().all(|&g| g == 0.0));
+    // Pixel 1 (orthogonal): ∂/∂N_x = −(1 − 0)/(2·1) = −0.5; ∂/∂N_d,z = −N̂_z/2 = −0.5.
+    assert_eq!(r.grad_normal[3], -0.5);
+    assert_eq!(r.grad_depth_normal[5], -0.5);
+    let weighted = depth_normal_consistency(&normal, &depth, Some(&[1.0, 0.5, 1.0]));
+    assert!((weighted.value - 0.25).abs() < 1e-15);
+    let none = depth_normal_consistency(&[0.0; 3], &[0.0, 0.0, 1.0], None);
+    assert_eq!(none.value, 0.0);
+}
+
+#[test]
+fn depth_normal_consistency_gradients_match_finite_differences() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let normal = random_vec(&mut rng, W * H * 3, -1.0, 1.0);
+        let depth_normal = random_vec(&mut rng, W * H * 3, -1.0, 1.0);
+        let weight = random_vec(&mut rng, W * H, 0.0, 1.0);
+        for w in [None, Some(&weight[..])] {
+            let r = depth_normal_consistency(&normal, &depth_normal, w);
+            assert_gradient(
+                "depth_normal_consistency wrt normal",
+                &mut |n| depth_normal_consistency(n, &depth_normal, w).value,
+                &normal,
+                &r.grad_normal,
+                1e-6,
+                1e-5,
+                1e-4,
+            );
+            assert_gradient(
+                "depth_normal_consistency wrt depth normal",
+                &mut |d| depth_normal_consistency(&normal, d, w).value,
+                &depth_normal,
+                &r.grad_depth_normal,
+                1e-6,
+                1e-5,
+                1e-4,
+            );
+        }
+    }
+}
+
+#[test]
+fn loss_weights_come_from_the_config() {
+    let config = TrainConfig {
+        lambda_stokes: 4.0,
+        ..TrainConfig::default()
+    };
+    let w = LossWeights::from(&config);
+    assert_eq!(
+        w,
+        LossWeights {
+            lambda_ssim: 0.2,
+            lambda_stokes: 4.0,
+            lambda_mask: 0.4,
+            lambda_normal_smooth: 0.2,
+            lambda_depth_normal: 0.1,
+        }
+    );
+}
+
+/// Timing of SSIM forward + backward at 256×256×3 (run with `--ignored --nocapture`).
+#[test]
+#[ignore]
+fn ssim_timing_256() {
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let n = 256 * 256 * 3;
+    let x = random_vec(&mut rng, n, 0.0, 1.0);
+    let y = random_vec(&mut rng, n, 0.0, 1.0);
+    let _ = ssim(&x, &y, 256, 256, 3);
+    let runs = 20;
+    let start = std::time::Instant::now();
+    for _ in 0..runs {
+        std::hint::black_box(ssim(&x, &y, 256, 256, 3));
+    }
+    let per = start.elapsed().as_secs_f64() / runs as f64;
+    println!("ssim 256x256x3 forward+backward: {:.2} ms", per * 1e3);
+}

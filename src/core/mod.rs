@@ -1,0 +1,24 @@
+//! The method's maths (METHOD.md): cameras, surfels, the learnable light (environment map and
+//! GridMap), PolarDR shading, losses, the optimizer and density control; the rasterizer interface
+//! with its f64 reference engine (what every other engine is tested against) and the fast f32
+//! host engine; triangle meshes and metrics. Uses only [`crate::formats`].
+
+pub mod brdf_lut;
+pub mod camera;
+pub mod config;
+pub mod densify;
+pub mod envmap;
+pub mod events;
+pub mod gradcheck;
+pub mod gridmap;
+pub mod kdtree;
+pub mod light;
+pub mod loss;
+pub mod mesh;
+pub mod metrics;
+pub mod optim;
+pub mod raster;
+pub mod render;
+pub mod shading;
+pub mod step;
+pub mod surfels;

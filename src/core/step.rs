@@ -1,0 +1,151 @@
+//! What one training step computes for one view, shared by the host step
+//! ([`crate::pipeline::train`]) and the gpu engine's resident trainer (`crate::gpu::DeviceTrainer`),
+//! so that both follow one plan: the view's training target ([`ViewTarget`]), which terms and
+//! shading a stage applies ([`StepPlan`]), and the per-pixel loss sums ([`LossSums`]) that the plan
+//! turns into the named, weighted losses of METHOD.md §6.
+
+use std::collections::BTreeMap;
+
+use crate::core::events::Stage;
+use crate::core::loss::LossWeights;
+
+/// The polarizer in front of a view, as the trainer uses it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Polarizer {
+    /// Known angle, radians.
+    Fixed(f64),
+    /// Learned angle of the named group.
+    Learned(String),
+}
+
+/// Training data of one view.
+#[derive(Clone, Debug)]
+pub struct ViewTarget {
+    /// Index into `Capture::views`.
+    pub view: usize,
+    /// Linear RGB target of the photometric loss (interleaved, α-premultiplied like the capture).
+    pub photometric: Vec<f64>,
+    /// Captured S1 and S2 when the Stokes loss applies to this view.
+    pub stokes: Option<(Vec<f64>, Vec<f64>)>,
+    /// The polarizer of a partial view (its photometric target is I(θ)).
+    pub polarizer: Option<Polarizer>,
+    /// Object mask in [0, 1].
+    pub mask: Vec<f64>,
+}
+
+/// What a step computes for one view in one stage, shared by [`run`] and the device trainer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepPlan {
+    /// PolarDR shading (every stage but plain 2DGS, where the colour is the albedo).
+    pub shaded: bool,
+    /// The polarizer angle the prediction is seen through: a view behind a polarizer in the
+    /// PolarDR stage (known, or its group's learned angle).
+    pub theta: Option<f64>,
+    /// The learned angle's group, whose gradient the step reports.
+    pub learned_angle: Option<String>,
+    /// ½ for a view behind a polarizer that is fitted as unpolarized light (I = S0 / 2 on
+    /// average over θ, before the PolarDR stage), else 1.
+    pub unpolarized_scale: f64,
+    /// The L1 on S1 and S2 applies (PolarDR stage, a view with Stokes targets).
+    pub stokes_loss: bool,
+    /// The extra L1 on Î(θ) applies (PolarDR stage, a view behind a polarizer without them).
+    pub extra_l1: bool,
+    /// Edge-aware normal smoothness applies (shaded stages, λ > 0).
+    pub normal_smooth: bool,
+    /// Depth–normal consistency applies (λ > 0).
+    pub depth_normal: bool,
+}
+
+/// Sums of each loss term over a view's pixels (and channels), before their means and weights.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LossSums {
+    /// Σ |prediction − target| over pixels and channels.
+    pub l1: f64,
+    /// Σ of the SSIM map over pixels and channels.
+    pub ssim: f64,
+    /// Σ (α − mask)².
+    pub mask: f64,
+    /// Σ |α S1 − S1*| + |α S2 − S2*| over pixels and channels.
+    pub stokes: f64,
+    /// Σ of the edge-weighted smoothed normal differences.
+    pub normal_smooth: f64,
+    /// Σ (1 − N̂ · N_d) over the pixels where both normals exist, and their number.
+    pub depth_normal: f64,
+    pub depth_normal_pixels: f64,
+}
+
+impl StepPlan {
+    pub fn new(
+        target: &ViewTarget,
+        stage: Stage,
+        angles: &BTreeMap<String, f64>,
+        weights: &LossWeights,
+    ) -> Self {
+        let polar = stage == Stage::Polar;
+        let (theta, learned_angle) = match (&target.polarizer, polar) {
+            (Some(Polarizer::Fixed(t)), true) => (Some(*t), None),
+            (Some(Polarizer::Learned(name)), true) => (
+                Some(angles.get(name).copied().unwrap_or(0.0)),
+                Some(name.clone()),
+            ),
+            _ => (None, None),
+        };
+        let polarized_view = target.polarizer.is_some();
+        let stokes_loss = polar && target.stokes.is_some();
+        StepPlan {
+            shaded: stage != Stage::Geometry,
+            theta,
+            learned_angle,
+            unpolarized_scale: if polarized_view && theta.is_none() {
+                0.5
+            } else {
+                1.0
+            },
+            stokes_loss,
+            extra_l1: polar && !stokes_loss && polarized_view,
+            normal_smooth: stage != Stage::Geometry && weights.lambda_normal_smooth > 0.0,
+            depth_normal: weights.lambda_depth_normal > 0.0,
+        }
+    }
+
+    /// The named, weighted loss terms of a step over `pixels` pixels (3 channels) from their sums.
+    pub fn losses(
+        &self,
+        sums: &LossSums,
+        weights: &LossWeights,
+        pixels: usize,
+    ) -> BTreeMap<String, f64> {
+        let elements = (3 * pixels).max(1) as f64;
+        let pixels = pixels.max(1) as f64;
+        let l1 = sums.l1 / elements;
+        let mut losses = BTreeMap::new();
+        let lambda = weights.lambda_ssim;
+        losses.insert(
+            "photometric".to_owned(),
+            (1.0 - lambda) * l1 + lambda * (1.0 - sums.ssim / elements),
+        );
+        if self.stokes_loss {
+            let value = weights.lambda_stokes * sums.stokes / elements;
+            losses.insert("stokes".to_owned(), value);
+        } else if self.extra_l1 {
+            losses.insert("stokes".to_owned(), weights.lambda_stokes * l1);
+        }
+        losses.insert("mask".to_owned(), weights.lambda_mask * sums.mask / pixels);
+        if self.normal_smooth {
+            let value = weights.lambda_normal_smooth * sums.normal_smooth / pixels;
+            losses.insert("normal_smooth".to_owned(), value);
+        }
+        if self.depth_normal {
+            let mean = if sums.depth_normal_pixels > 0.0 {
+                sums.depth_normal / sums.depth_normal_pixels
+            } else {
+                0.0
+            };
+            losses.insert(
+                "depth_normal".to_owned(),
+                weights.lambda_depth_normal * mean,
+            );
+        }
+        losses
+    }
+}

@@ -1,0 +1,324 @@
+//! Loading and validating a capture (CAPTURE_FORMAT.md): a `transforms.json` with cameras and, per
+//! view, a full-Stokes, four-polarizer, partial-polarization or plain RGB measurement and a mask.
+//!
+//! [`load`] parses the JSON, then reads every view's images in parallel (rayon, one task per frame)
+//! and either returns the complete [`Capture`] or a [`CaptureError`] listing every problem found:
+//! nothing is half-imported. All images come back as linear RGB in the image_y_up Stokes convention.
+
+mod error;
+mod frame;
+mod hull;
+mod images;
+mod json;
+
+#[cfg(test)]
+mod shared_data_tests;
+#[cfg(test)]
+mod tests;
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::core::camera::Camera;
+use crate::formats::image::Image;
+
+pub use error::{CaptureError, Problem};
+pub use hull::{Bounds, VisualHull};
+
+/// Training or held-out view.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Split {
+    Train,
+    Test,
+}
+
+/// The angle of the linear polarizer in front of a partial-polarization view.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum PolarizerAngle {
+    /// Known angle in degrees, image_y_up convention, in [0, 180).
+    Known { degrees: f64 },
+    /// Unknown angle shared by every view of the named group; learned.
+    Group(String),
+}
+
+/// What a view measured. Every image is linear RGB (3 channels), image_y_up convention.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Measurement {
+    /// Full Stokes S0, S1, S2 (from Stokes files or from four polarizer images).
+    Stokes { s0: Image, s1: Image, s2: Image },
+    /// One image behind a linear polarizer: I(θ) = ½ (S0 + S1 cos 2θ + S2 sin 2θ).
+    Polarizer { image: Image, angle: PolarizerAngle },
+    /// An ordinary image (S0 only).
+    Rgb { image: Image },
+}
+
+/// Ground-truth files named by the frame (`*_path` keys), joined to the capture folder; not loaded.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GroundTruth {
+    pub normal: Option<PathBuf>,
+    pub depth: Option<PathBuf>,
+    pub albedo: Option<PathBuf>,
+    pub roughness: Option<PathBuf>,
+    pub ior: Option<PathBuf>,
+    pub relight_s0: Option<PathBuf>,
+    pub s0: Option<PathBuf>,
+    pub s1: Option<PathBuf>,
+    pub s2: Option<PathBuf>,
+}
+
+/// One posed view with its measurement and mask.
+#[derive(Clone, Debug, PartialEq)]
+pub struct View {
+    /// E.g. `frame 3 (train/s0/003.exr)`.
+    pub name: String,
+    /// Position in the JSON `frames` list.
+    pub frame_index: usize,
+    pub split: Split,
+    pub camera: Camera,
+    pub measurement: Measurement,
+    /// One channel, values in [0, 1] (binary from a mask file, soft from an alpha channel).
+    pub mask: Image,
+    pub ground_truth: GroundTruth,
+}
+
+/// A loaded, validated capture.
+#[derive(Clone, Debug)]
+pub struct Capture {
+    /// The folder holding the JSON file; every path of the capture is relative to it.
+    pub root: PathBuf,
+    pub views: Vec<View>,
+    /// The world's up axis (+Z or +Y), which orients lat-long environment maps.
+    pub world_up: DVec3,
+    pub warnings: Vec<String>,
+}
+
+/// What `phygap inspect` prints.
+#[derive(Clone, Debug, Serialize)]
+pub struct CaptureSummary {
+    pub views: usize,
+    pub train_views: usize,
+    pub test_views: usize,
+    /// Measurement kinds present: `stokes`, `polarizer4` (Stokes from four polarizer images),
+    /// `partial`, `rgb`.
+    pub kinds: Vec<String>,
+    pub width: u32,
+    pub height: u32,
+    pub polarizer_groups: Vec<String>,
+    pub bounds: Bounds,
+    pub world_up: DVec3,
+    pub warnings: Vec<String>,
+}
+
+/// Loads a capture: `path` is a folder holding `transforms.json`, or a JSON file (e.g.
+/// `transforms_partial.json`); image paths are relative to the JSON file's folder.
+pub fn load(path: &Path) -> Result<Capture, CaptureError> {
+    let json_path = transforms_path(path);
+    let _span = tracing::info_span!("load_capture", path = %json_path.display()).entered();
+    let document = read_document(&json_path)?;
+    let folder = json_path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let root = folder.canonicalize().unwrap_or_else(|_| folder.to_owned());
+    let frame::Parsed {
+        header,
+        frames,
+        mut problems,
+    } = frame::parse(&root, &document);
+
+    if let Some(first) = frames.first() {
+        let size = (first.camera.width, first.camera.height);
+        for spec in &frames[1..] {
+            if (spec.camera.width, spec.camera.height) != size {
+                problems.push(Problem::new(
+                    spec.name.clone(),
+                    "w",
+                    format!(
+                        "mixed sizes: this frame is {}×{} but {} is {}×{}; all views of a capture must have one size",
+                        spec.camera.width, spec.camera.height, first.name, size.0, size.1
+                    ),
+                ));
+            }
+        }
+    }
+    if problems.is_empty() {
+        let train = frames.iter().filter(|f| f.split == Split::Train).count();
+        if train < 2 {
+            problems.push(Problem::new(
+                frame::TOP_LEVEL,
+                "split",
+                format!(
+                    "only {train} training view(s) among {} frames; at least 2 are needed",
+                    frames.len()
+                ),
+            ));
+        }
+    }
+
+    let loaded: Vec<Result<images::LoadedView, Vec<Problem>>> = {
+        let _span = tracing::info_span!("load_images", frames = frames.len()).entered();
+        frames
+            .par_iter()
+            .map(|spec| images::load_view(spec, &header))
+            .collect()
+    };
+    let mut views = Vec::with_capacity(loaded.len());
+    let mut unmasked = Vec::new();
+    for result in loaded {
+        match result {
+            Ok(loaded) => {
+                if loaded.whole_image_mask {
+                    unmasked.push(loaded.view.frame_index.to_string());
+                }
+                views.push(loaded.view);
+            }
+            Err(frame_problems) => problems.extend(frame_problems),
+        }
+    }
+    if !problems.is_empty() {
+        // A key read twice (as measurement and as ground truth) reports its problem once.
+        let mut seen = std::collections::HashSet::new();
+        problems.retain(|p| seen.insert(p.clone()));
+        return Err(CaptureError::Invalid {
+            path: json_path,
+            problems,
+        });
+    }
+    let mut warnings = Vec::new();
+    if !unmasked.is_empty() {
+        warnings.push(format!(
+            "{} view(s) have no mask_path and no alpha channel; the whole image is treated as object (frames {})",
+            unmasked.len(),
+            unmasked.join(", ")
+        ));
+    }
+    for warning in &warnings {
+        tracing::warn!("{warning}");
+    }
+    Ok(Capture {
+        root,
+        views,
+        world_up: header.world_up,
+        warnings,
+    })
+}
+
+/// The JSON file of a capture given as a folder (its `transforms.json`) or as the file itself.
+pub fn transforms_path(path: &Path) -> PathBuf {
+    if path.is_dir() {
+        path.join("transforms.json")
+    } else {
+        path.to_owned()
+    }
+}
+
+/// Reads and parses a transforms JSON file (NaN/Infinity tolerated, reported later per key).
+fn read_document(json_path: &Path) -> Result<serde_json::Value, CaptureError> {
+    let text = std::fs::read_to_string(json_path).map_err(|e| CaptureError::Read {
+        path: json_path.to_owned(),
+        message: e.to_string(),
+    })?;
+    json::parse_lenient(&text).map_err(|e| CaptureError::Json {
+        path: json_path.to_owned(),
+        line: e.line(),
+        column: e.column(),
+        message: e.to_string(),
+    })
+}
+
+/// Reads only the cameras of a transforms file (a capture folder or a JSON file): one
+/// `(frame name, camera)` per frame, in order. Image keys are not needed and not checked.
+pub fn load_cameras(path: &Path) -> Result<Vec<(String, Camera)>, CaptureError> {
+    let json_path = transforms_path(path);
+    let document = read_document(&json_path)?;
+    let (cameras, problems) = frame::parse_cameras(&document);
+    if problems.is_empty() {
+        Ok(cameras)
+    } else {
+        Err(CaptureError::Invalid {
+            path: json_path,
+            problems,
+        })
+    }
+}
+
+/// A transforms document holding only cameras (OpenGL convention), readable by
+/// [`load_cameras`]: what a model folder keeps of its capture's test views.
+pub fn cameras_to_json(cameras: &[(String, Camera)]) -> serde_json::Value {
+    let frames: Vec<serde_json::Value> = cameras
+        .iter()
+        .map(|(name, c)| {
+            serde_json::json!({
+                "name": name,
+                "w": c.width, "h": c.height,
+                "fl_x": c.fx, "fl_y": c.fy, "cx": c.cx, "cy": c.cy,
+                "transform_matrix": c.c2w.transpose().to_cols_array_2d(),
+            })
+        })
+        .collect();
+    serde_json::json!({ "camera_convention": "OpenGL", "frames": frames })
+}
+
+impl Capture {
+    pub fn train_views(&self) -> impl Iterator<Item = &View> {
+        self.views.iter().filter(|v| v.split == Split::Train)
+    }
+
+    pub fn test_views(&self) -> impl Iterator<Item = &View> {
+        self.views.iter().filter(|v| v.split == Split::Test)
+    }
+
+    /// The visual hull of the training views' masks.
+    pub fn visual_hull(&self) -> VisualHull<'_> {
+        VisualHull::new(self.train_views())
+    }
+
+    /// Bounding box, centre and radius of the object, estimated from the training masks and cameras.
+    pub fn object_bounds(&self) -> Bounds {
+        self.visual_hull().bounds()
+    }
+
+    /// Counts, kinds, resolution, polarizer groups, bounds and warnings.
+    pub fn summary(&self) -> CaptureSummary {
+        let mut kinds = BTreeSet::new();
+        let mut groups = BTreeSet::new();
+        for view in &self.views {
+            let kind = match &view.measurement {
+                // Stokes images are also recorded as ground truth (`s0_path`); a Stokes view
+                // without one was computed from the four polarizer images.
+                Measurement::Stokes { .. } if view.ground_truth.s0.is_some() => 0,
+                Measurement::Stokes { .. } => 1,
+                Measurement::Polarizer { angle, .. } => {
+                    if let PolarizerAngle::Group(g) = angle {
+                        groups.insert(g.clone());
+                    }
+                    2
+                }
+                Measurement::Rgb { .. } => 3,
+            };
+            kinds.insert(kind);
+        }
+        const KIND_NAMES: [&str; 4] = ["stokes", "polarizer4", "partial", "rgb"];
+        let (width, height) = self
+            .views
+            .first()
+            .map_or((0, 0), |v| (v.camera.width, v.camera.height));
+        CaptureSummary {
+            views: self.views.len(),
+            train_views: self.train_views().count(),
+            test_views: self.test_views().count(),
+            kinds: kinds.iter().map(|&k| KIND_NAMES[k].to_owned()).collect(),
+            width,
+            height,
+            polarizer_groups: groups.into_iter().collect(),
+            bounds: self.object_bounds(),
+            world_up: self.world_up,
+            warnings: self.warnings.clone(),
+        }
+    }
+}

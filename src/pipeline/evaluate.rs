@@ -1,0 +1,300 @@
+//! Evaluation of a reconstruction on the held-out views of a capture (METHOD.md §8): S0 PSNR/SSIM
+//! (sRGB 8-bit, inside the mask), normal MAE and cosine distance, Stokes, DoLP and AoLP errors and
+//! material errors where the capture carries ground truth. Every figure is the mean over test views;
+//! a figure without ground truth is `None` (JSON `null`).
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use glam::DVec3;
+use serde::Serialize;
+use thiserror::Error;
+
+use crate::core::metrics::{self, MetricsError};
+use crate::core::render::{RenderError, RenderedView, Scene};
+use crate::formats::image::{self, ImageError};
+use crate::io::capture::{Capture, Measurement, PolarizerAngle, View};
+
+/// The JSON printed by `phygap eval` (keys fixed by the CLI contract).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct EvalReport {
+    pub psnr: Option<f64>,
+    pub ssim: Option<f64>,
+    pub normal_mae_deg: Option<f64>,
+    pub normal_cos_dist: Option<f64>,
+    pub s1_l1: Option<f64>,
+    pub s2_l1: Option<f64>,
+    pub dolp_mae: Option<f64>,
+    pub aolp_mae_deg: Option<f64>,
+    pub albedo_mae: Option<f64>,
+    pub roughness_mae: Option<f64>,
+    pub ior_mae: Option<f64>,
+    /// S0 PSNR / SSIM (sRGB 8-bit, inside the mask) of the model relit by the capture's relight
+    /// map against each test view's `relight_s0` ground truth (`phygap eval --relight-envmap`).
+    pub relight_psnr: Option<f64>,
+    pub relight_ssim: Option<f64>,
+    /// Chamfer-L1 from the model's extracted mesh to a ground-truth mesh (`--gt-mesh`).
+    pub chamfer: Option<f64>,
+    pub num_surfels: usize,
+    pub train_seconds: Option<f64>,
+    /// Learned angle per `polarizer_group`, degrees in [0, 180).
+    pub polarizer_angles_deg: BTreeMap<String, f64>,
+    pub test_views: usize,
+}
+
+#[derive(Debug, Error)]
+pub enum EvalError {
+    #[error("the capture has no test views to evaluate on")]
+    NoTestViews,
+    #[error(transparent)]
+    Render(#[from] RenderError),
+    #[error("ground truth: {0}")]
+    GroundTruth(#[from] ImageError),
+    #[error("{view}: {source}")]
+    Metrics { view: String, source: MetricsError },
+    #[error("Chamfer distance: {0}")]
+    Mesh(#[from] crate::core::mesh::MeshError),
+}
+
+/// Mean S0 PSNR and SSIM (sRGB 8-bit, inside the mask) of `relit` — a scene lit by the capture's
+/// relighting map — against the `relight_s0` ground truth of every test view that has one
+/// (`None` when no test view has it).
+pub fn relight_metrics(
+    relit: &Scene,
+    capture: &Capture,
+) -> Result<(Option<f64>, Option<f64>), EvalError> {
+    let _span = tracing::info_span!("relight_metrics").entered();
+    let mut means = Means::default();
+    for view in capture.test_views() {
+        let Some(path) = &view.ground_truth.relight_s0 else {
+            continue;
+        };
+        let metric_err = |source| EvalError::Metrics {
+            view: view.name.clone(),
+            source,
+        };
+        let target = read_f64(path, 3)?;
+        let rendered = relit.render(&view.camera)?;
+        let pred = rendered.premultiplied(&rendered.shaded.s0);
+        let g = rendered.gbuffers();
+        let mask: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();
+        let mask = Some(mask.as_slice());
+        means.add(
+            "psnr",
+            Some(metrics::psnr_srgb8(&pred, &target, 3, mask).map_err(metric_err)?),
+        );
+        means.add(
+            "ssim",
+            Some(
+                metrics::ssim_srgb8(&pred, &target, g.width, g.height, 3, mask)
+                    .map_err(metric_err)?,
+            ),
+        );
+    }
+    Ok((means.get("psnr"), means.get("ssim")))
+}
+
+/// Chamfer-L1 from a predicted mesh to the ground-truth mesh at `gt_path` (PLY), METHOD.md §8.
+pub fn chamfer_to_gt(
+    pred: &crate::core::mesh::TriangleMesh,
+    gt_path: &Path,
+) -> Result<f64, EvalError> {
+    let gt = crate::core::mesh::TriangleMesh::read_ply(gt_path)?;
+    Ok(crate::core::mesh::chamfer_l1(pred, &gt)?)
+}
+
+/// Running means of the per-view figures.
+#[derive(Default)]
+struct Means(BTreeMap<&'static str, (f64, usize)>);
+
+impl Means {
+    fn add(&mut self, key: &'static str, value: Option<f64>) {
+        if let Some(v) = value.filter(|v| v.is_finite()) {
+            let e = self.0.entry(key).or_insert((0.0, 0));
+            e.0 += v;
+            e.1 += 1;
+        }
+    }
+    fn get(&self, key: &str) -> Option<f64> {
+        self.0.get(key).map(|(s, n)| s / *n as f64)
+    }
+}
+
+fn read_f64(path: &Path, channels: usize) -> Result<Vec<f64>, ImageError> {
+    let (img, _) = image::read_image(path)?;
+    let img = if channels == 3 {
+        img.to_rgb()
+    } else {
+        img.channel(0)
+    };
+    Ok(img.data.iter().map(|&v| f64::from(v)).collect())
+}
+
+fn to_f64(img: &crate::formats::image::Image) -> Vec<f64> {
+    img.to_rgb().data.iter().map(|&v| f64::from(v)).collect()
+}
+
+/// Ground-truth Stokes of a test view: from its measurement, else from `s*_path` ground truth.
+fn ground_truth_stokes(view: &View) -> Result<Option<[Vec<f64>; 3]>, ImageError> {
+    if let Measurement::Stokes { s0, s1, s2 } = &view.measurement {
+        return Ok(Some([to_f64(s0), to_f64(s1), to_f64(s2)]));
+    }
+    let gt = &view.ground_truth;
+    match (&gt.s0, &gt.s1, &gt.s2) {
+        (Some(a), Some(b), Some(c)) => {
+            Ok(Some([read_f64(a, 3)?, read_f64(b, 3)?, read_f64(c, 3)?]))
+        }
+        _ => Ok(None),
+    }
+}
+
+/// Per-pixel grey (channel mean) of an interleaved RGB image.
+fn grey(rgb: &[f64]) -> Vec<f64> {
+    rgb.chunks_exact(3)
+        .map(|c| (c[0] + c[1] + c[2]) / 3.0)
+        .collect()
+}
+
+/// Photometric target and prediction of a view without Stokes ground truth: the image itself,
+/// compared with S0 (plain RGB) or with I(θ) (behind a polarizer).
+fn image_comparison(
+    view: &View,
+    rendered: &RenderedView,
+    angles: &BTreeMap<String, f64>,
+) -> (Vec<f64>, Vec<f64>) {
+    let s = &rendered.shaded;
+    match &view.measurement {
+        Measurement::Polarizer { image, angle } => {
+            let theta = match angle {
+                PolarizerAngle::Known { degrees } => degrees.to_radians(),
+                PolarizerAngle::Group(g) => angles.get(g).copied().unwrap_or(0.0),
+            };
+            let (c, sn) = ((2.0 * theta).cos(), (2.0 * theta).sin());
+            let intensity: Vec<DVec3> = (0..s.s0.len())
+                .map(|p| 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn))
+                .collect();
+            (rendered.premultiplied(&intensity), to_f64(image))
+        }
+        Measurement::Rgb { image } => (rendered.premultiplied(&s.s0), to_f64(image)),
+        Measurement::Stokes { s0, .. } => (rendered.premultiplied(&s.s0), to_f64(s0)),
+    }
+}
+
+/// Evaluates `scene` on every test view of `capture`. `angles` are the learned polarizer angles in
+/// radians (for partial test views without S0 ground truth).
+pub fn evaluate(
+    scene: &Scene,
+    capture: &Capture,
+    angles: &BTreeMap<String, f64>,
+) -> Result<EvalReport, EvalError> {
+    let _span = tracing::info_span!("evaluate").entered();
+    let tests: Vec<&View> = capture.test_views().collect();
+    if tests.is_empty() {
+        return Err(EvalError::NoTestViews);
+    }
+    let mut means = Means::default();
+    for view in &tests {
+        let metric_err = |source| EvalError::Metrics {
+            view: view.name.clone(),
+            source,
+        };
+        let rendered = scene.render(&view.camera)?;
+        let g = rendered.gbuffers();
+        let (w, h) = (g.width, g.height);
+        let mask_pixels: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();
+        let mask = Some(mask_pixels.as_slice());
+        let s = &rendered.shaded;
+        let gt_stokes = ground_truth_stokes(view)?;
+        let (pred0, target0) = match &gt_stokes {
+            Some([t0, _, _]) => (rendered.premultiplied(&s.s0), t0.clone()),
+            None => image_comparison(view, &rendered, angles),
+        };
+        means.add(
+            "psnr",
+            Some(metrics::psnr_srgb8(&pred0, &target0, 3, mask).map_err(metric_err)?),
+        );
+        means.add(
+            "ssim",
+            Some(metrics::ssim_srgb8(&pred0, &target0, w, h, 3, mask).map_err(metric_err)?),
+        );
+        if let Some([t0, t1, t2]) = &gt_stokes {
+            let (p1, p2) = (rendered.premultiplied(&s.s1), rendered.premultiplied(&s.s2));
+            means.add("s1_l1", metrics::masked_mae(&p1, t1, 3, mask).ok());
+            means.add("s2_l1", metrics::masked_mae(&p2, t2, 3, mask).ok());
+            let (gp0, gp1, gp2) = (grey(&pred0), grey(&p1), grey(&p2));
+            let (gt0, gt1, gt2) = (grey(t0), grey(t1), grey(t2));
+            let pred_dolp = metrics::dolp(&gp0, &gp1, &gp2).map_err(metric_err)?;
+            let gt_dolp = metrics::dolp(&gt0, &gt1, &gt2).map_err(metric_err)?;
+            means.add(
+                "dolp_mae",
+                metrics::masked_mae(&pred_dolp, &gt_dolp, 1, mask).ok(),
+            );
+            let polarized: Vec<bool> = gt_dolp
+                .iter()
+                .zip(&mask_pixels)
+                .map(|(&d, &m)| m && d > 0.05)
+                .collect();
+            let pred_aolp = metrics::aolp(&gp1, &gp2).map_err(metric_err)?;
+            let gt_aolp = metrics::aolp(&gt1, &gt2).map_err(metric_err)?;
+            means.add(
+                "aolp_mae_deg",
+                metrics::aolp_mae_degrees(&pred_aolp, &gt_aolp, 1, Some(&polarized)).ok(),
+            );
+        }
+        let gt = &view.ground_truth;
+        if let Some(path) = &gt.normal {
+            let errors = metrics::normal_errors(g.normal.as_flattened(), &read_f64(path, 3)?, mask);
+            if let Ok(e) = errors {
+                means.add("normal_mae_deg", Some(e.mae_degrees));
+                means.add("normal_cos_dist", Some(e.cosine_distance));
+            }
+        }
+        if let Some(path) = &gt.albedo {
+            let pred = g.albedo.as_flattened();
+            means.add(
+                "albedo_mae",
+                metrics::masked_mae(pred, &read_f64(path, 3)?, 3, mask).ok(),
+            );
+        }
+        if let Some(path) = &gt.roughness {
+            // Ground truth stores GGX α; our roughness r has α = r².
+            let gt_r: Vec<f64> = read_f64(path, 1)?
+                .iter()
+                .map(|a| a.max(0.0).sqrt())
+                .collect();
+            means.add(
+                "roughness_mae",
+                metrics::masked_mae(&g.roughness, &gt_r, 1, mask).ok(),
+            );
+        }
+        if let Some(path) = &gt.ior {
+            means.add(
+                "ior_mae",
+                metrics::masked_mae(&g.ior, &read_f64(path, 1)?, 1, mask).ok(),
+            );
+        }
+    }
+    Ok(EvalReport {
+        psnr: means.get("psnr"),
+        ssim: means.get("ssim"),
+        normal_mae_deg: means.get("normal_mae_deg"),
+        normal_cos_dist: means.get("normal_cos_dist"),
+        s1_l1: means.get("s1_l1"),
+        s2_l1: means.get("s2_l1"),
+        dolp_mae: means.get("dolp_mae"),
+        aolp_mae_deg: means.get("aolp_mae_deg"),
+        albedo_mae: means.get("albedo_mae"),
+        roughness_mae: means.get("roughness_mae"),
+        ior_mae: means.get("ior_mae"),
+        relight_psnr: None,
+        relight_ssim: None,
+        chamfer: None,
+        num_surfels: scene.surfels.len(),
+        train_seconds: None,
+        polarizer_angles_deg: angles
+            .iter()
+            .map(|(k, v)| (k.clone(), v.to_degrees().rem_euclid(180.0)))
+            .collect(),
+        test_views: tests.len(),
+    })
+}

@@ -1,0 +1,80 @@
+//! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
+//! EXR), the extracted mesh (`mesh.ply`), configuration, metrics, and S0/normal/albedo/DoLP/AoLP renders of
+//! the capture's test views. This is what the service publishes as a job's artifacts and what
+//! `phygap export` writes.
+
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+use crate::io::capture::{self, CaptureError};
+use crate::io::model::{Model, ModelError, TEST_CAMERAS_FILE};
+use crate::pipeline::mesh_extraction::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
+use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
+
+#[derive(Debug, Error)]
+pub enum ExportError {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Reconstruction(#[from] ReconstructionError),
+    #[error(transparent)]
+    Cameras(#[from] CaptureError),
+    #[error(transparent)]
+    Meshing(#[from] MeshingError),
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+/// Files copied as they are from the model folder (when present).
+const COPIED: [&str; 5] = [
+    "surfels.ply",
+    "envmap.exr",
+    "config.json",
+    "metrics.json",
+    "model.json",
+];
+
+/// The mesh written into the export folder.
+pub const MESH_FILE: &str = "mesh.ply";
+
+/// Kinds rendered for every test camera (DoLP and AoLP: the polarization the model predicts).
+const RENDERED: [&str; 5] = ["s0", "normal", "albedo", "dolp", "aolp"];
+
+/// Writes the deliverables of `model_dir` into `out_dir` (created if needed); returns the files.
+pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportError> {
+    let _span = tracing::info_span!("export", model = %model_dir.display()).entered();
+    let io = |path: &Path| {
+        let path = path.to_owned();
+        move |source| ExportError::Io { path, source }
+    };
+    let model = Model::load(model_dir)?;
+    std::fs::create_dir_all(out_dir).map_err(io(out_dir))?;
+    let mut written = Vec::new();
+    for name in COPIED {
+        let from = model_dir.join(name);
+        if from.exists() {
+            let to = out_dir.join(name);
+            std::fs::copy(&from, &to).map_err(io(&from))?;
+            written.push(to);
+        }
+    }
+    let mesh = mesh_extraction::extract_from_model(&model, DEFAULT_MESH_RESOLUTION)?;
+    let mesh_path = out_dir.join(MESH_FILE);
+    mesh_extraction::write_mesh(&mesh, &mesh_path)?;
+    written.push(mesh_path);
+    let cameras_file = model_dir.join(TEST_CAMERAS_FILE);
+    if cameras_file.exists() {
+        let cameras = capture::load_cameras(&cameras_file)?;
+        let reconstruction = Reconstruction::new(model)?;
+        written.extend(reconstruction.render_to_dir(
+            &cameras,
+            &out_dir.join("renders"),
+            &RENDERED,
+        )?);
+    }
+    Ok(written)
+}

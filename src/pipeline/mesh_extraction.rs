@@ -1,0 +1,226 @@
+//! Triangle mesh of a set of surfels (METHOD.md §8): render α-normalized depth and opacity from a set
+//! of cameras (the training cameras), fuse them into a TSDF over the surfels' robust extent
+//! ([`TsdfParams::automatic`]: 5-voxel truncation, depth limited to the far side of the bounds),
+//! run marching cubes and keep the largest component. Used by `phygap mesh`, the export, the
+//! evaluation's Chamfer distance and GridMap (training and rendering).
+//!
+//! Threading: views are rasterized one after the other (the backend parallelizes each); fusion and
+//! marching cubes are parallel inside [`crate::core::mesh`].
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+use thiserror::Error;
+
+use crate::core::camera::Camera;
+use crate::core::mesh::{
+    cameras_around_point, extract_mesh, DepthView, MeshError, TriangleMesh, TsdfParams,
+};
+use crate::core::raster::{Backend, RasterError, RasterSettings};
+use crate::core::surfels::{sigmoid, Surfels};
+use crate::io::model::Model;
+use crate::pipeline::backend::{self, BackendError};
+
+/// Default TSDF resolution (voxels along the longest side) of `phygap mesh` and the export.
+pub const DEFAULT_MESH_RESOLUTION: usize = 256;
+
+/// Resolution of the meshes GridMap traces against (training and rendering use the same, so a
+/// model renders with the lighting it was trained with).
+pub const GRIDMAP_MESH_RESOLUTION: usize = 128;
+
+/// Surfels at least this opaque define the extent of the object.
+const EXTENT_MIN_OPACITY: f64 = 0.1;
+/// Fraction of the surfel centres ignored at each end of every axis (floaters).
+const EXTENT_TRIM: f64 = 0.002;
+/// Padding added on every side of the trimmed extent, as a fraction of its diagonal.
+const EXTENT_PADDING: f64 = 0.05;
+
+/// Cameras placed around the object when a model carries no training cameras.
+const ORBIT_VIEWS: usize = 48;
+const ORBIT_SIZE: u32 = 128;
+
+#[derive(Debug, Error)]
+pub enum MeshingError {
+    #[error("cannot extract a mesh: the model has no surfels")]
+    NoSurfels,
+    #[error("cannot extract a mesh: no cameras to render depth from")]
+    NoCameras,
+    #[error("mesh file {0}: unknown extension (use .ply or .obj)")]
+    UnknownExtension(PathBuf),
+    #[error(transparent)]
+    Mesh(#[from] MeshError),
+    #[error(transparent)]
+    Raster(#[from] RasterError),
+    #[error(transparent)]
+    Backend(#[from] BackendError),
+}
+
+/// The object's extent from its surfel centres: surfels with opacity ≥ 0.1 (all when there are too
+/// few), each axis trimmed by 0.2% at both ends against floaters, padded by 5% of the diagonal.
+pub fn surfel_bounds(surfels: &Surfels) -> Option<(DVec3, DVec3)> {
+    let opaque: Vec<DVec3> = (0..surfels.len())
+        .filter(|&i| sigmoid(surfels.opacity[i]) >= EXTENT_MIN_OPACITY)
+        .map(|i| DVec3::from_array(surfels.position[i]))
+        .collect();
+    let points: Vec<DVec3> = if opaque.len() >= 8 {
+        opaque
+    } else {
+        surfels
+            .position
+            .iter()
+            .map(|p| DVec3::from_array(*p))
+            .collect()
+    };
+    let points: Vec<DVec3> = points.into_iter().filter(|p| p.is_finite()).collect();
+    if points.is_empty() {
+        return None;
+    }
+    let trim = ((points.len() as f64) * EXTENT_TRIM).floor() as usize;
+    let mut lo = DVec3::ZERO;
+    let mut hi = DVec3::ZERO;
+    for axis in 0..3 {
+        let mut values: Vec<f64> = points.iter().map(|p| p[axis]).collect();
+        values.sort_by(f64::total_cmp);
+        lo[axis] = values[trim];
+        hi[axis] = values[values.len() - 1 - trim];
+    }
+    let pad = EXTENT_PADDING * (hi - lo).length().max(1e-6);
+    Some((lo - DVec3::splat(pad), hi + DVec3::splat(pad)))
+}
+
+/// Cameras on a Fibonacci sphere around the surfels' extent (3 radii away, 40° field of view),
+/// for models saved without their training cameras.
+pub fn orbit_cameras(surfels: &Surfels) -> Vec<Camera> {
+    let Some((lo, hi)) = surfel_bounds(surfels) else {
+        return Vec::new();
+    };
+    let centre = 0.5 * (lo + hi);
+    let radius = 0.5 * (hi - lo).length();
+    cameras_around_point(
+        ORBIT_VIEWS,
+        centre,
+        3.0 * radius,
+        ORBIT_SIZE,
+        40f64.to_radians(),
+    )
+}
+
+/// Renders depth and opacity of `surfels` from every camera and extracts the surface at a TSDF
+/// resolution of `resolution` voxels along the longest side of [`surfel_bounds`].
+pub fn mesh_from_surfels(
+    surfels: &Surfels,
+    cameras: &[Camera],
+    backend: &dyn Backend,
+    settings: &RasterSettings,
+    resolution: usize,
+) -> Result<TriangleMesh, MeshingError> {
+    let _span =
+        tracing::info_span!("mesh_from_surfels", views = cameras.len(), resolution).entered();
+    let bounds = surfel_bounds(surfels).ok_or(MeshingError::NoSurfels)?;
+    if cameras.is_empty() {
+        return Err(MeshingError::NoCameras);
+    }
+    let mut maps = Vec::with_capacity(cameras.len());
+    for camera in cameras {
+        let g = backend.forward(surfels, camera, settings)?.gbuffers;
+        maps.push((g.depth, g.alpha));
+    }
+    let views: Vec<DepthView> = cameras
+        .iter()
+        .zip(&maps)
+        .map(|(camera, (depth, alpha))| DepthView {
+            camera,
+            depth,
+            alpha: Some(alpha),
+        })
+        .collect();
+    let params = TsdfParams::automatic(resolution, &views, bounds);
+    Ok(extract_mesh(&views, bounds, &params)?)
+}
+
+/// The cameras a model's mesh is extracted from: its training cameras, else [`orbit_cameras`].
+pub fn model_cameras(model: &Model) -> Vec<Camera> {
+    if model.train_cameras.is_empty() {
+        orbit_cameras(&model.surfels)
+    } else {
+        model.train_cameras.iter().map(|(_, c)| *c).collect()
+    }
+}
+
+/// The mesh of a trained model (its own backend, the training cameras) at `resolution`.
+pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMesh, MeshingError> {
+    let backend = backend::select(model.config.backend)?;
+    mesh_from_surfels(
+        &model.surfels,
+        &model_cameras(model),
+        &*backend,
+        &RasterSettings::default(),
+        resolution,
+    )
+}
+
+/// Writes a mesh as PLY or OBJ, chosen by the file extension (case-insensitive).
+pub fn write_mesh(mesh: &TriangleMesh, path: &Path) -> Result<(), MeshingError> {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match extension.as_deref() {
+        Some("ply") => Ok(mesh.write_ply(path)?),
+        Some("obj") => Ok(mesh.write_obj(path)?),
+        _ => Err(MeshingError::UnknownExtension(path.to_owned())),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::sphere_surfels;
+
+    #[test]
+    fn a_surfel_sphere_meshes_to_a_sphere() {
+        let surfels = sphere_surfels(DVec3::new(0.2, -0.1, 0.3), 0.8, 4000, DVec3::splat(0.5));
+        let cameras = orbit_cameras(&surfels);
+        assert_eq!(cameras.len(), ORBIT_VIEWS);
+        let backend = crate::core::raster::cpu::CpuBackend;
+        let mesh = mesh_from_surfels(&surfels, &cameras, &backend, &RasterSettings::default(), 48)
+            .unwrap();
+        assert!(mesh.triangles.len() > 500);
+        let centre = DVec3::new(0.2, -0.1, 0.3);
+        let worst = mesh
+            .vertices
+            .iter()
+            .map(|v| (DVec3::from_array(*v).distance(centre) - 0.8).abs())
+            .fold(0.0, f64::max);
+        // Surfels are flat discs with Gaussian edges; a few percent of the radius is the TSDF's
+        // resolution (1.8 / 48 ≈ 0.04 per voxel).
+        assert!(worst < 0.06, "largest radial error {worst}");
+        let (lo, hi) = surfel_bounds(&surfels).unwrap();
+        assert!((lo - (centre - DVec3::splat(0.8))).max_element() < 0.0);
+        assert!((hi - (centre + DVec3::splat(0.8))).min_element() > 0.0);
+    }
+
+    #[test]
+    fn floaters_do_not_stretch_the_bounds_and_extensions_choose_the_format() {
+        let mut surfels = sphere_surfels(DVec3::ZERO, 1.0, 2000, DVec3::splat(0.5));
+        let mut floater = surfels.get(0);
+        floater.position = DVec3::new(40.0, 0.0, 0.0);
+        surfels.push_activated(&floater);
+        let (_, hi) = surfel_bounds(&surfels).unwrap();
+        assert!(hi.x < 1.3, "{hi}");
+        let dir = tempfile::tempdir().unwrap();
+        let mesh = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 1);
+        write_mesh(&mesh, &dir.path().join("m.PLY")).unwrap();
+        write_mesh(&mesh, &dir.path().join("m.obj")).unwrap();
+        assert_eq!(
+            TriangleMesh::read_ply(&dir.path().join("m.PLY"))
+                .unwrap()
+                .triangles,
+            mesh.triangles
+        );
+        assert!(matches!(
+            write_mesh(&mesh, &dir.path().join("m.stl")),
+            Err(MeshingError::UnknownExtension(_))
+        ));
+    }
+}

@@ -1,0 +1,1096 @@
+//! The training run (METHOD.md §6–§7): one random training view per iteration through the three
+//! stages (plain 2DGS, material warm-up, PolarDR with the Stokes loss), Adam on every parameter
+//! group, densification and opacity resets, periodic evaluation and checkpoints, and the model
+//! folder at the end. Progress is reported as [`TrainEvent`]s to the caller and appended to
+//! `MODEL/progress.jsonl`.
+//!
+//! GridMap (METHOD.md §5, `gridmap = true`): in the PolarDR stage the shader's light is GridMap over
+//! the learned environment. The mesh is extracted from the surfels rendered at the training cameras
+//! (TSDF at R = 128) at the start of the stage and every `mesh_interval` steps; the local probes are
+//! rebuilt every `gridmap_interval` steps (and with each new mesh). Probes are *not* rebuilt each
+//! time the learned map is re-prefiltered (every `envmap_prefilter_interval` steps; a rebuild costs
+//! about 2 CPU-seconds at D = 64): only GridMap's global light — used by escaping mirror
+//! rays and receiving their gradient — follows the map at once.
+//!
+//! Determinism: every random choice of iteration `i` comes from a generator seeded by
+//! `(seed, i)`, and the state is checkpointed completely, so `--resume` continues bit for bit.
+//! GridMap is not checkpointed: it is rebuilt from the state at the first PolarDR step of a session
+//! and, in the uninterrupted run, right after each checkpoint, so both runs see the same probes.
+
+mod angles;
+mod engine;
+mod eta;
+pub mod init;
+pub mod state;
+pub mod step;
+pub mod targets;
+
+use std::collections::BTreeMap;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Instant;
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use thiserror::Error;
+
+use crate::core::brdf_lut::BrdfLut;
+use crate::core::config::{ConfigError, Mode, TrainConfig};
+use crate::core::densify::{self, DensifyRules, DensifyStats};
+use crate::core::envmap::{EnvMapError, PrefilterPlan, PreparedEnv, WorldUp};
+use crate::core::events::{Stage, TrainEvent};
+use crate::core::gridmap::GridMap;
+use crate::core::light::LightProbe;
+use crate::core::mesh::TriangleMesh;
+use crate::core::optim::{
+    Adam, AdamConfig, LearningRates, OptimError, ENVMAP_GROUP, POLARIZER_GROUP,
+};
+use crate::core::raster::{RasterError, RasterSettings};
+use crate::core::render::{RenderError, Scene};
+use crate::core::shading::ShadingError;
+use crate::core::surfels::Surfels;
+use crate::formats::checkpoint::CheckpointError;
+use crate::io::capture::Capture;
+use crate::io::model::{self, Model, ModelError, ModelInfo};
+use crate::pipeline::backend::{self, BackendError, Engine};
+use crate::pipeline::evaluate::{self, EvalError};
+use crate::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
+use crate::pipeline::reconstruction::prefilter_plan;
+use init::init_from_visual_hull;
+
+use crate::core::step::ViewTarget;
+use engine::{Pending, StepEngine};
+use eta::Eta;
+use state::{TrainState, CHECKPOINT_FILE};
+use targets::{learned_groups, resolve_mode, view_target};
+
+/// How a run ended.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TrainOutcome {
+    /// All iterations done; the model folder is complete.
+    Finished,
+    /// Stopped by the cancel flag after writing a checkpoint at `iteration`.
+    Interrupted { iteration: u32 },
+}
+
+#[derive(Debug, Error)]
+pub enum TrainError {
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    #[error("mode `{mode:?}` does not fit this capture: {reason}")]
+    Mode { mode: Mode, reason: String },
+    #[error(transparent)]
+    Backend(#[from] BackendError),
+    #[error(transparent)]
+    Gpu(#[from] crate::gpu::GpuError),
+    #[error(transparent)]
+    Raster(#[from] RasterError),
+    #[error(transparent)]
+    Shading(#[from] ShadingError),
+    #[error(transparent)]
+    Render(#[from] RenderError),
+    #[error(transparent)]
+    EnvMap(#[from] EnvMapError),
+    #[error(transparent)]
+    Optimizer(#[from] OptimError),
+    #[error(transparent)]
+    Checkpoint(#[from] CheckpointError),
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Eval(#[from] EvalError),
+    #[error("cannot resume: the checkpoint in {0} was written with a different configuration")]
+    ConfigChanged(PathBuf),
+    #[error(
+        "training diverged at iteration {0} (non-finite parameters); try a lower learning rate"
+    )]
+    Diverged(u32),
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+/// Stage of iteration `it` (0-based).
+pub fn stage_of(it: u32, config: &TrainConfig) -> Stage {
+    if it < config.material_stage_start() {
+        Stage::Geometry
+    } else if it < config.polar_stage_start() {
+        Stage::Material
+    } else {
+        Stage::Polar
+    }
+}
+
+/// The most surfels densification may grow to: `surfels_per_mask_pixel` times the mean object
+/// area (mask pixels) of the training views, within `initial_surfels..=max_surfels`. Surfels
+/// beyond a few per pixel of the object add cost to every step and no detail the images hold (the
+/// knot grew to 13 per pixel under the 300k cap alone).
+fn surfel_budget(config: &TrainConfig, targets: &[ViewTarget]) -> usize {
+    let cap = config.max_surfels as usize;
+    if config.surfels_per_mask_pixel <= 0.0 || targets.is_empty() {
+        return cap;
+    }
+    let mask_pixels: f64 = targets
+        .iter()
+        .map(|t| t.mask.iter().sum::<f64>())
+        .sum::<f64>()
+        / targets.len() as f64;
+    let budget = (config.surfels_per_mask_pixel * mask_pixels).round() as usize;
+    budget.clamp(config.initial_surfels as usize, cap)
+}
+
+/// The generator of iteration `it`: a pure function of the seed and the iteration.
+fn iteration_rng(seed: u64, it: u32) -> ChaCha8Rng {
+    ChaCha8Rng::seed_from_u64(seed ^ (u64::from(it) + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15))
+}
+
+/// Emits events to the caller and to `progress.jsonl`.
+struct Reporter<'a> {
+    on_event: &'a mut dyn FnMut(&TrainEvent),
+    log: Option<std::fs::File>,
+}
+
+impl Reporter<'_> {
+    fn emit(&mut self, event: TrainEvent) {
+        if let Some(file) = &mut self.log {
+            let line = serde_json::to_string(&event).expect("events serialize");
+            // The log is a convenience copy of the event stream; a full disk must not stop training.
+            if writeln!(file, "{line}").is_err() {
+                self.log = None;
+            }
+        }
+        (self.on_event)(&event);
+    }
+}
+
+/// A stable fingerprint of the settings that shape a run (a resume must use the same ones).
+fn fingerprint(config: &TrainConfig) -> String {
+    serde_json::to_string(config).expect("config serializes")
+}
+
+/// GridMap of a run (METHOD.md §5): the mesh and the probes, rebuilt from the training state on
+/// their schedules and never checkpointed. `current` is false at the start of a session and right
+/// after a checkpoint, so an uninterrupted run and a resumed one rebuild at the same iteration
+/// from the same state (bit-exact resume).
+#[derive(Default)]
+struct Occlusion {
+    mesh: Option<TriangleMesh>,
+    grid: Option<GridMap>,
+    current: bool,
+}
+
+/// The learned environment prefiltered on the host. With the device engine the map moves on the
+/// device's prefilter, and the host's copy is rebuilt only when something on the host needs it
+/// (`current` false until then).
+struct HostEnv {
+    prepared: PreparedEnv,
+    current: bool,
+}
+
+impl HostEnv {
+    fn new(state: &TrainState, plan: &Arc<PrefilterPlan>) -> Result<Self, TrainError> {
+        Ok(HostEnv {
+            prepared: PreparedEnv::new(&state.envmap, plan.clone())?,
+            current: true,
+        })
+    }
+
+    /// Prefilters the learned map again if it moved since, and hands it to GridMap as its
+    /// global light.
+    fn refresh(
+        &mut self,
+        state: &TrainState,
+        plan: &Arc<PrefilterPlan>,
+        occlusion: &mut Occlusion,
+    ) -> Result<(), TrainError> {
+        if !self.current {
+            *self = HostEnv::new(state, plan)?;
+            if let Some(grid) = &mut occlusion.grid {
+                grid.set_global(self.prepared.clone());
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Everything fixed during a run.
+struct Run<'a> {
+    capture: &'a Capture,
+    config: &'a TrainConfig,
+    mode: Mode,
+    backend: &'a Engine,
+    settings: RasterSettings,
+    lut: &'static BrdfLut,
+    plan: Arc<PrefilterPlan>,
+    targets: Vec<ViewTarget>,
+    learning_rates: LearningRates,
+    densify_rules: DensifyRules,
+    model_dir: &'a Path,
+}
+
+/// Trains a reconstruction of `capture` into `model_dir`.
+///
+/// With `resume`, continues from `model_dir/checkpoint.bin` when it exists (a checkpoint written
+/// with another configuration is refused). When `cancel` becomes true the run writes a checkpoint
+/// and returns [`TrainOutcome::Interrupted`].
+pub fn train(
+    capture: &Capture,
+    model_dir: &Path,
+    config: &TrainConfig,
+    resume: bool,
+    cancel: &AtomicBool,
+    on_event: &mut dyn FnMut(&TrainEvent),
+) -> Result<TrainOutcome, TrainError> {
+    config.validate()?;
+    let backend = backend::select(config.backend)?;
+    train_on(
+        &backend, capture, model_dir, config, resume, cancel, on_event,
+    )
+}
+
+/// [`train`] on a backend the caller opened (`config.backend` is not consulted), so that it can
+/// read the backend's pass timings afterwards (`phygap bench train`).
+pub fn train_on(
+    backend: &Engine,
+    capture: &Capture,
+    model_dir: &Path,
+    config: &TrainConfig,
+    resume: bool,
+    cancel: &AtomicBool,
+    on_event: &mut dyn FnMut(&TrainEvent),
+) -> Result<TrainOutcome, TrainError> {
+    config.validate()?;
+    let _span = tracing::info_span!("train", iterations = config.iterations).entered();
+    std::fs::create_dir_all(model_dir).map_err(|source| TrainError::Io {
+        path: model_dir.to_owned(),
+        source,
+    })?;
+    let mode = resolve_mode(capture, config.mode);
+    let targets: Vec<ViewTarget> = capture
+        .views
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| v.split == crate::io::capture::Split::Train)
+        .map(|(i, v)| view_target(i, v, mode))
+        .collect();
+    if mode == Mode::Full && targets.iter().all(|t| t.stokes.is_none()) {
+        return Err(TrainError::Mode {
+            mode,
+            reason: "no training view has full Stokes measurements".into(),
+        });
+    }
+    let bounds = capture.object_bounds();
+    let max_surfels = surfel_budget(config, &targets);
+    let run = Run {
+        capture,
+        config,
+        mode,
+        settings: RasterSettings::default(),
+        lut: BrdfLut::shared(),
+        plan: prefilter_plan(config.envmap_resolution as usize, config.fresnel_irradiance)?,
+        targets,
+        learning_rates: LearningRates::from_config(config, bounds.radius),
+        densify_rules: DensifyRules::for_extent(
+            bounds.radius,
+            config.densify_grad_threshold,
+            config.prune_opacity,
+            max_surfels,
+        ),
+        backend,
+        model_dir,
+    };
+    let log = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(model_dir.join("progress.jsonl"))
+        .ok();
+    let mut reporter = Reporter { on_event, log };
+    run.train(resume, cancel, &mut reporter)
+}
+
+impl Run<'_> {
+    fn fresh_state(&self) -> Result<TrainState, TrainError> {
+        let surfels = init_from_visual_hull(
+            self.capture,
+            self.config.initial_surfels as usize,
+            self.config.seed,
+        );
+        let n = surfels.len();
+        Ok(TrainState {
+            iteration: 0,
+            surfels,
+            envmap: model::initial_envmap(self.config.envmap_resolution as usize)?,
+            polarizer_angles: learned_groups(&self.targets)
+                .into_iter()
+                .map(|g| (g, 0.0))
+                .collect(),
+            adam: Adam::new(AdamConfig::default()),
+            densify: DensifyStats::new(n),
+            elapsed_seconds: 0.0,
+        })
+    }
+
+    fn train(
+        &self,
+        resume: bool,
+        cancel: &AtomicBool,
+        reporter: &mut Reporter,
+    ) -> Result<TrainOutcome, TrainError> {
+        let checkpoint = self.model_dir.join(CHECKPOINT_FILE);
+        let fp = fingerprint(self.config);
+        let (mut state, resumed_from) = if resume && checkpoint.exists() {
+            let (state, saved_fp) = TrainState::load(&checkpoint)?;
+            if saved_fp != fp {
+                return Err(TrainError::ConfigChanged(checkpoint));
+            }
+            let it = state.iteration;
+            (state, Some(it))
+        } else {
+            (self.fresh_state()?, None)
+        };
+        let mut engine = StepEngine::new(self)?;
+        reporter.emit(TrainEvent::Started {
+            iterations: self.config.iterations,
+            mode: format!("{:?}", self.mode).to_lowercase(),
+            backend: format!("{}; {}", self.backend.description(), engine.describe()),
+            train_views: self.targets.len(),
+            test_views: self.capture.test_views().count(),
+            resumed_from,
+        });
+        let session_start = Instant::now();
+        let earlier_sessions = state.elapsed_seconds;
+        let elapsed = || earlier_sessions + session_start.elapsed().as_secs_f64();
+        let mut env = HostEnv::new(&state, &self.plan)?;
+        engine.load(&state)?;
+        engine.set_environment(&state.envmap, &self.plan)?;
+        let mut pending = Pending::default();
+        let mut occlusion = Occlusion::default();
+        let report_every = (self.config.iterations / 300).clamp(1, 25);
+        let iterations = self.config.iterations;
+        let mut eta = Eta::start(state.iteration);
+        while state.iteration < iterations {
+            if cancel.load(Ordering::Relaxed) {
+                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+                engine.sync(&mut state)?;
+                let iteration = state.iteration;
+                state.elapsed_seconds = elapsed();
+                state.save(&checkpoint, &fp)?;
+                reporter.emit(TrainEvent::Checkpoint { iteration });
+                return Ok(TrainOutcome::Interrupted { iteration });
+            }
+            let it = state.iteration;
+            let stage = stage_of(it, self.config);
+            // Unknown polarizer angles are estimated when the PolarDR stage starts (a fixed
+            // iteration, so a resumed run does the same); until then the material and lighting
+            // are not fitted well enough to tell θ from θ + 90°.
+            if it == self.config.polar_stage_start() && !state.polarizer_angles.is_empty() {
+                engine.sync(&mut state)?;
+                env.refresh(&state, &self.plan, &mut occlusion)?;
+                state.polarizer_angles = angles::estimate(self, &state, &env.prepared)?;
+            }
+            // GridMap waits while the opacities recover from a reset: its mesh is fused from
+            // rendered opacity ≥ ½, which no surfel at opacity 0.01 gives.
+            if stage == Stage::Polar && self.config.gridmap && !self.recovering_from_reset(it) {
+                let since = it - self.config.polar_stage_start();
+                let due = |interval: u32| interval > 0 && since.is_multiple_of(interval);
+                let remesh = !occlusion.current
+                    || due(self.config.mesh_interval)
+                    || self.deferred_remesh_due(it);
+                if remesh || due(self.config.gridmap_interval) {
+                    engine.sync(&mut state)?;
+                    env.refresh(&state, &self.plan, &mut occlusion)?;
+                    let warning =
+                        self.rebuild_gridmap(&mut occlusion, &state, &env.prepared, remesh);
+                    if let Some(message) = warning {
+                        reporter.emit(TrainEvent::Warning {
+                            iteration: it,
+                            message,
+                        });
+                    }
+                    engine.set_gridmap(occlusion.grid.as_ref())?;
+                }
+            }
+            let mut rng = iteration_rng(self.config.seed, it);
+            let target = rng.random_range(0..self.targets.len());
+            if !engine.prefilters_on_device() {
+                // Host steps are lit by the host's prefilter (stale only after a fallback).
+                env.refresh(&state, &self.plan, &mut occlusion)?;
+            }
+            let light = self.light(&occlusion, &env.prepared, stage);
+            let outcome = match engine.step(self, &mut state, light, target, stage, &mut pending) {
+                Err(e) if StepEngine::is_oversized(&e) => {
+                    tracing::warn!("{e}: continuing with host steps (split into bands)");
+                    engine.fall_back_to_host(Some(&mut state), &mut pending)?;
+                    env.refresh(&state, &self.plan, &mut occlusion)?;
+                    let light = self.light(&occlusion, &env.prepared, stage);
+                    engine.step(self, &mut state, light, target, stage, &mut pending)?
+                }
+                other => other?,
+            };
+            if outcome.shaded
+                && (it + 1).is_multiple_of(self.config.envmap_prefilter_interval)
+                && self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?
+                && env.current
+            {
+                if let Some(grid) = &mut occlusion.grid {
+                    grid.set_global(env.prepared.clone());
+                }
+            }
+            self.apply_angle_gradients(&mut state, &outcome.angles, stage)?;
+            state.iteration += 1;
+
+            let done = state.iteration;
+            if done.is_multiple_of(report_every) || done == iterations {
+                let seconds = elapsed();
+                eta.observe(done, stage);
+                reporter.emit(TrainEvent::Step {
+                    iteration: done,
+                    iterations,
+                    stage,
+                    loss: outcome.total,
+                    losses: outcome.losses.clone(),
+                    num_surfels: state.surfels.len(),
+                    elapsed_seconds: seconds,
+                    eta_seconds: eta.remaining(done, self.config),
+                });
+            }
+            if self.config.eval_interval > 0
+                && done.is_multiple_of(self.config.eval_interval)
+                && done < iterations
+            {
+                engine.sync(&mut state)?;
+                env.refresh(&state, &self.plan, &mut occlusion)?;
+                if let Some(psnr) =
+                    self.test_psnr(&state, self.light(&occlusion, &env.prepared, stage))?
+                {
+                    reporter.emit(TrainEvent::Evaluated {
+                        iteration: done,
+                        test_psnr: psnr,
+                    });
+                }
+            }
+            // Densification and opacity resets come after the report and the test evaluation,
+            // so those show the model the step produced, not one whose opacities were just reset.
+            if self.densify_due(done, stage) || self.reset_due(done) {
+                engine.sync(&mut state)?;
+                self.refine(&mut state, stage, &mut rng)?;
+                match engine.load(&state) {
+                    Err(e) if StepEngine::is_oversized(&e) => {
+                        tracing::warn!("{e}: continuing with host steps");
+                        engine.fall_back_to_host(None, &mut pending)?;
+                    }
+                    other => other?,
+                }
+            }
+            let finite = match engine {
+                StepEngine::Host => state.surfels.is_finite(),
+                StepEngine::Device(_) => outcome.finite,
+            };
+            if !finite {
+                return Err(TrainError::Diverged(state.iteration));
+            }
+            if self.config.checkpoint_interval > 0
+                && done.is_multiple_of(self.config.checkpoint_interval)
+                && done < iterations
+            {
+                // A resumed run starts with no pending gradient and a freshly prefiltered map: do
+                // the same here, so the uninterrupted run and a resumed one stay bit-identical.
+                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+                env = HostEnv::new(&state, &self.plan)?;
+                engine.set_environment(&state.envmap, &self.plan)?;
+                occlusion = Occlusion::default();
+                engine.set_gridmap(None)?;
+                engine.sync(&mut state)?;
+                state.elapsed_seconds = elapsed();
+                state.save(&checkpoint, &fp)?;
+                reporter.emit(TrainEvent::Checkpoint { iteration: done });
+            }
+        }
+        self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
+        engine.sync(&mut state)?;
+        let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
+        state.elapsed_seconds = elapsed();
+        state.save(&checkpoint, &fp)?;
+        // The final evaluation lights the model as rendering it later will: GridMap rebuilt from
+        // the final state.
+        let last_stage = stage_of(iterations.saturating_sub(1), self.config);
+        let mut occlusion = Occlusion::default();
+        if last_stage == Stage::Polar && self.config.gridmap {
+            if let Some(message) = self.rebuild_gridmap(&mut occlusion, &state, &env, true) {
+                reporter.emit(TrainEvent::Warning {
+                    iteration: state.iteration,
+                    message,
+                });
+            }
+        }
+        self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)?;
+        Ok(TrainOutcome::Finished)
+    }
+
+    /// The learning rate of each surfel parameter group at iteration `it` (in the order of
+    /// `Surfels::groups`); `None` for the groups the stage freezes (roughness and IoR in plain
+    /// 2DGS, where the colour is the albedo).
+    fn surfel_rates(&self, stage: Stage, it: u32) -> [Option<f64>; 7] {
+        Surfels::zeros(0).groups().map(|(name, _)| {
+            let frozen = stage == Stage::Geometry && matches!(name, "roughness" | "ior");
+            (!frozen).then(|| {
+                self.learning_rates
+                    .for_group(name, it)
+                    .expect("surfel groups have rates")
+            })
+        })
+    }
+
+    /// One Adam step on the learned polarizer angles (PolarDR stage).
+    fn apply_angle_gradients(
+        &self,
+        state: &mut TrainState,
+        gradients: &BTreeMap<String, f64>,
+        stage: Stage,
+    ) -> Result<(), TrainError> {
+        if stage != Stage::Polar || state.polarizer_angles.is_empty() {
+            return Ok(());
+        }
+        let names: Vec<String> = state.polarizer_angles.keys().cloned().collect();
+        let mut values: Vec<f64> = state.polarizer_angles.values().copied().collect();
+        let grad: Vec<f64> = names
+            .iter()
+            .map(|n| gradients.get(n).copied().unwrap_or(0.0))
+            .collect();
+        state.adam.step(
+            POLARIZER_GROUP,
+            &mut values,
+            &grad,
+            self.learning_rates.polarizer,
+        )?;
+        for (name, v) in names.into_iter().zip(values) {
+            state
+                .polarizer_angles
+                .insert(name, v.rem_euclid(std::f64::consts::PI));
+        }
+        Ok(())
+    }
+
+    /// Applies the light's gradient summed since the last update: one Adam step with the mean
+    /// gradient and the learning rate scaled by the number of steps it covers (the displacement
+    /// K single steps would make), then prefilters the map again: on the host (`env`), or on the
+    /// device for the device engine, which leaves `env` behind. Both the transpose of the
+    /// prefilter and the rebuild cost about as much as a whole host step, hence the batching.
+    /// Returns whether there was a gradient to apply.
+    fn flush_env(
+        &self,
+        state: &mut TrainState,
+        env: &mut HostEnv,
+        pending: &mut Pending,
+        engine: &mut StepEngine,
+    ) -> Result<bool, TrainError> {
+        let count = pending.steps;
+        let Some(sum) = engine.take_env_raw_grad(pending, &env.prepared)? else {
+            return Ok(false);
+        };
+        let scale = 1.0 / f64::from(count);
+        let raw_grad: Vec<f64> = sum.iter().map(|g| g * scale).collect();
+        state.adam.step(
+            ENVMAP_GROUP,
+            &mut state.envmap.raw,
+            &raw_grad,
+            self.learning_rates.envmap * f64::from(count),
+        )?;
+        if engine.prefilters_on_device() {
+            engine.set_environment(&state.envmap, &self.plan)?;
+            env.current = false;
+        } else {
+            *env = HostEnv::new(state, &self.plan)?;
+        }
+        Ok(true)
+    }
+
+    /// Whether densification (clone, split, prune) is due after `it` iterations.
+    fn densify_due(&self, it: u32, stage: Stage) -> bool {
+        let iterations = self.config.iterations;
+        let from = (self.config.densify_from * f64::from(iterations)).round() as u32;
+        let until = (self.config.densify_until * f64::from(iterations)).round() as u32;
+        let interval = match stage {
+            Stage::Geometry => self.config.densify_interval,
+            _ => self.config.densify_interval_polar,
+        }
+        .max(1);
+        it > from && it <= until && it.is_multiple_of(interval)
+    }
+
+    /// Whether an opacity reset is due after `it` iterations.
+    fn reset_due(&self, it: u32) -> bool {
+        let until = (self.config.densify_until * f64::from(self.config.iterations)).round() as u32;
+        let reset = self.config.opacity_reset_interval;
+        reset > 0 && it.is_multiple_of(reset) && it <= until
+    }
+
+    /// The last opacity reset the state at the start of iteration `it` has had: a reset "at r"
+    /// is applied after `r` steps, so iteration `r` is the first to see it.
+    fn last_reset(&self, it: u32) -> Option<u32> {
+        let interval = self.config.opacity_reset_interval;
+        if interval == 0 {
+            return None;
+        }
+        let until = (self.config.densify_until * f64::from(self.config.iterations)).round() as u32;
+        let last = it.min(until) / interval * interval;
+        (last > 0).then_some(last)
+    }
+
+    /// Whether iteration `it` falls in the `opacity_recovery_steps` after a reset.
+    fn recovering_from_reset(&self, it: u32) -> bool {
+        self.last_reset(it)
+            .is_some_and(|r| it < r + self.config.opacity_recovery_steps)
+    }
+
+    /// Whether iteration `it` ends a recovery window inside which a PolarDR-stage remesh fell
+    /// due (it runs now instead). A pure function of `it`, so a resumed run does the same.
+    fn deferred_remesh_due(&self, it: u32) -> bool {
+        let (recovery, interval) = (
+            self.config.opacity_recovery_steps,
+            self.config.mesh_interval,
+        );
+        let Some(reset) = self.last_reset(it) else {
+            return false;
+        };
+        if recovery == 0 || interval == 0 || it != reset + recovery {
+            return false;
+        }
+        let start = self.config.polar_stage_start();
+        (reset.max(start)..it).any(|i| (i - start).is_multiple_of(interval))
+    }
+
+    /// Densify/prune and opacity reset on their schedules (METHOD.md §7).
+    fn refine(
+        &self,
+        state: &mut TrainState,
+        stage: Stage,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<(), TrainError> {
+        let it = state.iteration;
+        if self.densify_due(it, stage) {
+            let _span = tracing::debug_span!("densify", iteration = it).entered();
+            let plan = densify::plan(&state.surfels, &state.densify, &self.densify_rules);
+            let final_keep = densify::apply(&mut state.surfels, &plan, rng);
+            state.adam.retain_surfels(&plan.keep)?;
+            state.adam.extend_surfels_from_indices(&plan.append_from)?;
+            state.adam.retain_surfels(&final_keep)?;
+            state.densify = DensifyStats::new(state.surfels.len());
+        }
+        if self.reset_due(it) {
+            densify::reset_opacity(&mut state.surfels, 0.01);
+            state.adam.reset_group("opacity");
+        }
+        Ok(())
+    }
+
+    /// Cameras of the training views (saved with the model; the mesh is extracted from them).
+    fn train_cameras(&self) -> Vec<(String, crate::core::camera::Camera)> {
+        self.targets
+            .iter()
+            .map(|t| {
+                let view = &self.capture.views[t.view];
+                (view.name.clone(), view.camera)
+            })
+            .collect()
+    }
+
+    /// Extracts the mesh of the current surfels (with `remesh`, else keeps the last one) and
+    /// rebuilds GridMap's probes under the current environment. A failed extraction keeps the
+    /// previous mesh; without one, or when the probes fail, the run stays on the global light
+    /// until the next scheduled rebuild. Returns what failed, for the run's warning event.
+    fn rebuild_gridmap(
+        &self,
+        occlusion: &mut Occlusion,
+        state: &TrainState,
+        env: &PreparedEnv,
+        remesh: bool,
+    ) -> Option<String> {
+        let _span = tracing::info_span!("gridmap_rebuild", iteration = state.iteration).entered();
+        occlusion.current = true;
+        let mut warning = None;
+        if remesh {
+            let cameras: Vec<_> = self.train_cameras().into_iter().map(|(_, c)| c).collect();
+            match mesh_extraction::mesh_from_surfels(
+                &state.surfels,
+                &cameras,
+                &**self.backend,
+                &self.settings,
+                GRIDMAP_MESH_RESOLUTION,
+            ) {
+                Ok(mesh) => occlusion.mesh = Some(mesh),
+                Err(e) => {
+                    let kept = if occlusion.mesh.is_some() {
+                        "keeping the previous mesh"
+                    } else {
+                        "on the global light until the next rebuild"
+                    };
+                    warning = Some(format!("GridMap mesh extraction failed ({kept}): {e}"));
+                }
+            }
+        }
+        occlusion.grid = match occlusion.mesh.as_ref() {
+            None => None,
+            Some(mesh) => match GridMap::build(mesh, &state.surfels, &state.envmap, env.clone()) {
+                Ok(grid) => Some(grid),
+                Err(e) => {
+                    warning = Some(format!(
+                        "GridMap build failed (on the global light until the next rebuild): {e}"
+                    ));
+                    None
+                }
+            },
+        };
+        if let Some(message) = &warning {
+            tracing::warn!("{message}");
+        }
+        warning
+    }
+
+    /// The light of a stage: GridMap over the environment in the PolarDR stage when it is on and
+    /// built, else the global environment.
+    fn light<'s>(
+        &self,
+        occlusion: &'s Occlusion,
+        env: &'s PreparedEnv,
+        stage: Stage,
+    ) -> &'s dyn LightProbe {
+        match &occlusion.grid {
+            Some(grid) if stage == Stage::Polar => grid,
+            _ => env,
+        }
+    }
+
+    fn scene<'s>(&'s self, state: &'s TrainState, light: &'s dyn LightProbe) -> Scene<'s> {
+        Scene {
+            surfels: &state.surfels,
+            light,
+            lut: self.lut,
+            backend: &**self.backend,
+            settings: self.settings,
+        }
+    }
+
+    /// Mean test-view S0 PSNR (sRGB 8-bit inside the mask), if the capture has test views.
+    fn test_psnr(
+        &self,
+        state: &TrainState,
+        light: &dyn LightProbe,
+    ) -> Result<Option<f64>, TrainError> {
+        if self.capture.test_views().next().is_none() {
+            return Ok(None);
+        }
+        let report = evaluate::evaluate(
+            &self.scene(state, light),
+            self.capture,
+            &state.polarizer_angles,
+        )?;
+        Ok(report.psnr)
+    }
+
+    /// Writes the model folder and `metrics.json`.
+    fn finish(
+        &self,
+        state: &TrainState,
+        light: &dyn LightProbe,
+        reporter: &mut Reporter,
+    ) -> Result<(), TrainError> {
+        let up = self.capture.world_up;
+        let model = Model {
+            info: ModelInfo {
+                mode: self.mode,
+                world_up: up.to_array(),
+                polarizer_angles_deg: state
+                    .polarizer_angles
+                    .iter()
+                    .map(|(k, v)| (k.clone(), v.to_degrees()))
+                    .collect(),
+                iterations: state.iteration,
+                train_seconds: state.elapsed_seconds,
+                num_surfels: state.surfels.len(),
+                backend: self.backend.name().to_owned(),
+            },
+            config: TrainConfig {
+                mode: self.mode,
+                ..self.config.clone()
+            },
+            surfels: state.surfels.clone(),
+            envmap: state.envmap.clone(),
+            train_cameras: self.train_cameras(),
+        };
+        WorldUp::from_vector(up.to_array())?;
+        model.save(self.model_dir)?;
+        let test_cameras: Vec<(String, crate::core::camera::Camera)> = self
+            .capture
+            .test_views()
+            .map(|v| (v.name.clone(), v.camera))
+            .collect();
+        model::write_json(
+            &self.model_dir.join(model::TEST_CAMERAS_FILE),
+            &crate::io::capture::cameras_to_json(&test_cameras),
+        )?;
+        if self.capture.test_views().next().is_some() {
+            let mut report = evaluate::evaluate(
+                &self.scene(state, light),
+                self.capture,
+                &state.polarizer_angles,
+            )?;
+            report.train_seconds = Some(state.elapsed_seconds);
+            model::write_json(&self.model_dir.join("metrics.json"), &report)?;
+            if let Some(psnr) = report.psnr {
+                reporter.emit(TrainEvent::Evaluated {
+                    iteration: state.iteration,
+                    test_psnr: psnr,
+                });
+            }
+        }
+        reporter.emit(TrainEvent::Finished {
+            iteration: state.iteration,
+            seconds: state.elapsed_seconds,
+        });
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::synth::{synth, Shape, SynthOptions};
+
+    /// A short run on a small synthetic torus whose PolarDR stage rebuilds mesh and GridMap
+    /// several times and crosses checkpoints.
+    fn torus_run(dir: &Path) -> (Capture, TrainConfig) {
+        let capture_dir = dir.join("capture");
+        synth(
+            &capture_dir,
+            &SynthOptions {
+                shape: Shape::Torus,
+                views: 9,
+                size: 24,
+                ..SynthOptions::default()
+            },
+        )
+        .unwrap();
+        let config = TrainConfig {
+            iterations: 60,
+            initial_surfels: 1500,
+            envmap_resolution: 16,
+            geometry_stage_end: 0.2,
+            material_stage_end: 0.3,
+            checkpoint_interval: 30,
+            eval_interval: 0,
+            mesh_interval: 20,
+            gridmap_interval: 7,
+            backend: crate::core::config::BackendChoice::Cpu,
+            ..TrainConfig::default()
+        };
+        (crate::io::capture::load(&capture_dir).unwrap(), config)
+    }
+
+    /// Events of a 200-step torus run whose opacity reset (after 110 steps) falls on a remesh
+    /// of the PolarDR stage (from step 60, every 50 steps), with `recovery` steps of waiting.
+    fn run_with_reset_on_a_remesh(recovery: u32) -> Vec<TrainEvent> {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let config = TrainConfig {
+            iterations: 200,
+            checkpoint_interval: 0,
+            mesh_interval: 50,
+            gridmap_interval: 25,
+            opacity_reset_interval: 110,
+            opacity_recovery_steps: recovery,
+            ..config
+        };
+        let mut events = Vec::new();
+        let never = AtomicBool::new(false);
+        train(
+            &capture,
+            &dir.path().join("m"),
+            &config,
+            false,
+            &never,
+            &mut |e| events.push(e.clone()),
+        )
+        .unwrap();
+        events
+    }
+
+    fn warnings(events: &[TrainEvent]) -> Vec<(u32, String)> {
+        events
+            .iter()
+            .filter_map(|e| match e {
+                TrainEvent::Warning { iteration, message } => Some((*iteration, message.clone())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn gridmap_waits_for_the_opacities_to_recover_from_a_reset() {
+        // Remeshing right after the reset finds nearly transparent surfels: the mesh fails (the
+        // defect seen on the device and the host alike), the previous mesh is kept and said so.
+        let failed = warnings(&run_with_reset_on_a_remesh(0));
+        assert_eq!(failed.len(), 1, "{failed:?}");
+        assert_eq!(failed[0].0, 110);
+        assert!(
+            failed[0].1.contains("keeping the previous mesh"),
+            "{}",
+            failed[0].1
+        );
+        // Waiting 80 steps defers that remesh to step 190, which succeeds, as does the final one.
+        assert_eq!(warnings(&run_with_reset_on_a_remesh(80)), []);
+    }
+
+    #[test]
+    fn the_recovery_window_and_the_deferred_remesh_are_functions_of_the_iteration() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, _) = torus_run(dir.path());
+        let config = TrainConfig {
+            iterations: 1_000,
+            material_stage_end: 0.3,
+            densify_until: 0.8,
+            opacity_reset_interval: 300,
+            opacity_recovery_steps: 40,
+            mesh_interval: 100,
+            ..TrainConfig::default()
+        };
+        let targets: Vec<ViewTarget> = capture
+            .train_views()
+            .enumerate()
+            .map(|(i, v)| view_target(i, v, Mode::Full))
+            .collect();
+        let run = Run {
+            capture: &capture,
+            config: &config,
+            mode: Mode::Full,
+            backend: &Engine::Cpu(crate::core::raster::cpu::CpuBackend),
+            settings: RasterSettings::default(),
+            lut: BrdfLut::shared(),
+            plan: prefilter_plan(16, false).unwrap(),
+            targets,
+            learning_rates: LearningRates::from_config(&config, 1.0),
+            densify_rules: DensifyRules::for_extent(1.0, 2e-4, 0.05, 1_000),
+            model_dir: dir.path(),
+        };
+        // Resets after 300 and 600 steps (900 is past densify_until = 800).
+        assert_eq!(run.last_reset(299), None);
+        assert_eq!(run.last_reset(300), Some(300));
+        assert_eq!(run.last_reset(950), Some(600));
+        let waiting: Vec<u32> = (0..1_000)
+            .filter(|&i| run.recovering_from_reset(i))
+            .collect();
+        assert_eq!(
+            waiting,
+            [(300..340).collect::<Vec<_>>(), (600..640).collect()].concat()
+        );
+        // PolarDR from 300: remeshes due at 300 and 600 fall in the windows and run at 340, 640.
+        let deferred: Vec<u32> = (0..1_000).filter(|&i| run.deferred_remesh_due(i)).collect();
+        assert_eq!(deferred, [340, 640]);
+    }
+
+    #[test]
+    fn the_surfel_budget_follows_the_object_area() {
+        let target = |mask_pixels: usize| ViewTarget {
+            view: 0,
+            photometric: Vec::new(),
+            stokes: None,
+            polarizer: None,
+            mask: (0..10_000)
+                .map(|i| f64::from(u8::from(i < mask_pixels)))
+                .collect(),
+        };
+        let config = TrainConfig {
+            initial_surfels: 1_000,
+            max_surfels: 30_000,
+            surfels_per_mask_pixel: 4.0,
+            ..TrainConfig::default()
+        };
+        // Mean object area 2,500 pixels → 10,000 surfels.
+        let views = [target(2_000), target(3_000)];
+        assert_eq!(surfel_budget(&config, &views), 10_000);
+        // Within initial_surfels..=max_surfels.
+        assert_eq!(surfel_budget(&config, &[target(100)]), 1_000);
+        assert_eq!(surfel_budget(&config, &[target(9_000)]), 30_000);
+        let off = TrainConfig {
+            surfels_per_mask_pixel: 0.0,
+            ..config
+        };
+        assert_eq!(surfel_budget(&off, &views), 30_000);
+    }
+
+    #[test]
+    fn gridmap_runs_resume_bit_for_bit() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let never = AtomicBool::new(false);
+        let whole = dir.path().join("whole");
+        train(&capture, &whole, &config, false, &never, &mut |_| {}).unwrap();
+        // Interrupt right after the checkpoint at iteration 30, then resume.
+        let split = dir.path().join("split");
+        let cancel = AtomicBool::new(false);
+        let outcome = train(&capture, &split, &config, false, &cancel, &mut |e| {
+            if matches!(e, TrainEvent::Checkpoint { iteration: 30 }) {
+                cancel.store(true, Ordering::Relaxed);
+            }
+        })
+        .unwrap();
+        assert_eq!(outcome, TrainOutcome::Interrupted { iteration: 30 });
+        let outcome = train(&capture, &split, &config, true, &never, &mut |_| {}).unwrap();
+        assert_eq!(outcome, TrainOutcome::Finished);
+        let a = TrainState::load(&whole.join(CHECKPOINT_FILE)).unwrap().0;
+        let b = TrainState::load(&split.join(CHECKPOINT_FILE)).unwrap().0;
+        assert_eq!(a.iteration, 60);
+        assert_eq!(a.surfels, b.surfels);
+        assert_eq!(a.envmap, b.envmap);
+        // The model keeps its training cameras and renders with GridMap, as it was trained.
+        let model = Model::load(&whole).unwrap();
+        assert_eq!(model.train_cameras.len(), capture.train_views().count());
+        let reconstruction = crate::pipeline::reconstruction::Reconstruction::new(model).unwrap();
+        assert!(reconstruction.gridmap().is_some());
+    }
+
+    #[test]
+    fn gridmap_changes_only_the_polar_stage() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let never = AtomicBool::new(false);
+        let run = |gridmap: bool, name: &str| {
+            let out = dir.path().join(name);
+            let config = TrainConfig {
+                gridmap,
+                ..config.clone()
+            };
+            train(&capture, &out, &config, false, &never, &mut |_| {}).unwrap();
+            TrainState::load(&out.join(CHECKPOINT_FILE)).unwrap().0
+        };
+        let on = run(true, "on");
+        let off = run(false, "off");
+        assert_ne!(on.surfels, off.surfels);
+        // Before the PolarDR stage both runs are the same run: stop both at the stage start.
+        let early = |gridmap: bool, name: &str| {
+            let out = dir.path().join(name);
+            let config = TrainConfig {
+                gridmap,
+                iterations: 60,
+                checkpoint_interval: 18,
+                ..config.clone()
+            };
+            let cancel = AtomicBool::new(false);
+            train(&capture, &out, &config, false, &cancel, &mut |e| {
+                if matches!(e, TrainEvent::Checkpoint { iteration: 18 }) {
+                    cancel.store(true, Ordering::Relaxed);
+                }
+            })
+            .unwrap();
+            TrainState::load(&out.join(CHECKPOINT_FILE)).unwrap().0
+        };
+        assert_eq!(
+            early(true, "early_on").surfels,
+            early(false, "early_off").surfels
+        );
+    }
+}

@@ -1,0 +1,263 @@
+//! One optimization step's forward and backward pass on one view: rasterize, shade (PolarDR once
+//! the geometry stage is over), evaluate the weighted losses of METHOD.md §6, and carry their
+//! gradients back through shading and rasterization to the surfels, the environment map and the
+//! learned polarizer angles.
+//!
+//! [`StepPlan`] (in [`crate::core::step`]) holds what a step computes for a view in a stage (shading, the polarizer angle,
+//! which loss terms apply) and turns per-pixel loss sums into the named terms; [`run`] is the
+//! host's step over a rasterizer [`Backend`], and the gpu backend's resident trainer
+//! (`phygap::gpu::DeviceTrainer`) follows the same plan on the device.
+
+use std::collections::BTreeMap;
+
+use glam::DVec3;
+
+use crate::core::brdf_lut::BrdfLut;
+use crate::core::envmap::EnvGrad;
+use crate::core::events::Stage;
+use crate::core::light::LightProbe;
+use crate::core::loss::{self, LossWeights};
+use crate::core::raster::{Backend, GBufferGrads, RasterSettings};
+use crate::core::render::{Scene, ShadingInputs};
+use crate::core::shading::StokesImageGrad;
+use crate::core::step::{StepPlan, ViewTarget};
+use crate::core::surfels::{SurfelGrads, Surfels};
+
+use super::TrainError;
+
+/// Gradients and loss values of one step.
+pub struct StepResult {
+    /// Named loss terms (weighted) and their sum under `total`.
+    pub losses: BTreeMap<String, f64>,
+    pub total: f64,
+    pub surfels: SurfelGrads,
+    /// Per-surfel screen-space gradient norm (pixels) for densification.
+    pub mean2d_grad_norm: Vec<f64>,
+    /// Gradient of the environment light (shading stages only).
+    pub env: Option<EnvGrad>,
+    /// Gradient of each learned polarizer angle.
+    pub angles: BTreeMap<String, f64>,
+    pub width: usize,
+    pub height: usize,
+}
+
+/// Fixed inputs of every step.
+pub struct StepInputs<'a> {
+    pub backend: &'a dyn Backend,
+    pub settings: RasterSettings,
+    pub lut: &'a BrdfLut,
+    pub weights: LossWeights,
+}
+
+fn add_into(dst: &mut [f64], src: &[f64], scale: f64) {
+    for (d, s) in dst.iter_mut().zip(src) {
+        *d += scale * s;
+    }
+}
+
+/// Runs forward and backward for `target` seen by `camera`, shading with `light` (the global
+/// environment, or GridMap over it; the light gradient is shaped like the global environment).
+#[allow(clippy::too_many_arguments)]
+pub fn run(
+    inputs: &StepInputs,
+    surfels: &Surfels,
+    light: &dyn LightProbe,
+    angles: &BTreeMap<String, f64>,
+    camera: &crate::core::camera::Camera,
+    target: &ViewTarget,
+    stage: Stage,
+) -> Result<StepResult, TrainError> {
+    let _span = tracing::debug_span!("step", ?stage).entered();
+    let scene = Scene {
+        surfels,
+        light,
+        lut: inputs.lut,
+        backend: inputs.backend,
+        settings: inputs.settings,
+    };
+    let raster = inputs.backend.forward(surfels, camera, &inputs.settings)?;
+    let g = &raster.gbuffers;
+    let (w, h) = (g.width, g.height);
+    let pixels = w * h;
+    let weights = &inputs.weights;
+    let mut up = GBufferGrads::zeros(w, h);
+    let mut losses = BTreeMap::new();
+
+    let plan = StepPlan::new(target, stage, angles, weights);
+    let (theta, unpolarized_scale) = (plan.theta, plan.unpolarized_scale);
+
+    // Shading (not in the geometry stage, where colour = albedo).
+    let shaded = if !plan.shaded {
+        None
+    } else {
+        let inputs = ShadingInputs::new(g, camera);
+        let (image, saved) =
+            scene
+                .backend
+                .shade_saved(camera, &inputs.buffers(g), scene.light, scene.lut)?;
+        Some((inputs, image, saved))
+    };
+
+    // Photometric prediction, α-premultiplied like the capture.
+    let mut pred = vec![0.0; pixels * 3];
+    for p in 0..pixels {
+        let a = g.alpha[p];
+        let colour = match &shaded {
+            None => DVec3::from_array(g.albedo[p]) * unpolarized_scale,
+            Some((_, s, _)) => match theta {
+                None => s.s0[p] * unpolarized_scale,
+                Some(t) => 0.5 * (s.s0[p] + s.s1[p] * (2.0 * t).cos() + s.s2[p] * (2.0 * t).sin()),
+            },
+        };
+        pred[p * 3..p * 3 + 3].copy_from_slice(&(colour * a).to_array());
+    }
+    let photometric = loss::photometric(&pred, &target.photometric, w, h, 3, weights.lambda_ssim);
+    losses.insert("photometric".to_owned(), photometric.value);
+    let mut grad_pred = photometric.grad;
+
+    // Stokes loss on S1/S2 (full views) or the extra L1 on I(θ) (partial views), PolarDR stage only.
+    let mut grad_s12: Option<(Vec<f64>, Vec<f64>)> = None;
+    if plan.stokes_loss || plan.extra_l1 {
+        if let (Some((t1, t2)), Some((_, s, _))) = (&target.stokes, &shaded) {
+            let premul = |v: &[DVec3]| -> Vec<f64> {
+                v.iter()
+                    .zip(&g.alpha)
+                    .flat_map(|(x, &a)| (*x * a).to_array())
+                    .collect()
+            };
+            let stokes = loss::stokes_l1(&premul(&s.s1), t1, &premul(&s.s2), t2, None);
+            losses.insert("stokes".to_owned(), weights.lambda_stokes * stokes.value);
+            let scale = |v: Vec<f64>| v.into_iter().map(|x| x * weights.lambda_stokes).collect();
+            grad_s12 = Some((scale(stokes.grad_s1), scale(stokes.grad_s2)));
+        } else {
+            let extra = loss::l1(&pred, &target.photometric, None);
+            losses.insert("stokes".to_owned(), weights.lambda_stokes * extra.value);
+            add_into(&mut grad_pred, &extra.grad, weights.lambda_stokes);
+        }
+    }
+
+    // Mask, normal smoothness and depth–normal consistency act on the G-buffers directly.
+    let mask = loss::mask_mse(&g.alpha, &target.mask);
+    losses.insert("mask".to_owned(), weights.lambda_mask * mask.value);
+    add_into(&mut up.alpha, &mask.grad, weights.lambda_mask);
+    if plan.normal_smooth {
+        let smooth = loss::normal_smoothness(g.normal.as_flattened(), &target.photometric, w, h);
+        losses.insert(
+            "normal_smooth".to_owned(),
+            weights.lambda_normal_smooth * smooth.value,
+        );
+        add_into(
+            up.normal.as_flattened_mut(),
+            &smooth.grad,
+            weights.lambda_normal_smooth,
+        );
+    }
+    if plan.depth_normal {
+        let dn = loss::depth_normal_consistency(
+            g.normal.as_flattened(),
+            g.depth_normal.as_flattened(),
+            None,
+        );
+        losses.insert(
+            "depth_normal".to_owned(),
+            weights.lambda_depth_normal * dn.value,
+        );
+        add_into(
+            up.normal.as_flattened_mut(),
+            &dn.grad_normal,
+            weights.lambda_depth_normal,
+        );
+        add_into(
+            up.depth_normal.as_flattened_mut(),
+            &dn.grad_depth_normal,
+            weights.lambda_depth_normal,
+        );
+    }
+
+    // Chain the image gradients into the G-buffers.
+    let mut angle_grad = 0.0;
+    let mut env_grad = None;
+    match &shaded {
+        None => {
+            let k = unpolarized_scale;
+            for p in 0..pixels {
+                let gp = DVec3::from_slice(&grad_pred[p * 3..p * 3 + 3]);
+                let albedo = DVec3::from_array(g.albedo[p]);
+                let d_albedo = DVec3::from_array(up.albedo[p]) + gp * (k * g.alpha[p]);
+                up.albedo[p] = d_albedo.to_array();
+                up.alpha[p] += k * albedo.dot(gp);
+            }
+        }
+        Some((inputs_px, s, saved)) => {
+            let mut d0 = vec![DVec3::ZERO; pixels];
+            let mut d1 = vec![DVec3::ZERO; pixels];
+            let mut d2 = vec![DVec3::ZERO; pixels];
+            for p in 0..pixels {
+                let a = g.alpha[p];
+                let gp = DVec3::from_slice(&grad_pred[p * 3..p * 3 + 3]);
+                match theta {
+                    None => {
+                        d0[p] = gp * (a * unpolarized_scale);
+                        up.alpha[p] += unpolarized_scale * s.s0[p].dot(gp);
+                    }
+                    Some(t) => {
+                        let (c, sn) = ((2.0 * t).cos(), (2.0 * t).sin());
+                        d0[p] = gp * (0.5 * a);
+                        d1[p] = gp * (0.5 * a * c);
+                        d2[p] = gp * (0.5 * a * sn);
+                        let intensity = 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn);
+                        up.alpha[p] += intensity.dot(gp);
+                        angle_grad += a * (s.s2[p] * c - s.s1[p] * sn).dot(gp);
+                    }
+                }
+                if let Some((g1, g2)) = &grad_s12 {
+                    let g1 = DVec3::from_slice(&g1[p * 3..p * 3 + 3]);
+                    let g2 = DVec3::from_slice(&g2[p * 3..p * 3 + 3]);
+                    d1[p] += g1 * a;
+                    d2[p] += g2 * a;
+                    up.alpha[p] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
+                }
+            }
+            let (gb, env_g) = scene.backend.shade_backward_saved(
+                camera,
+                &inputs_px.buffers(g),
+                scene.light,
+                scene.lut,
+                saved.as_ref(),
+                &StokesImageGrad {
+                    s0: &d0,
+                    s1: &d1,
+                    s2: &d2,
+                },
+            )?;
+            for p in 0..pixels {
+                let add3 =
+                    |dst: &mut [f64; 3], v: DVec3| *dst = (DVec3::from_array(*dst) + v).to_array();
+                add3(&mut up.normal[p], gb.normal[p]);
+                add3(&mut up.albedo[p], gb.albedo[p]);
+                up.roughness[p] += gb.roughness[p];
+                up.ior[p] += gb.ior[p];
+            }
+            env_grad = Some(env_g);
+        }
+    }
+
+    let grads = inputs
+        .backend
+        .backward(surfels, camera, &inputs.settings, &raster, &up)?;
+    let mut angle_grads = BTreeMap::new();
+    if let Some(name) = plan.learned_angle {
+        angle_grads.insert(name, angle_grad);
+    }
+    let total = losses.values().sum();
+    Ok(StepResult {
+        losses,
+        total,
+        surfels: grads.surfels,
+        mean2d_grad_norm: grads.mean2d_grad_norm,
+        env: env_grad,
+        angles: angle_grads,
+        width: w,
+        height: h,
+    })
+}

@@ -985,12 +985,10 @@ mod tests {
     fn ground_truth_knot_depth_fuses_close_to_the_knot_mesh() {
         use crate::core::camera::{CameraConvention, Intrinsics};
         use glam::DMat4;
-        let data =
-            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/knot"));
-        if !data.is_dir() {
-            println!("skipping: ../shared/data not found");
+        let Some(shared) = crate::testing::shared_data_dir() else {
             return;
-        }
+        };
+        let data = shared.join("knot");
         let text = std::fs::read_to_string(data.join("transforms_train.json")).unwrap();
         let meta: serde_json::Value = serde_json::from_str(&text).unwrap();
         let number = |key: &str| meta[key].as_f64().unwrap();

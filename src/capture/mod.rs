@@ -5,11 +5,13 @@
 //! and either returns the complete [`Capture`] or a [`CaptureError`] listing every problem found:
 //! nothing is half-imported. All images come back as linear RGB in the image_y_up Stokes convention.
 
+pub mod dolp;
 mod error;
 mod frame;
 mod hull;
 mod images;
 mod json;
+pub mod mosaic;
 
 #[cfg(test)]
 mod shared_data_tests;

@@ -154,6 +154,7 @@ pub(crate) mod tests {
             views,
             world_up: DVec3::Z,
             warnings: Vec::new(),
+            raw: None,
         }
     }
 

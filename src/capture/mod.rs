@@ -4,8 +4,10 @@
 //! [`load`] parses the JSON, then reads every view's images in parallel (rayon, one task per frame)
 //! and either returns the complete [`Capture`] or a [`CaptureError`] listing every problem found:
 //! nothing is half-imported. All images come back as linear RGB in the image_y_up Stokes convention.
-//! Views may also come from raw polarization-mosaic frames (`raw.rs`, `mosaic.rs`).
+//! Views may also come from raw polarization-mosaic frames (`raw.rs`, `mosaic.rs`), and a folder
+//! holding a COLMAP model instead of `transforms.json` is read by `colmap/`.
 
+pub mod colmap;
 pub mod dolp;
 mod error;
 mod frame;
@@ -33,6 +35,7 @@ use serde::Serialize;
 use crate::camera::Camera;
 use crate::image_io::Image;
 
+pub use colmap::{ColmapError, ColmapReport, SparsePoint};
 pub use dolp::DolpStats;
 pub use error::{CaptureError, Problem};
 pub use hull::{Bounds, VisualHull};
@@ -104,8 +107,13 @@ pub struct Capture {
     /// The world's up axis (+Z or +Y), which orients lat-long environment maps.
     pub world_up: DVec3,
     pub warnings: Vec<String>,
+    /// Sparse 3D points of a structure-from-motion model (COLMAP's `points3D`), empty otherwise;
+    /// they seed the surfels.
+    pub points: Vec<SparsePoint>,
     /// The views read from raw mosaic frames and how; `None` without raw frames.
     pub raw: Option<RawReport>,
+    /// The COLMAP model the capture was read from; `None` for a `transforms.json` capture.
+    pub colmap: Option<ColmapReport>,
 }
 
 /// What `phygap inspect` prints.
@@ -126,6 +134,9 @@ pub struct CaptureSummary {
     /// DoLP over the masked pixels of every full-Stokes view; `None` without one.
     pub dolp: Option<DolpStats>,
     pub raw: Option<RawReport>,
+    pub colmap: Option<ColmapReport>,
+    /// Sparse points that seed the surfels (COLMAP `points3D`).
+    pub sparse_points: usize,
     /// One entry per view.
     pub frames: Vec<FrameSummary>,
 }
@@ -142,8 +153,12 @@ pub struct FrameSummary {
 }
 
 /// Loads a capture: `path` is a folder holding `transforms.json`, or a JSON file (e.g.
-/// `transforms_partial.json`); image paths are relative to the JSON file's folder.
+/// `transforms_partial.json`); image paths are relative to the JSON file's folder. A folder
+/// without `transforms.json` but with a COLMAP model (`sparse/0/`) is read by [`colmap::load`].
 pub fn load(path: &Path) -> Result<Capture, CaptureError> {
+    if let Some(model) = colmap::find_model(path) {
+        return colmap::load(path, &model);
+    }
     let json_path = transforms_path(path);
     let _span = tracing::info_span!("load_capture", path = %json_path.display()).entered();
     let document = read_document(&json_path)?;
@@ -250,7 +265,9 @@ pub(crate) fn load_document(
         views,
         world_up: header.world_up,
         warnings,
+        points: Vec::new(),
         raw,
+        colmap: None,
     })
 }
 
@@ -278,8 +295,12 @@ fn read_document(json_path: &Path) -> Result<serde_json::Value, CaptureError> {
 }
 
 /// Reads only the cameras of a transforms file (a capture folder or a JSON file): one
-/// `(frame name, camera)` per frame, in order. Image keys are not needed and not checked.
+/// `(frame name, camera)` per frame, in order. Image keys are not needed and not checked. A
+/// COLMAP capture folder gives one `(image name, camera)` per image, sorted by name.
 pub fn load_cameras(path: &Path) -> Result<Vec<(String, Camera)>, CaptureError> {
+    if let Some(model) = colmap::find_model(path) {
+        return colmap::load_cameras(&model);
+    }
     let json_path = transforms_path(path);
     let document = read_document(&json_path)?;
     let (cameras, problems) = frame::parse_cameras(&document);
@@ -398,6 +419,8 @@ impl Capture {
             warnings: self.warnings.clone(),
             dolp: total.and_then(|h| h.stats()),
             raw: self.raw.clone(),
+            colmap: self.colmap.clone(),
+            sparse_points: self.points.len(),
             frames,
         }
     }

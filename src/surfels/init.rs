@@ -154,7 +154,9 @@ pub(crate) mod tests {
             views,
             world_up: DVec3::Z,
             warnings: Vec::new(),
+            points: Vec::new(),
             raw: None,
+            colmap: None,
         }
     }
 

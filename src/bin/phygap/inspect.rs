@@ -1,5 +1,5 @@
 //! `phygap inspect CAPTURE [--json]`: load and validate a capture, then print what it holds:
-//! views, kinds, size, bounds, DoLP statistics, raw-frame details, warnings.
+//! views, kinds, size, bounds, DoLP statistics, raw-frame and COLMAP details, warnings.
 
 use std::path::PathBuf;
 
@@ -11,7 +11,7 @@ use phygap::capture::{self, CaptureSummary};
 /// Arguments of `phygap inspect`.
 #[derive(Args, Debug)]
 pub struct InspectArgs {
-    /// Capture folder (with transforms.json) or a transforms JSON file.
+    /// Capture folder (with transforms.json or a COLMAP model) or a transforms JSON file.
     pub capture: PathBuf,
     /// Print the summary as JSON (with per-view DoLP statistics under `frames`).
     #[arg(long)]
@@ -76,6 +76,16 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
                 }
                 _ => String::new(),
             }
+        ));
+    }
+    if let Some(colmap) = &s.colmap {
+        text.push_str(&format!(
+            "COLMAP      {} ({}), {} camera(s), {} view(s) undistorted, {} sparse points\n",
+            colmap.model.display(),
+            format!("{:?}", colmap.format).to_lowercase(),
+            colmap.cameras,
+            colmap.undistorted_views,
+            s.sparse_points
         ));
     }
     for warning in &s.warnings {

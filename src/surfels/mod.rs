@@ -5,6 +5,7 @@
 
 pub mod init;
 pub mod ply;
+pub mod sparse;
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
 

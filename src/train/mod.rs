@@ -53,7 +53,7 @@ use crate::raster::{Backend, RasterError, RasterSettings};
 use crate::reconstruction::prefilter_plan;
 use crate::render::{RenderError, Scene};
 use crate::shading::ShadingError;
-use crate::surfels::init::init_from_visual_hull;
+use crate::surfels::sparse::init_for_capture;
 use crate::surfels::Surfels;
 
 use engine::{Engine, Pending};
@@ -315,7 +315,7 @@ pub fn train_on(
 
 impl Run<'_> {
     fn fresh_state(&self) -> Result<TrainState, TrainError> {
-        let surfels = init_from_visual_hull(
+        let surfels = init_for_capture(
             self.capture,
             self.config.initial_surfels as usize,
             self.config.seed,

@@ -1,4 +1,5 @@
-//! `phygap inspect CAPTURE [--json]`: load and validate a capture, then print what it holds.
+//! `phygap inspect CAPTURE [--json]`: load and validate a capture, then print what it holds:
+//! views, kinds, size, bounds, DoLP statistics, raw-frame and COLMAP details, warnings.
 
 use std::path::PathBuf;
 
@@ -10,9 +11,9 @@ use phygap::io::capture::{self, CaptureSummary};
 /// Arguments of `phygap inspect`.
 #[derive(Args, Debug)]
 pub struct InspectArgs {
-    /// Capture folder (with transforms.json) or a transforms JSON file.
+    /// Capture folder (with transforms.json or a COLMAP model) or a transforms JSON file.
     pub capture: PathBuf,
-    /// Print the summary as JSON.
+    /// Print the summary as JSON (with per-view DoLP statistics under `frames`).
     #[arg(long)]
     pub json: bool,
 }
@@ -54,6 +55,39 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
         b.center.x, b.center.y, b.center.z, b.radius,
         b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z,
     ));
+    match &s.dolp {
+        Some(d) => text.push_str(&format!(
+            "DoLP        mean {:.3}, median {:.3}, p90 {:.3} over {} masked pixels of the full-Stokes views\n",
+            d.mean, d.median, d.p90, d.pixels
+        )),
+        None if s.kinds.iter().any(|k| k == "partial" || k == "rgb") => {
+            text.push_str("DoLP        – (no full-Stokes view)\n")
+        }
+        None => {}
+    }
+    if let Some(raw) = &s.raw {
+        text.push_str(&format!(
+            "raw frames  {} demosaiced ({}){}\n",
+            raw.frames.len(),
+            format!("{:?}", raw.demosaic).to_lowercase(),
+            match (&raw.white_balance, raw.white_balance_gains) {
+                (Some(how), Some([r, g, b])) => {
+                    format!(", white balance ({how}) R {r:.3}, G {g:.3}, B {b:.3}")
+                }
+                _ => String::new(),
+            }
+        ));
+    }
+    if let Some(colmap) = &s.colmap {
+        text.push_str(&format!(
+            "COLMAP      {} ({}), {} camera(s), {} view(s) undistorted, {} sparse points\n",
+            colmap.model.display(),
+            format!("{:?}", colmap.format).to_lowercase(),
+            colmap.cameras,
+            colmap.undistorted_views,
+            s.sparse_points
+        ));
+    }
     for warning in &s.warnings {
         text.push_str(&format!("warning     {warning}\n"));
     }

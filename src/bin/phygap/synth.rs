@@ -1,11 +1,16 @@
 //! `phygap synth --out DIR [--shape sphere|torus|creature] [--texture plain|checker] [--views N]
-//! [--size PX]`: render a small full-Stokes sample capture with the project's own renderer.
+//! [--size PX] [--raw IMX250MZR|IMX250MYR [--bit-depth B]]`: render a small full-Stokes sample
+//! capture with the project's own renderer, or (with `--raw`) the raw mosaic frames a polarization
+//! camera would record of it.
 
 use std::path::PathBuf;
 
 use anyhow::Result;
 use clap::Args;
 
+use phygap::io::capture::mosaic::Sensor;
+use phygap::io::capture::simulate::{self, SimulateOptions};
+use phygap::io::capture::{self, Measurement};
 use phygap::pipeline::synth::{self, Shape, SynthOptions, Texture};
 
 #[derive(Args, Debug)]
@@ -24,6 +29,13 @@ pub struct SynthArgs {
     /// Image width and height in pixels.
     #[arg(long, default_value_t = 96)]
     pub size: u32,
+    /// Write raw mosaic frames of this sensor instead of Stokes images (the full-Stokes rendering
+    /// goes to `OUT/reference`); the full count range is the brightest S0.
+    #[arg(long, value_enum)]
+    pub raw: Option<Sensor>,
+    /// Bits per sample of the raw frames.
+    #[arg(long, default_value_t = 12, value_parser = clap::value_parser!(u32).range(8..=16))]
+    pub bit_depth: u32,
 }
 
 pub fn run(args: &SynthArgs) -> Result<()> {
@@ -34,6 +46,38 @@ pub fn run(args: &SynthArgs) -> Result<()> {
         texture: args.texture,
         ..SynthOptions::default()
     };
+    if let Some(sensor) = args.raw {
+        let reference = args.out.join("reference");
+        synth::synth(&reference, &options)?;
+        let capture = capture::load(&reference)?;
+        let full_scale = capture
+            .views
+            .iter()
+            .filter_map(|v| match &v.measurement {
+                Measurement::Stokes { s0, .. } => s0.data.iter().copied().reduce(f32::max),
+                _ => None,
+            })
+            .fold(0.0, f32::max);
+        let raw = SimulateOptions {
+            sensor,
+            bit_depth: args.bit_depth,
+            full_scale,
+            ..SimulateOptions::default()
+        };
+        simulate::write_raw_capture(&capture, &args.out, &raw)?;
+        println!(
+            "wrote {} {}-bit {} mosaic frames ({}×{}) of a {:?} to {} (full-Stokes rendering in {})",
+            args.views,
+            args.bit_depth,
+            sensor.name(),
+            args.size,
+            args.size,
+            args.shape,
+            args.out.display(),
+            reference.display()
+        );
+        return Ok(());
+    }
     synth::synth(&args.out, &options)?;
     println!(
         "wrote a {}-view {}×{} full-Stokes capture of a {:?} to {}",

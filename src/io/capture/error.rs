@@ -83,6 +83,9 @@ pub enum CaptureError {
         path: PathBuf,
         problems: Vec<Problem>,
     },
+    /// The COLMAP model of a capture folder cannot be read (`colmap/`).
+    #[error(transparent)]
+    Colmap(#[from] super::colmap::ColmapError),
 }
 
 impl CaptureError {

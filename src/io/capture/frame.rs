@@ -9,6 +9,7 @@ use serde_json::Value;
 
 use super::error::Problem;
 use super::json::Fields;
+use super::raw::{self, RawFrame, RawSettings};
 use super::{GroundTruth, PolarizerAngle, Split};
 use crate::core::camera::{is_rigid, Camera, CameraConvention, Intrinsics};
 
@@ -43,6 +44,8 @@ pub(crate) struct Header {
     /// `None`: the default of each file type (EXR/HDR linear, PNG/JPEG sRGB).
     pub color_space: Option<ColorSpace>,
     pub world_up: DVec3,
+    /// `demosaic`, `white_balance` and the defaults of the frames' `raw` keys.
+    pub raw: RawSettings,
 }
 
 /// A file named by a key, relative path as written and path joined to the capture folder.
@@ -67,6 +70,8 @@ pub(crate) enum Source {
     },
     /// `file_path` alone.
     Rgb(KeyedPath),
+    /// A raw polarization-mosaic frame (`raw`).
+    Raw(Box<RawFrame>),
 }
 
 impl Source {
@@ -75,6 +80,7 @@ impl Source {
             Source::Stokes(files) => files.iter().collect(),
             Source::Polarizer4(files) => files.iter().collect(),
             Source::Partial { file, .. } | Source::Rgb(file) => vec![file],
+            Source::Raw(raw) => vec![&raw.file],
         }
     }
 }
@@ -169,6 +175,7 @@ fn parse_top<'a>(document: &'a Value, problems: &mut Vec<Problem>) -> Option<Top
         stokes_convention,
         color_space,
         world_up,
+        raw: raw::parse_settings(&top, problems),
     };
     let defaults = IntrinsicDefaults {
         w: top.positive_int("w", problems),
@@ -226,6 +233,7 @@ pub(crate) fn parse(root: &Path, document: &Value) -> Parsed {
                 &top.defaults,
                 top.camera_convention,
                 top.stokes_convention,
+                &top.header.raw,
                 explicit_split,
                 &mut problems,
             )
@@ -271,6 +279,7 @@ fn default_header() -> Header {
         stokes_convention: StokesConvention::ImageYUp,
         color_space: None,
         world_up: DVec3::Z,
+        raw: RawSettings::default(),
     }
 }
 
@@ -297,9 +306,11 @@ fn parse_world_up(top: &Fields, problems: &mut Vec<Problem>) -> DVec3 {
 
 /// The frame's label: its index and the path of its main image.
 fn frame_name(index: usize, fields: &Fields) -> String {
-    let main = ["s0_path", "pol000_path", "file_path"]
-        .iter()
-        .find_map(|k| fields.object.get(*k).and_then(Value::as_str));
+    let main = raw::file_name(fields.object).or_else(|| {
+        ["s0_path", "pol000_path", "file_path"]
+            .iter()
+            .find_map(|k| fields.object.get(*k).and_then(Value::as_str))
+    });
     match main {
         Some(path) => format!("frame {index} ({path})"),
         None => format!("frame {index}"),
@@ -314,6 +325,7 @@ fn parse_frame(
     defaults: &IntrinsicDefaults,
     convention: CameraConvention,
     stokes_convention: StokesConvention,
+    raw_settings: &RawSettings,
     explicit_split: bool,
     problems: &mut Vec<Problem>,
 ) -> Option<FrameSpec> {
@@ -331,7 +343,17 @@ fn parse_frame(
     let fields = Fields::new(object, name.clone());
 
     let camera = parse_camera(&fields, defaults, convention, problems);
-    let source = parse_source(root, &fields, stokes_convention, problems);
+    let mut source = if fields.has("raw") {
+        raw::parse_frame(root, &fields, raw_settings, problems).map(|r| Source::Raw(Box::new(r)))
+    } else {
+        parse_source(root, &fields, stokes_convention, problems)
+    };
+    let camera = match (camera, &mut source) {
+        (Some(camera), Some(Source::Raw(raw))) => {
+            raw::attach_camera(raw, camera, &fields, problems)
+        }
+        (camera, _) => camera,
+    };
     let mask = keyed_path(root, &fields, "mask_path", problems);
     let split = match fields.string("split", problems) {
         Some("train") => Split::Train,

@@ -22,6 +22,9 @@ const MASK_THRESHOLD: f32 = 127.5 / 255.0;
 
 /// Loads and checks every image of `spec`; returns every problem found.
 pub(crate) fn load_view(spec: &FrameSpec, header: &Header) -> Result<LoadedView, Vec<Problem>> {
+    if let Source::Raw(raw) = &spec.source {
+        return super::raw::load_view(spec, header, raw);
+    }
     let mut problems = Vec::new();
     let (width, height) = (spec.camera.width as usize, spec.camera.height as usize);
     let mut read = |file: &KeyedPath, allowed_channels: &[usize], what: &str| {
@@ -87,6 +90,7 @@ pub(crate) fn load_view(spec: &FrameSpec, header: &Header) -> Result<LoadedView,
         Source::Rgb(_) => Measurement::Rgb {
             image: rgb.pop().expect("one image"),
         },
+        Source::Raw(_) => unreachable!("raw frames are loaded by raw::load_view"),
     };
     Ok(LoadedView {
         view: View {
@@ -115,7 +119,7 @@ fn combine(a: &Image, b: &Image, sign: f32) -> Image {
     }
 }
 
-fn binarize(mask: &Image) -> Image {
+pub(super) fn binarize(mask: &Image) -> Image {
     Image {
         data: mask
             .data

@@ -4,13 +4,22 @@
 //! [`load`] parses the JSON, then reads every view's images in parallel (rayon, one task per frame)
 //! and either returns the complete [`Capture`] or a [`CaptureError`] listing every problem found:
 //! nothing is half-imported. All images come back as linear RGB in the image_y_up Stokes convention.
+//! Views may also come from raw polarization-mosaic frames (`raw.rs`, `mosaic.rs`), and a folder
+//! holding a COLMAP model instead of `transforms.json` is read by `colmap/`.
 
+pub mod colmap;
+pub mod dolp;
 mod error;
 mod frame;
 mod hull;
 mod images;
 mod json;
+pub mod mosaic;
+mod raw;
+pub mod simulate;
 
+#[cfg(test)]
+mod raw_tests;
 #[cfg(test)]
 mod shared_data_tests;
 #[cfg(test)]
@@ -26,8 +35,11 @@ use serde::Serialize;
 use crate::core::camera::Camera;
 use crate::formats::image::Image;
 
+pub use colmap::{ColmapError, ColmapReport, SparsePoint};
+pub use dolp::DolpStats;
 pub use error::{CaptureError, Problem};
 pub use hull::{Bounds, VisualHull};
+pub use raw::RawReport;
 
 /// Training or held-out view.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -95,6 +107,13 @@ pub struct Capture {
     /// The world's up axis (+Z or +Y), which orients lat-long environment maps.
     pub world_up: DVec3,
     pub warnings: Vec<String>,
+    /// Sparse 3D points of a structure-from-motion model (COLMAP's `points3D`), empty otherwise;
+    /// they seed the surfels.
+    pub points: Vec<SparsePoint>,
+    /// The views read from raw mosaic frames and how; `None` without raw frames.
+    pub raw: Option<RawReport>,
+    /// The COLMAP model the capture was read from; `None` for a `transforms.json` capture.
+    pub colmap: Option<ColmapReport>,
 }
 
 /// What `phygap inspect` prints.
@@ -104,7 +123,7 @@ pub struct CaptureSummary {
     pub train_views: usize,
     pub test_views: usize,
     /// Measurement kinds present: `stokes`, `polarizer4` (Stokes from four polarizer images),
-    /// `partial`, `rgb`.
+    /// `raw` (Stokes from raw mosaic frames), `partial`, `rgb`.
     pub kinds: Vec<String>,
     pub width: u32,
     pub height: u32,
@@ -112,11 +131,34 @@ pub struct CaptureSummary {
     pub bounds: Bounds,
     pub world_up: DVec3,
     pub warnings: Vec<String>,
+    /// DoLP over the masked pixels of every full-Stokes view; `None` without one.
+    pub dolp: Option<DolpStats>,
+    pub raw: Option<RawReport>,
+    pub colmap: Option<ColmapReport>,
+    /// Sparse points that seed the surfels (COLMAP `points3D`).
+    pub sparse_points: usize,
+    /// One entry per view.
+    pub frames: Vec<FrameSummary>,
+}
+
+/// What `phygap inspect --json` says about one view.
+#[derive(Clone, Debug, Serialize)]
+pub struct FrameSummary {
+    pub name: String,
+    pub frame_index: usize,
+    pub split: Split,
+    pub kind: String,
+    /// DoLP over the view's masked pixels (full-Stokes views only).
+    pub dolp: Option<DolpStats>,
 }
 
 /// Loads a capture: `path` is a folder holding `transforms.json`, or a JSON file (e.g.
-/// `transforms_partial.json`); image paths are relative to the JSON file's folder.
+/// `transforms_partial.json`); image paths are relative to the JSON file's folder. A folder
+/// without `transforms.json` but with a COLMAP model (`sparse/0/`) is read by [`colmap::load`].
 pub fn load(path: &Path) -> Result<Capture, CaptureError> {
+    if let Some(model) = colmap::find_model(path) {
+        return colmap::load(path, &model);
+    }
     let json_path = transforms_path(path);
     let _span = tracing::info_span!("load_capture", path = %json_path.display()).entered();
     let document = read_document(&json_path)?;
@@ -125,11 +167,23 @@ pub fn load(path: &Path) -> Result<Capture, CaptureError> {
         .filter(|p| !p.as_os_str().is_empty())
         .unwrap_or(Path::new("."));
     let root = folder.canonicalize().unwrap_or_else(|_| folder.to_owned());
+    load_document(&json_path, root, &document, Vec::new())
+}
+
+/// Validates and loads a transforms document whose paths are relative to `root`; `problems`
+/// found before (by a caller that built the document) join the ones found here.
+pub(crate) fn load_document(
+    json_path: &Path,
+    root: PathBuf,
+    document: &serde_json::Value,
+    earlier: Vec<Problem>,
+) -> Result<Capture, CaptureError> {
     let frame::Parsed {
         header,
         frames,
         mut problems,
-    } = frame::parse(&root, &document);
+    } = frame::parse(&root, document);
+    problems.splice(0..0, earlier);
 
     if let Some(first) = frames.first() {
         let size = (first.camera.width, first.camera.height);
@@ -185,10 +239,16 @@ pub fn load(path: &Path) -> Result<Capture, CaptureError> {
         let mut seen = std::collections::HashSet::new();
         problems.retain(|p| seen.insert(p.clone()));
         return Err(CaptureError::Invalid {
-            path: json_path,
+            path: json_path.to_owned(),
             problems,
         });
     }
+    let raw = raw::balance_white(&frames, &mut views, &header.raw).map_err(|problem| {
+        CaptureError::Invalid {
+            path: json_path.to_owned(),
+            problems: vec![problem],
+        }
+    })?;
     let mut warnings = Vec::new();
     if !unmasked.is_empty() {
         warnings.push(format!(
@@ -205,6 +265,9 @@ pub fn load(path: &Path) -> Result<Capture, CaptureError> {
         views,
         world_up: header.world_up,
         warnings,
+        points: Vec::new(),
+        raw,
+        colmap: None,
     })
 }
 
@@ -232,8 +295,12 @@ fn read_document(json_path: &Path) -> Result<serde_json::Value, CaptureError> {
 }
 
 /// Reads only the cameras of a transforms file (a capture folder or a JSON file): one
-/// `(frame name, camera)` per frame, in order. Image keys are not needed and not checked.
+/// `(frame name, camera)` per frame, in order. Image keys are not needed and not checked. A
+/// COLMAP capture folder gives one `(image name, camera)` per image, sorted by name.
 pub fn load_cameras(path: &Path) -> Result<Vec<(String, Camera)>, CaptureError> {
+    if let Some(model) = colmap::find_model(path) {
+        return colmap::load_cameras(&model);
+    }
     let json_path = transforms_path(path);
     let document = read_document(&json_path)?;
     let (cameras, problems) = frame::parse_cameras(&document);
@@ -283,12 +350,17 @@ impl Capture {
         self.visual_hull().bounds()
     }
 
-    /// Counts, kinds, resolution, polarizer groups, bounds and warnings.
+    /// Counts, kinds, resolution, polarizer groups, bounds, DoLP statistics and warnings.
     pub fn summary(&self) -> CaptureSummary {
+        const KIND_NAMES: [&str; 5] = ["stokes", "polarizer4", "raw", "partial", "rgb"];
         let mut kinds = BTreeSet::new();
         let mut groups = BTreeSet::new();
-        for view in &self.views {
-            let kind = match &view.measurement {
+        let raw_frames = self.raw.as_ref().map_or(&[][..], |r| &r.frames[..]);
+        let view_kinds: Vec<usize> = self
+            .views
+            .iter()
+            .map(|view| match &view.measurement {
+                Measurement::Stokes { .. } if raw_frames.contains(&view.frame_index) => 2,
                 // Stokes images are also recorded as ground truth (`s0_path`); a Stokes view
                 // without one was computed from the four polarizer images.
                 Measurement::Stokes { .. } if view.ground_truth.s0.is_some() => 0,
@@ -297,13 +369,39 @@ impl Capture {
                     if let PolarizerAngle::Group(g) = angle {
                         groups.insert(g.clone());
                     }
-                    2
+                    3
                 }
-                Measurement::Rgb { .. } => 3,
-            };
-            kinds.insert(kind);
+                Measurement::Rgb { .. } => 4,
+            })
+            .collect();
+        kinds.extend(view_kinds.iter().copied());
+        let histograms: Vec<Option<dolp::DolpHistogram>> = self
+            .views
+            .par_iter()
+            .map(|view| match &view.measurement {
+                Measurement::Stokes { s0, s1, s2 } => {
+                    Some(dolp::DolpHistogram::of_view(s0, s1, s2, &view.mask))
+                }
+                _ => None,
+            })
+            .collect();
+        let mut total: Option<dolp::DolpHistogram> = None;
+        for h in histograms.iter().flatten() {
+            total.get_or_insert_with(Default::default).merge(h);
         }
-        const KIND_NAMES: [&str; 4] = ["stokes", "polarizer4", "partial", "rgb"];
+        let frames = self
+            .views
+            .iter()
+            .zip(&view_kinds)
+            .zip(&histograms)
+            .map(|((view, &kind), h)| FrameSummary {
+                name: view.name.clone(),
+                frame_index: view.frame_index,
+                split: view.split,
+                kind: KIND_NAMES[kind].to_owned(),
+                dolp: h.as_ref().and_then(|h| h.stats()),
+            })
+            .collect();
         let (width, height) = self
             .views
             .first()
@@ -319,6 +417,11 @@ impl Capture {
             bounds: self.object_bounds(),
             world_up: self.world_up,
             warnings: self.warnings.clone(),
+            dolp: total.and_then(|h| h.stats()),
+            raw: self.raw.clone(),
+            colmap: self.colmap.clone(),
+            sparse_points: self.points.len(),
+            frames,
         }
     }
 }

@@ -87,7 +87,7 @@ pub fn init_from_visual_hull(capture: &Capture, count: usize, seed: u64) -> Surf
 }
 
 /// A uniformly distributed rotation (Shoemake's method).
-fn random_rotation(rng: &mut ChaCha8Rng) -> DQuat {
+pub(crate) fn random_rotation(rng: &mut ChaCha8Rng) -> DQuat {
     let (u1, u2, u3): (f64, f64, f64) = (rng.random(), rng.random(), rng.random());
     let tau = std::f64::consts::TAU;
     let (a, b) = ((1.0 - u1).sqrt(), u1.sqrt());
@@ -154,6 +154,9 @@ pub(crate) mod tests {
             views,
             world_up: DVec3::Z,
             warnings: Vec::new(),
+            points: Vec::new(),
+            raw: None,
+            colmap: None,
         }
     }
 

@@ -21,6 +21,7 @@ mod angles;
 mod engine;
 mod eta;
 pub mod init;
+pub mod sparse;
 pub mod state;
 pub mod step;
 pub mod targets;
@@ -58,7 +59,7 @@ use crate::pipeline::backend::{self, BackendError, Engine};
 use crate::pipeline::evaluate::{self, EvalError};
 use crate::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
 use crate::pipeline::reconstruction::prefilter_plan;
-use init::init_from_visual_hull;
+use sparse::init_for_capture;
 
 use crate::core::step::ViewTarget;
 use engine::{Pending, StepEngine};
@@ -314,7 +315,7 @@ pub fn train_on(
 
 impl Run<'_> {
     fn fresh_state(&self) -> Result<TrainState, TrainError> {
-        let surfels = init_from_visual_hull(
+        let surfels = init_for_capture(
             self.capture,
             self.config.initial_surfels as usize,
             self.config.seed,

@@ -12,6 +12,10 @@ use crate::meshing::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
 use crate::model::{Model, ModelError, TEST_CAMERAS_FILE};
 use crate::reconstruction::{Reconstruction, ReconstructionError};
 
+pub mod materials;
+
+pub use materials::{transfer_materials, MaterialError, VertexMaterial};
+
 #[derive(Debug, Error)]
 pub enum ExportError {
     #[error(transparent)]

@@ -60,6 +60,8 @@ async fn upload_train_and_download_every_artifact() {
     for expected in [
         "config.json",
         "envmap.exr",
+        "envmap.hdr",
+        "envmap.png",
         "mesh.ply",
         "metrics.json",
         "model.json",
@@ -100,6 +102,10 @@ async fn upload_train_and_download_every_artifact() {
                 assert_eq!(content_type, "application/json");
             }
             "surfels.ply" | "mesh.ply" => assert!(bytes.starts_with(b"ply\n")),
+            "envmap.hdr" => {
+                assert_eq!(content_type, "image/vnd.radiance");
+                assert!(bytes.starts_with(b"#?RADIANCE"));
+            }
             other if other.ends_with(".png") => assert_eq!(&bytes[1..4], b"PNG"),
             other if other.ends_with(".exr") => assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01]),
             other => panic!("unexpected artifact {other}"),

@@ -1,19 +1,24 @@
 //! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
-//! EXR), the extracted mesh (`mesh.ply`), configuration, metrics, and S0/normal/albedo/DoLP/AoLP renders of
-//! the capture's test views. This is what the service publishes as a job's artifacts and what
-//! `phygap export` writes.
+//! EXR, Radiance HDR and a tone-mapped PNG preview, [`envmap_files`]), the extracted mesh
+//! (`mesh.ply`), configuration, metrics, and S0/normal/albedo/DoLP/AoLP renders of the capture's
+//! test views. This is what the service
+//! publishes as a job's artifacts and what `phygap export` writes.
 
 use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
 use crate::capture::{self, CaptureError};
+use crate::envmap::EnvMapError;
+use crate::image_io::{self, ImageError};
 use crate::meshing::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
-use crate::model::{Model, ModelError, TEST_CAMERAS_FILE};
+use crate::model::{Model, ModelError, LATLONG_HEIGHT, TEST_CAMERAS_FILE};
 use crate::reconstruction::{Reconstruction, ReconstructionError};
 
+pub mod envmap_files;
 pub mod materials;
 
+pub use envmap_files::{ENVMAP_HDR_FILE, ENVMAP_PNG_FILE};
 pub use materials::{transfer_materials, MaterialError, VertexMaterial};
 
 #[derive(Debug, Error)]
@@ -26,6 +31,12 @@ pub enum ExportError {
     Cameras(#[from] CaptureError),
     #[error(transparent)]
     Meshing(#[from] MeshingError),
+    #[error(transparent)]
+    EnvMap(#[from] EnvMapError),
+    #[error(transparent)]
+    Image(#[from] ImageError),
+    #[error(transparent)]
+    Materials(#[from] MaterialError),
     #[error("{path}: {source}")]
     Io {
         path: PathBuf,
@@ -36,7 +47,7 @@ pub enum ExportError {
 /// Files copied as they are from the model folder (when present).
 const COPIED: [&str; 5] = [
     "surfels.ply",
-    "envmap.exr",
+    ENVMAP_EXR_FILE,
     "config.json",
     "metrics.json",
     "model.json",
@@ -44,6 +55,9 @@ const COPIED: [&str; 5] = [
 
 /// The mesh written into the export folder.
 pub const MESH_FILE: &str = "mesh.ply";
+
+/// The lat-long environment map (copied from the model folder, written when it lacks one).
+pub const ENVMAP_EXR_FILE: &str = "envmap.exr";
 
 /// Kinds rendered for every test camera (DoLP and AoLP: the polarization the model predicts).
 const RENDERED: [&str; 5] = ["s0", "normal", "albedo", "dolp", "aolp"];
@@ -70,6 +84,14 @@ pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportEr
     let mesh_path = out_dir.join(MESH_FILE);
     meshing::write_mesh(&mesh, &mesh_path)?;
     written.push(mesh_path);
+    let up = model.world_up()?;
+    let latlong = model.envmap.to_latlong(LATLONG_HEIGHT, up);
+    let exr_path = out_dir.join(ENVMAP_EXR_FILE);
+    if !model_dir.join(ENVMAP_EXR_FILE).exists() {
+        image_io::write_exr(&exr_path, &latlong)?;
+        written.push(exr_path);
+    }
+    written.extend(envmap_files::write_envmap_files(out_dir, &latlong)?);
     let cameras_file = model_dir.join(TEST_CAMERAS_FILE);
     if cameras_file.exists() {
         let cameras = capture::load_cameras(&cameras_file)?;

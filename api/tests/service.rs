@@ -64,6 +64,7 @@ async fn upload_train_and_download_every_artifact() {
         "envmap.png",
         "mesh.ply",
         "metrics.json",
+        "model.glb",
         "model.json",
         "renders/s0/000.exr",
         "renders/s0/000.png",
@@ -102,6 +103,10 @@ async fn upload_train_and_download_every_artifact() {
                 assert_eq!(content_type, "application/json");
             }
             "surfels.ply" | "mesh.ply" => assert!(bytes.starts_with(b"ply\n")),
+            "model.glb" => {
+                assert_eq!(content_type, "model/gltf-binary");
+                assert_eq!(&bytes[..4], b"glTF");
+            }
             "envmap.hdr" => {
                 assert_eq!(content_type, "image/vnd.radiance");
                 assert!(bytes.starts_with(b"#?RADIANCE"));

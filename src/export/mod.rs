@@ -1,24 +1,29 @@
 //! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
 //! EXR, Radiance HDR and a tone-mapped PNG preview, [`envmap_files`]), the extracted mesh
-//! (`mesh.ply`), configuration, metrics, and S0/normal/albedo/DoLP/AoLP renders of the capture's
-//! test views. This is what the service
+//! (`mesh.ply`), the mesh with its learned materials as glTF 2.0 binary (`model.glb`, [`gltf`],
+//! materials sampled from the surfels by [`materials`]), configuration, metrics, and
+//! S0/normal/albedo/DoLP/AoLP renders of the capture's test views. This is what the service
 //! publishes as a job's artifacts and what `phygap export` writes.
 
 use std::path::{Path, PathBuf};
 
+use glam::DVec3;
 use thiserror::Error;
 
 use crate::capture::{self, CaptureError};
 use crate::envmap::EnvMapError;
 use crate::image_io::{self, ImageError};
+use crate::mesh::TriangleMesh;
 use crate::meshing::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
 use crate::model::{Model, ModelError, LATLONG_HEIGHT, TEST_CAMERAS_FILE};
 use crate::reconstruction::{Reconstruction, ReconstructionError};
 
 pub mod envmap_files;
+pub mod gltf;
 pub mod materials;
 
 pub use envmap_files::{ENVMAP_HDR_FILE, ENVMAP_PNG_FILE};
+pub use gltf::{write_glb, GlbSummary, GltfError};
 pub use materials::{transfer_materials, MaterialError, VertexMaterial};
 
 #[derive(Debug, Error)]
@@ -37,6 +42,8 @@ pub enum ExportError {
     Image(#[from] ImageError),
     #[error(transparent)]
     Materials(#[from] MaterialError),
+    #[error("model.glb: {0}")]
+    Gltf(#[from] GltfError),
     #[error("{path}: {source}")]
     Io {
         path: PathBuf,
@@ -56,11 +63,39 @@ const COPIED: [&str; 5] = [
 /// The mesh written into the export folder.
 pub const MESH_FILE: &str = "mesh.ply";
 
+/// The mesh with its learned materials, glTF 2.0 binary.
+pub const GLB_FILE: &str = "model.glb";
+
 /// The lat-long environment map (copied from the model folder, written when it lacks one).
 pub const ENVMAP_EXR_FILE: &str = "envmap.exr";
 
 /// Kinds rendered for every test camera (DoLP and AoLP: the polarization the model predicts).
 const RENDERED: [&str; 5] = ["s0", "normal", "albedo", "dolp", "aolp"];
+
+/// Writes `mesh` (extracted from `model`) with the model's materials on its vertices as a glTF
+/// binary at `path`.
+pub fn write_model_glb(
+    model: &Model,
+    mesh: &TriangleMesh,
+    path: &Path,
+) -> Result<GlbSummary, ExportError> {
+    let points: Vec<DVec3> = mesh
+        .vertices
+        .iter()
+        .map(|v| DVec3::from_array(*v))
+        .collect();
+    let vertex_materials =
+        materials::transfer_materials(&points, &materials::surfel_list(&model.surfels))?;
+    let summary = gltf::write_glb(path, mesh, &vertex_materials, model.world_up()?)?;
+    tracing::info!(
+        vertices = summary.vertices,
+        triangles = summary.triangles,
+        ior = summary.ior,
+        bytes = summary.bytes,
+        "glTF written"
+    );
+    Ok(summary)
+}
 
 /// Writes the deliverables of `model_dir` into `out_dir` (created if needed); returns the files.
 pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportError> {
@@ -84,6 +119,9 @@ pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportEr
     let mesh_path = out_dir.join(MESH_FILE);
     meshing::write_mesh(&mesh, &mesh_path)?;
     written.push(mesh_path);
+    let glb_path = out_dir.join(GLB_FILE);
+    write_model_glb(&model, &mesh, &glb_path)?;
+    written.push(glb_path);
     let up = model.world_up()?;
     let latlong = model.envmap.to_latlong(LATLONG_HEIGHT, up);
     let exr_path = out_dir.join(ENVMAP_EXR_FILE);

@@ -15,7 +15,7 @@ use phygap::core::mesh::TriangleMesh;
 use phygap::core::metrics;
 use phygap::core::shading::{shade, PixelInput};
 use phygap::core::surfels::{Surfel, Surfels};
-use phygap::formats::image::{read_image, Image};
+use phygap::formats::image_io::{read_image, Image};
 use phygap::io::capture::{self, Measurement, View};
 use phygap::testing::shared_data_dir;
 

@@ -9,7 +9,7 @@ use phygap::core::brdf_lut::BrdfLut;
 use phygap::core::camera::{Camera, CameraConvention, Intrinsics};
 use phygap::core::envmap::{CubeMap, MipChainSpec, PrefilterPlan, PreparedEnv, WorldUp};
 use phygap::core::shading::{physics_check, GroundTruthView, ShadingCheck};
-use phygap::formats::image::{read_image, Image};
+use phygap::formats::image_io::{read_image, Image};
 use phygap::testing::shared_data_dir;
 
 /// One test view read minimally from `transforms_test.json` (the capture loader lives elsewhere).

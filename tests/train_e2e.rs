@@ -228,7 +228,7 @@ fn partial_and_rgb_modes_train_and_partial_recovers_polarizer_angles() {
     {
         let theta = truth[k % 2].to_radians();
         let read = |key: &str| {
-            phygap::formats::image::read_image(&root.join(frame[key].as_str().unwrap()))
+            phygap::formats::image_io::read_image(&root.join(frame[key].as_str().unwrap()))
                 .unwrap()
                 .0
         };
@@ -241,7 +241,7 @@ fn partial_and_rgb_modes_train_and_partial_recovers_polarizer_angles() {
                     + s2.data[i] * (2.0 * theta).sin() as f32);
         }
         let name = format!("lp_{k:03}.exr");
-        phygap::formats::image::write_exr(&root.join(&name), &image).unwrap();
+        phygap::formats::image_io::write_exr(&root.join(&name), &image).unwrap();
         let object = frame.as_object_mut().unwrap();
         for key in ["s0_path", "s1_path", "s2_path"] {
             object.remove(key);

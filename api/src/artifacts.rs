@@ -90,6 +90,7 @@ pub fn content_type(name: &str) -> &'static str {
         Some("exr") => "image/x-exr",
         Some("hdr") => "image/vnd.radiance",
         Some("ply") => "application/x-ply",
+        Some("glb") => "model/gltf-binary",
         Some("txt" | "log") => "text/plain; charset=utf-8",
         Some("csv") => "text/csv",
         _ => "application/octet-stream",

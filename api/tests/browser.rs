@@ -2,8 +2,9 @@
 //! server on loopback (with a token). It answers the token prompt, uploads a broken capture (the
 //! validation report names its problems) and the synthetic one, starts a small job from the form,
 //! waits for the live job list to say `succeeded`, opens the result viewer (the WebGL canvas
-//! really draws: its pixels are sampled; captured views and renders are shown), relights the model
-//! from the page, checks a phone-width layout, and that the console logged no error.
+//! really draws: its pixels are sampled, for the material mesh and for the exported `model.glb`;
+//! captured views and renders are shown), relights the model from the page, checks a phone-width
+//! layout, and that the console logged no error.
 //!
 //! Skips with a notice when Chromium or chromedriver is missing (`apt-get install chromium
 //! chromium-driver`), except under `CI=true`, where that fails. With `PHYGAP_WEB_SCREENSHOTS=DIR`
@@ -345,6 +346,46 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
         "{facts}"
     );
     screenshot(&session, &screenshots, "web-viewer.png").await;
+    // The exported glTF (model.glb) in the same view, loaded by three.js's GLTFLoader.
+    session.click("#view-toggle button[data-view=gltf]").await;
+    session
+        .wait_for(
+            "the glTF view",
+            "return document.querySelector('#viewer-canvas').dataset.shown === 'gltf'",
+            WAIT,
+        )
+        .await;
+    assert_canvas_draws(&session, "#viewer-canvas").await;
+    let pressed = session
+        .script(
+            "return document.querySelector('#view-toggle button[data-view=gltf]').getAttribute('aria-pressed')",
+            json!([]),
+        )
+        .await;
+    assert_eq!(pressed, "true");
+    // GLTFLoader read the export's mesh (as many vertices as the material mesh) and its one IoR
+    // (KHR_materials_ior), which the facts now show.
+    let shown = session
+        .script(
+            "return { vertices: document.querySelector('#viewer-canvas').dataset.gltfVertices,\
+                      mesh: document.querySelector('#material-facts dd').textContent,\
+                      ior: document.querySelector('#material-facts .gltf-ior').textContent }",
+            json!([]),
+        )
+        .await;
+    assert_eq!(shown["vertices"], shown["mesh"], "{shown}");
+    let glb = t
+        .get_with_token(&format!("/v1/jobs/{job_id}/artifacts/model.glb"), TOKEN)
+        .await
+        .bytes()
+        .await
+        .unwrap();
+    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let document: Value = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
+    let ior = document["materials"][0]["extensions"]["KHR_materials_ior"]["ior"]
+        .as_f64()
+        .unwrap();
+    assert_eq!(shown["ior"], format!("{ior:.3}"), "{shown}");
 
     // Relighting from the page.
     session

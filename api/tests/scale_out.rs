@@ -90,9 +90,9 @@ async fn a_worker_elsewhere_runs_the_job_and_the_api_serves_its_artifacts_from_t
     // A relight job (its inputs uploaded to the API) runs on the worker, which fetches them and
     // the parent's model from the bucket.
     let envmap_path = api_dir.path().join("sky.exr");
-    phygap::formats::image::write_exr(
+    phygap::formats::image_io::write_exr(
         &envmap_path,
-        &phygap::formats::image::Image::filled(8, 4, 3, 2.0),
+        &phygap::formats::image_io::Image::filled(8, 4, 3, 2.0),
     )
     .unwrap();
     let response = api

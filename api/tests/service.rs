@@ -60,8 +60,11 @@ async fn upload_train_and_download_every_artifact() {
     for expected in [
         "config.json",
         "envmap.exr",
+        "envmap.hdr",
+        "envmap.png",
         "mesh.ply",
         "metrics.json",
+        "model.glb",
         "model.json",
         "renders/s0/000.exr",
         "renders/s0/000.png",
@@ -100,6 +103,14 @@ async fn upload_train_and_download_every_artifact() {
                 assert_eq!(content_type, "application/json");
             }
             "surfels.ply" | "mesh.ply" => assert!(bytes.starts_with(b"ply\n")),
+            "model.glb" => {
+                assert_eq!(content_type, "model/gltf-binary");
+                assert_eq!(&bytes[..4], b"glTF");
+            }
+            "envmap.hdr" => {
+                assert_eq!(content_type, "image/vnd.radiance");
+                assert!(bytes.starts_with(b"#?RADIANCE"));
+            }
             other if other.ends_with(".png") => assert_eq!(&bytes[1..4], b"PNG"),
             other if other.ends_with(".exr") => assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01]),
             other => panic!("unexpected artifact {other}"),
@@ -515,9 +526,9 @@ async fn relight_runs_as_its_own_job() {
     let train_id = t.start_training(10, 5).await;
     // Not trained yet (or still running): refused.
     let envmap_path = dir.path().join("sky.exr");
-    phygap::formats::image::write_exr(
+    phygap::formats::image_io::write_exr(
         &envmap_path,
-        &phygap::formats::image::Image::filled(8, 4, 3, 2.0),
+        &phygap::formats::image_io::Image::filled(8, 4, 3, 2.0),
     )
     .unwrap();
     let envmap = std::fs::read(&envmap_path).unwrap();
@@ -550,7 +561,7 @@ async fn relight_runs_as_its_own_job() {
         .unwrap();
     let relit_path = dir.path().join("relit.exr");
     std::fs::write(&relit_path, &relit).unwrap();
-    let (image, _) = phygap::formats::image::read_image(&relit_path).unwrap();
+    let (image, _) = phygap::formats::image_io::read_image(&relit_path).unwrap();
     let mean = image.data.iter().map(|&v| f64::from(v)).sum::<f64>() / image.data.len() as f64;
     assert!(
         mean > 0.0 && image.first_non_finite().is_none(),

@@ -11,7 +11,7 @@
 use thiserror::Error;
 
 use crate::core::loss::ssim_map;
-use crate::formats::image::linear_to_srgb;
+use crate::formats::image_io::linear_to_srgb;
 
 /// A metric whose inputs do not fit together.
 #[derive(Debug, Error, PartialEq)]
@@ -324,7 +324,7 @@ fn masked_mean(
 mod tests {
     use super::*;
     use crate::core::loss::ssim::{gaussian_kernel, SSIM_C1, SSIM_C2};
-    use crate::formats::image::srgb_to_linear;
+    use crate::formats::image_io::srgb_to_linear;
 
     #[test]
     fn srgb8_quantization_of_known_values() {

@@ -2,5 +2,5 @@
 //! bit-exact checkpoint files. The lowest layer: it uses no other module of the crate.
 
 pub mod checkpoint;
-pub mod image;
+pub mod image_io;
 pub mod ply;

@@ -25,7 +25,7 @@ use crate::core::camera::Camera;
 use crate::core::config::{Mode, TrainConfig};
 use crate::core::envmap::{CubeMap, EnvMapError, WorldUp};
 use crate::core::surfels::{self, Surfels};
-use crate::formats::image::{self, Image, ImageError};
+use crate::formats::image_io::{self, Image, ImageError};
 use crate::formats::ply::PlyError;
 
 /// Cameras of the capture's test views, in the transforms format.
@@ -108,8 +108,8 @@ impl Model {
         write_json(&dir.join("config.json"), &self.config)?;
         surfels::ply::save_ply(&dir.join("surfels.ply"), &self.surfels)?;
         let latlong = self.envmap.to_latlong(LATLONG_HEIGHT, self.world_up()?);
-        image::write_exr(&dir.join("envmap.exr"), &latlong)?;
-        image::write_exr(&dir.join("envmap_cube.exr"), &cube_to_image(&self.envmap))?;
+        image_io::write_exr(&dir.join("envmap.exr"), &latlong)?;
+        image_io::write_exr(&dir.join("envmap_cube.exr"), &cube_to_image(&self.envmap))?;
         if !self.train_cameras.is_empty() {
             write_json(
                 &dir.join(TRAIN_CAMERAS_FILE),
@@ -134,7 +134,7 @@ impl Model {
         let config: TrainConfig = serde_json::from_str(&read_json("config.json")?)
             .map_err(|e| invalid("config.json", e))?;
         let surfels = surfels::ply::load_ply(&dir.join("surfels.ply"))?;
-        let (cube_image, _) = image::read_image(&dir.join("envmap_cube.exr"))?;
+        let (cube_image, _) = image_io::read_image(&dir.join("envmap_cube.exr"))?;
         let envmap = image_to_cube(&cube_image).ok_or_else(|| ModelError::Invalid {
             path: dir.join("envmap_cube.exr"),
             message: "not 6 square faces stacked vertically (RGB)".into(),

@@ -12,7 +12,7 @@ use thiserror::Error;
 
 use crate::core::metrics::{self, MetricsError};
 use crate::core::render::{RenderError, RenderedView, Scene};
-use crate::formats::image::{self, ImageError};
+use crate::formats::image_io::{self, ImageError};
 use crate::io::capture::{Capture, Measurement, PolarizerAngle, View};
 
 /// The JSON printed by `phygap eval` (keys fixed by the CLI contract).
@@ -121,7 +121,7 @@ impl Means {
 }
 
 fn read_f64(path: &Path, channels: usize) -> Result<Vec<f64>, ImageError> {
-    let (img, _) = image::read_image(path)?;
+    let (img, _) = image_io::read_image(path)?;
     let img = if channels == 3 {
         img.to_rgb()
     } else {
@@ -130,7 +130,7 @@ fn read_f64(path: &Path, channels: usize) -> Result<Vec<f64>, ImageError> {
     Ok(img.data.iter().map(|&v| f64::from(v)).collect())
 }
 
-fn to_f64(img: &crate::formats::image::Image) -> Vec<f64> {
+fn to_f64(img: &crate::formats::image_io::Image) -> Vec<f64> {
     img.to_rgb().data.iter().map(|&v| f64::from(v)).collect()
 }
 

@@ -19,7 +19,7 @@ use crate::core::mesh::TriangleMesh;
 use crate::core::raster::RasterSettings;
 use crate::core::render::{RenderError, RenderedView, Scene};
 use crate::core::shading;
-use crate::formats::image::{self, Image, ImageError};
+use crate::formats::image_io::{self, Image, ImageError};
 use crate::io::capture::Capture;
 use crate::io::model::Model;
 use crate::pipeline::backend::{self, BackendError, Engine};
@@ -198,8 +198,8 @@ impl Reconstruction {
                 }
                 let exr = out.join(kind).join(format!("{index:03}.exr"));
                 let png = exr.with_extension("png");
-                image::write_exr(&exr, &linear)?;
-                image::write_png(&png, &preview.0, preview.1)?;
+                image_io::write_exr(&exr, &linear)?;
+                image_io::write_png(&png, &preview.0, preview.1)?;
                 written.extend([exr, png]);
             }
         }

@@ -19,7 +19,7 @@ use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
 use crate::core::envmap::{CubeMap, EnvMapError, PreparedEnv, WorldUp};
 use crate::core::shading::{self, PixelInput};
-use crate::formats::image::{self, Image, ImageError};
+use crate::formats::image_io::{self, Image, ImageError};
 use crate::pipeline::reconstruction::prefilter_plan;
 
 /// Face size of the cube maps the synthetic views are lit by.
@@ -339,8 +339,8 @@ pub fn synth(out_dir: &Path, options: &SynthOptions) -> Result<(), SynthError> {
     let lut = BrdfLut::shared();
     let sky = procedural_sky(64, DVec3::new(0.6, 0.4, 0.7), 30.0);
     let relight_sky = procedural_sky(64, DVec3::new(-0.5, -0.6, 0.4), 20.0);
-    image::write_exr(&out_dir.join("env/sky.exr"), &sky)?;
-    image::write_exr(&out_dir.join("env/relight.exr"), &relight_sky)?;
+    image_io::write_exr(&out_dir.join("env/sky.exr"), &sky)?;
+    image_io::write_exr(&out_dir.join("env/relight.exr"), &relight_sky)?;
     let prepare = |latlong: &Image| -> Result<PreparedEnv, SynthError> {
         let cube = CubeMap::from_latlong(latlong, WorldUp::Z, ENV_FACE_SIZE)?;
         Ok(PreparedEnv::new(
@@ -362,9 +362,9 @@ pub fn synth(out_dir: &Path, options: &SynthOptions) -> Result<(), SynthError> {
             let write = |rel: &str, img: &Image| -> Result<(), SynthError> {
                 let p = out_dir.join(rel);
                 if rel.ends_with(".png") {
-                    image::write_png(&p, img, false)?;
+                    image_io::write_png(&p, img, false)?;
                 } else {
-                    image::write_exr(&p, img)?;
+                    image_io::write_exr(&p, img)?;
                 }
                 Ok(())
             };

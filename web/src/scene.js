@@ -1,10 +1,12 @@
 // The WebGL view of a trained model (three.js): the extracted mesh with the learned materials
-// (per-vertex albedo, roughness and IoR → a physically based material), a lat-long environment
-// map as background and light, orbit controls. Used by the result viewer and the relight preview.
+// (per-vertex albedo, roughness and IoR → a physically based material), or the exported glTF
+// (model.glb, as any glTF viewer reads it), a lat-long environment map as background and light,
+// orbit controls. Used by the result viewer and the relight preview.
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { PLYLoader } from 'three/addons/loaders/PLYLoader.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { EXRLoader } from 'three/addons/loaders/EXRLoader.js';
 import { HDRLoader } from 'three/addons/loaders/HDRLoader.js';
 
@@ -50,6 +52,28 @@ export function parseMaterialMesh(buffer) {
   const geometry = loader.parse(buffer);
   if (!geometry.getAttribute('normal')) geometry.computeVertexNormals();
   return geometry;
+}
+
+/**
+ * Parses a glTF binary (the export's model.glb) into its scene. Its node already turns phygap's
+ * world into three.js's frame the way worldToThree does, so it goes straight into the scene.
+ */
+export function parseGltf(buffer) {
+  return new Promise((resolve, reject) => {
+    new GLTFLoader().parse(buffer, '', (gltf) => resolve(gltf.scene), reject);
+  });
+}
+
+/** Frees the geometries, materials and textures under `object`. */
+function disposeTree(object) {
+  object.traverse((node) => {
+    if (node.geometry) node.geometry.dispose();
+    const materials = node.material ? [].concat(node.material) : [];
+    for (const material of materials) {
+      for (const value of Object.values(material)) if (value && value.isTexture) value.dispose();
+      material.dispose();
+    }
+  });
 }
 
 /** Parses an environment map's bytes (OpenEXR or Radiance HDR, told apart by magic bytes). */
@@ -134,6 +158,24 @@ export class ModelView {
     this.render();
   }
 
+  /** Adds the glTF scene (parseGltf) beside the material mesh, hidden until showGltf(true). */
+  setGltf(object) {
+    if (this.gltf) {
+      this.scene.remove(this.gltf);
+      disposeTree(this.gltf);
+    }
+    this.gltf = object;
+    object.visible = false;
+    this.scene.add(object);
+  }
+
+  /** Shows the glTF (true) or the material mesh (false); the camera stays where it is. */
+  showGltf(on) {
+    if (this.gltf) this.gltf.visible = on;
+    if (this.mesh) this.mesh.visible = !on || !this.gltf;
+    this.render();
+  }
+
   /** The environment as background and light. */
   setEnvironment(texture) {
     if (this.environment) this.environment.dispose();
@@ -157,6 +199,7 @@ export class ModelView {
 
   dispose() {
     this.running = false;
+    if (this.gltf) disposeTree(this.gltf);
     this.resize.disconnect();
     this.controls.dispose();
     this.renderer.dispose();

@@ -1,9 +1,10 @@
 // The result viewer of a trained job: the mesh with its learned materials under the learned
-// environment map (WebGL, orbit controls), the learned polarizer angles, metrics and downloads,
-// and each test view's captured images beside the model's renders (S0, DoLP, AoLP).
+// environment map (WebGL, orbit controls), or the exported glTF (model.glb) under the same map,
+// the learned polarizer angles, metrics and downloads, and each test view's captured images
+// beside the model's renders (S0, DoLP, AoLP).
 
 import { json, request, artifactBlob, artifactUrl } from './api.js';
-import { ModelView, parseMaterialMesh, parseEnvironment } from './scene.js';
+import { ModelView, parseMaterialMesh, parseEnvironment, parseGltf } from './scene.js';
 import { el, size } from './format.js';
 
 let view = null;
@@ -118,6 +119,52 @@ export async function showViewerPage(root, jobId) {
     ['IoR', spread(geometry.getAttribute('aIor'))],
   ]);
   root.querySelector('#viewer-canvas').dataset.ready = 'true';
+  if (names.includes('model.glb')) gltfToggle(root, jobId, modelView);
+}
+
+/**
+ * The "Material mesh | glTF" switch under the canvas. The first switch to glTF downloads
+ * model.glb and loads it with three.js's GLTFLoader (COLOR_0 albedo, roughness from the
+ * metallic-roughness texture, KHR_materials_ior) and adds the material's one IoR to the facts; the
+ * canvas's data-shown says what is drawn, data-gltf-vertices how many vertices the glTF has.
+ */
+function gltfToggle(root, jobId, modelView) {
+  const box = root.querySelector('#view-toggle');
+  const canvas = root.querySelector('#viewer-canvas');
+  const buttons = [...box.querySelectorAll('button')];
+  let loading = null;
+  canvas.dataset.shown = 'mesh';
+  box.hidden = false;
+  const select = async (which) => {
+    if (which === 'gltf' && !loading) {
+      loading = bytes(artifactUrl(jobId, 'model.glb')).then(parseGltf).then((scene) => {
+        modelView.setGltf(scene);
+        let vertices = 0;
+        let ior = null;
+        scene.traverse((node) => {
+          if (!node.isMesh) return;
+          vertices += node.geometry.getAttribute('position').count;
+          ior = node.material.ior;
+        });
+        canvas.dataset.gltfVertices = String(vertices);
+        if (ior != null) {
+          root.querySelector('#material-facts').append(el('dt', null, 'glTF IoR'), el('dd', 'gltf-ior', ior.toFixed(3)));
+        }
+      });
+    }
+    try {
+      if (which === 'gltf') await loading;
+    } catch (error) {
+      loading = null;
+      box.append(el('p', 'muted', `model.glb: ${error.message}`));
+      return;
+    }
+    if (view !== modelView) return;
+    modelView.showGltf(which === 'gltf');
+    for (const b of buttons) b.setAttribute('aria-pressed', String(b.dataset.view === which));
+    canvas.dataset.shown = which;
+  };
+  for (const b of buttons) b.addEventListener('click', () => select(b.dataset.view));
 }
 
 function meanColor(colors) {

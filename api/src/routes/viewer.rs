@@ -10,7 +10,7 @@ use axum::extract::{Path, State};
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::Response;
 use axum::Extension;
-use phygap::formats::image::Image;
+use phygap::formats::image_io::Image;
 use phygap::io::capture::{Measurement, View};
 use tokio::io::AsyncReadExt;
 
@@ -180,7 +180,7 @@ pub async fn ground_truth(
 
 /// The PNG bytes of an image (written through a temporary file, which is removed).
 fn encode_png(tmp: &FsPath, image: &Image, srgb: bool) -> Result<Vec<u8>, ApiError> {
-    let written = phygap::formats::image::write_png(tmp, image, srgb)
+    let written = phygap::formats::image_io::write_png(tmp, image, srgb)
         .map_err(|e| ApiError::internal("encoding a PNG", e))
         .and_then(|()| std::fs::read(tmp).map_err(|e| ApiError::internal("encoding a PNG", e)));
     let _ = std::fs::remove_file(tmp);

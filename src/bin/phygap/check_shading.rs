@@ -10,7 +10,7 @@ use clap::Args;
 use phygap::core::brdf_lut::BrdfLut;
 use phygap::core::envmap::{CubeMap, PreparedEnv, WorldUp};
 use phygap::core::shading::check::{physics_check, GroundTruthView};
-use phygap::formats::image::{read_image, Image};
+use phygap::formats::image_io::{read_image, Image};
 use phygap::io::capture::{self, Measurement};
 use phygap::pipeline::reconstruction::prefilter_plan;
 

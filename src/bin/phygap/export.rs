@@ -1,5 +1,5 @@
-//! `phygap export MODEL --out DIR`: the model's deliverables (surfels.ply, envmap.exr, config,
-//! metrics, test-view renders) in one folder.
+//! `phygap export MODEL --out DIR`: the model's deliverables (surfels.ply, mesh.ply, model.glb,
+//! envmap.exr/.hdr/.png, config, metrics, test-view renders) in one folder.
 
 use std::path::PathBuf;
 

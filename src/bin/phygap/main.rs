@@ -39,7 +39,8 @@ enum Command {
     Relight(relight::RelightArgs),
     /// Extract a model's surface as a triangle mesh (PLY or OBJ).
     Mesh(mesh::MeshArgs),
-    /// Write a model's deliverables (surfels, environment map, config, metrics, renders).
+    /// Write a model's deliverables (surfels, mesh, glTF with materials, environment map as
+    /// EXR/HDR/PNG, config, metrics, renders).
     Export(export::ExportArgs),
     /// Render a small synthetic full-Stokes capture (sample data for a fresh machine).
     Synth(synth::SynthArgs),

@@ -14,7 +14,7 @@ use rayon::prelude::*;
 use super::{
     activate, face_uv_to_dir, inverse_activate, CubeGrid, CubeMap, EnvMapError, NUM_FACES,
 };
-use crate::formats::image::{read_image, Image};
+use crate::formats::image_io::{read_image, Image};
 
 /// Sub-samples per cube texel edge when importing a lat-long map.
 const SUPERSAMPLE: usize = 4;

@@ -56,7 +56,7 @@ pub enum EnvMapError {
     #[error("cube map face size {found} does not match the prefilter plan's base size {expected}")]
     PlanMismatch { expected: usize, found: usize },
     #[error(transparent)]
-    Image(#[from] crate::formats::image::ImageError),
+    Image(#[from] crate::formats::image_io::ImageError),
 }
 
 /// The radiance activation f(x): sigmoid(x) for x ≤ 0, x + 0.5 for x > 0.

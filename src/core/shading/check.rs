@@ -12,7 +12,7 @@ use super::{aolp, aolp_difference, dolp, shade, PixelInput, ShadingError};
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
 use crate::core::light::LightProbe;
-use crate::formats::image::Image;
+use crate::formats::image_io::Image;
 
 /// GT DoLP above which a pixel's AoLP is compared.
 pub const AOLP_MIN_DOLP: f64 = 0.05;

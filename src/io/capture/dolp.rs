@@ -8,7 +8,7 @@
 
 use serde::Serialize;
 
-use crate::formats::image::Image;
+use crate::formats::image_io::Image;
 
 /// Histogram bins over [0, 1].
 pub const BINS: usize = 10_000;

@@ -4,7 +4,7 @@
 //!
 //! Called once per frame from a rayon parallel iterator; each call is independent.
 
-use crate::formats::image::{read_image, srgb_to_linear, Image, ImageError, ImageFormat};
+use crate::formats::image_io::{read_image, srgb_to_linear, Image, ImageError, ImageFormat};
 
 use super::error::Problem;
 use super::frame::{ColorSpace, FrameSpec, Header, KeyedPath, Source, StokesConvention};

@@ -33,7 +33,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::core::camera::Camera;
-use crate::formats::image::Image;
+use crate::formats::image_io::Image;
 
 pub use colmap::{ColmapError, ColmapReport, SparsePoint};
 pub use dolp::DolpStats;

@@ -14,7 +14,7 @@
 
 use thiserror::Error;
 
-use crate::formats::image::Image;
+use crate::formats::image_io::Image;
 
 /// The polarizer angles (degrees, as labelled by the sensor) of a 2×2 block, `[row][column]`.
 pub const POLARIZER_LAYOUT_DEG: [[u32; 2]; 2] = [[90, 45], [135, 0]];

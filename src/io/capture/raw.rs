@@ -19,7 +19,7 @@ use super::json::Fields;
 use super::mosaic::{self, Demosaic, Mosaic, Sensor};
 use super::{Measurement, View};
 use crate::core::camera::Camera;
-use crate::formats::image::{read_image, Image};
+use crate::formats::image_io::{read_image, Image};
 
 /// Keys of a `raw` object (`file` only per frame).
 const RAW_KEYS: [&str; 6] = [
@@ -541,7 +541,7 @@ fn read_mask(
     let shown = file.relative.display();
     let (image, _) = read_image(&file.path).map_err(|e| {
         problem(match e {
-            crate::formats::image::ImageError::Io { source, .. }
+            crate::formats::image_io::ImageError::Io { source, .. }
                 if source.kind() == std::io::ErrorKind::NotFound =>
             {
                 format!("missing file {shown}")

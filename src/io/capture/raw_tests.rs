@@ -10,7 +10,7 @@ use serde_json::{json, Value};
 use super::mosaic::{Demosaic, Sensor};
 use super::simulate::{write_counts, write_raw_capture, FrameFile, SimulateOptions};
 use super::*;
-use crate::formats::image::{write_png, Image};
+use crate::formats::image_io::{write_png, Image};
 use crate::pipeline::synth::{synth, SynthOptions};
 
 /// Errors of a round trip, relative to the mean reference S0 over the compared pixels.

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 use super::*;
 use crate::core::mesh::TriangleMesh;
-use crate::formats::image::read_image;
+use crate::formats::image_io::read_image;
 
 fn median(mut values: Vec<f64>) -> f64 {
     values.sort_by(|a, b| a.total_cmp(b));

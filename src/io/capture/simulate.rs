@@ -11,7 +11,7 @@ use thiserror::Error;
 
 use super::mosaic::{self, Demosaic, MosaicError, Sensor};
 use super::{Capture, Measurement, Split};
-use crate::formats::image::{write_png, ImageError};
+use crate::formats::image_io::{write_png, ImageError};
 
 /// How raw frames are stored.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

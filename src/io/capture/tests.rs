@@ -4,7 +4,7 @@ use glam::{DMat4, DVec3};
 use serde_json::{json, Value};
 
 use super::*;
-use crate::formats::image::{write_exr, write_png, Image};
+use crate::formats::image_io::{write_exr, write_png, Image};
 
 const W: usize = 8;
 const H: usize = 6;
@@ -303,7 +303,7 @@ fn partial_and_rgb_views_with_srgb_alpha_masks_and_missing_masks() {
         panic!("expected RGB");
     };
     assert_eq!(image.channels, 3);
-    let linear = crate::formats::image::srgb_to_linear(128.0 / 255.0);
+    let linear = crate::formats::image_io::srgb_to_linear(128.0 / 255.0);
     assert!(
         image.data.iter().all(|v| (v - linear).abs() < 1e-6),
         "sRGB → linear"

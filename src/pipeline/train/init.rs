@@ -114,7 +114,7 @@ fn sample_ball(rng: &mut ChaCha8Rng, bounds: &Bounds, count: usize) -> Vec<DVec3
 pub(crate) mod tests {
     use super::*;
     use crate::core::camera::Camera;
-    use crate::formats::image::Image;
+    use crate::formats::image_io::Image;
     use crate::io::capture::{GroundTruth, Measurement, Split, View};
 
     /// A capture of a sphere (centre, radius) seen by `n` cameras on a Fibonacci sphere of radius

@@ -4,7 +4,7 @@
 
 use crate::core::config::Mode;
 use crate::core::step::{Polarizer, ViewTarget};
-use crate::formats::image::Image;
+use crate::formats::image_io::Image;
 use crate::io::capture::{Capture, Measurement, PolarizerAngle, View};
 
 fn to_f64(img: &Image) -> Vec<f64> {

@@ -350,7 +350,7 @@ pub fn load(root: &Path, location: &ModelLocation) -> Result<Capture, CaptureErr
         .filter_map(|view| distortions[view.frame_index].map(|d| (view, d)))
         .for_each(|(view, d)| {
             let camera = view.camera;
-            let fix = |image: &mut crate::formats::image::Image| {
+            let fix = |image: &mut crate::formats::image_io::Image| {
                 *image = undistort::undistort_image(image, &camera, &d).0;
             };
             match &mut view.measurement {

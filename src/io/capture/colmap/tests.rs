@@ -11,7 +11,7 @@ use glam::DMat4;
 use super::model::{read_model, write_model};
 use super::*;
 use crate::core::camera::Camera;
-use crate::formats::image::{read_image, write_exr, write_png, Image};
+use crate::formats::image_io::{read_image, write_exr, write_png, Image};
 use crate::io::capture::mosaic::Sensor;
 use crate::io::capture::simulate::{write_raw_capture, SimulateOptions};
 use crate::io::capture::{load, load_cameras};

@@ -10,7 +10,7 @@
 use rayon::prelude::*;
 
 use crate::core::camera::Camera;
-use crate::formats::image::Image;
+use crate::formats::image_io::Image;
 
 /// OpenCV's radial-tangential distortion of normalized image coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]

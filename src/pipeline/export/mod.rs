@@ -1,0 +1,144 @@
+//! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
+//! EXR, Radiance HDR and a tone-mapped PNG preview, [`envmap_files`]), the extracted mesh
+//! (`mesh.ply`), the mesh with its learned materials as glTF 2.0 binary (`model.glb`, [`gltf`],
+//! materials sampled from the surfels by [`materials`]), configuration, metrics, and
+//! S0/normal/albedo/DoLP/AoLP renders of the capture's test views. This is what the service
+//! publishes as a job's artifacts and what `phygap export` writes.
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+use thiserror::Error;
+
+use crate::core::envmap::EnvMapError;
+use crate::core::mesh::TriangleMesh;
+use crate::formats::image_io::{self, ImageError};
+use crate::io::capture::{self, CaptureError};
+use crate::io::model::{Model, ModelError, LATLONG_HEIGHT, TEST_CAMERAS_FILE};
+use crate::pipeline::mesh_extraction::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
+use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
+
+pub mod envmap_files;
+pub mod gltf;
+pub mod materials;
+
+pub use envmap_files::{ENVMAP_HDR_FILE, ENVMAP_PNG_FILE};
+pub use gltf::{write_glb, GlbSummary, GltfError};
+pub use materials::{transfer_materials, MaterialError, VertexMaterial};
+
+#[derive(Debug, Error)]
+pub enum ExportError {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Reconstruction(#[from] ReconstructionError),
+    #[error(transparent)]
+    Cameras(#[from] CaptureError),
+    #[error(transparent)]
+    Meshing(#[from] MeshingError),
+    #[error(transparent)]
+    EnvMap(#[from] EnvMapError),
+    #[error(transparent)]
+    Image(#[from] ImageError),
+    #[error(transparent)]
+    Materials(#[from] MaterialError),
+    #[error("model.glb: {0}")]
+    Gltf(#[from] GltfError),
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+/// Files copied as they are from the model folder (when present).
+const COPIED: [&str; 5] = [
+    "surfels.ply",
+    ENVMAP_EXR_FILE,
+    "config.json",
+    "metrics.json",
+    "model.json",
+];
+
+/// The mesh written into the export folder.
+pub const MESH_FILE: &str = "mesh.ply";
+
+/// The mesh with its learned materials, glTF 2.0 binary.
+pub const GLB_FILE: &str = "model.glb";
+
+/// The lat-long environment map (copied from the model folder, written when it lacks one).
+pub const ENVMAP_EXR_FILE: &str = "envmap.exr";
+
+/// Kinds rendered for every test camera (DoLP and AoLP: the polarization the model predicts).
+const RENDERED: [&str; 5] = ["s0", "normal", "albedo", "dolp", "aolp"];
+
+/// Writes `mesh` (extracted from `model`) with the model's materials on its vertices as a glTF
+/// binary at `path`.
+pub fn write_model_glb(
+    model: &Model,
+    mesh: &TriangleMesh,
+    path: &Path,
+) -> Result<GlbSummary, ExportError> {
+    let points: Vec<DVec3> = mesh
+        .vertices
+        .iter()
+        .map(|v| DVec3::from_array(*v))
+        .collect();
+    let vertex_materials =
+        materials::transfer_materials(&points, &materials::surfel_list(&model.surfels))?;
+    let summary = gltf::write_glb(path, mesh, &vertex_materials, model.world_up()?)?;
+    tracing::info!(
+        vertices = summary.vertices,
+        triangles = summary.triangles,
+        ior = summary.ior,
+        bytes = summary.bytes,
+        "glTF written"
+    );
+    Ok(summary)
+}
+
+/// Writes the deliverables of `model_dir` into `out_dir` (created if needed); returns the files.
+pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportError> {
+    let _span = tracing::info_span!("export", model = %model_dir.display()).entered();
+    let io = |path: &Path| {
+        let path = path.to_owned();
+        move |source| ExportError::Io { path, source }
+    };
+    let model = Model::load(model_dir)?;
+    std::fs::create_dir_all(out_dir).map_err(io(out_dir))?;
+    let mut written = Vec::new();
+    for name in COPIED {
+        let from = model_dir.join(name);
+        if from.exists() {
+            let to = out_dir.join(name);
+            std::fs::copy(&from, &to).map_err(io(&from))?;
+            written.push(to);
+        }
+    }
+    let mesh = mesh_extraction::extract_from_model(&model, DEFAULT_MESH_RESOLUTION)?;
+    let mesh_path = out_dir.join(MESH_FILE);
+    mesh_extraction::write_mesh(&mesh, &mesh_path)?;
+    written.push(mesh_path);
+    let glb_path = out_dir.join(GLB_FILE);
+    write_model_glb(&model, &mesh, &glb_path)?;
+    written.push(glb_path);
+    let up = model.world_up()?;
+    let latlong = model.envmap.to_latlong(LATLONG_HEIGHT, up);
+    let exr_path = out_dir.join(ENVMAP_EXR_FILE);
+    if !model_dir.join(ENVMAP_EXR_FILE).exists() {
+        image_io::write_exr(&exr_path, &latlong)?;
+        written.push(exr_path);
+    }
+    written.extend(envmap_files::write_envmap_files(out_dir, &latlong)?);
+    let cameras_file = model_dir.join(TEST_CAMERAS_FILE);
+    if cameras_file.exists() {
+        let cameras = capture::load_cameras(&cameras_file)?;
+        let reconstruction = Reconstruction::new(model)?;
+        written.extend(reconstruction.render_to_dir(
+            &cameras,
+            &out_dir.join("renders"),
+            &RENDERED,
+        )?);
+    }
+    Ok(written)
+}

@@ -1,0 +1,190 @@
+//! `phygap export` end to end on a small model (a sphere of surfels under a coloured sky): the
+//! folder gains `model.glb`, `envmap.hdr` and `envmap.png`; the GLB holds the mesh with the
+//! surfels' materials, the HDR the model's lat-long map; and the GLB passes the Khronos glTF
+//! validator (npm package `gltf-validator`, pinned in `tests/gltf-validator/`) with no error and no
+//! warning.
+//!
+//! The validator needs Node.js and `npm ci --prefix tests/gltf-validator` (`.ci/run` does it). Without
+//! them the validator step prints a notice and the test ends after the Rust-side checks, except
+//! under `CI=true`, where that fails.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use glam::DVec3;
+use phygap::core::config::{BackendChoice, TrainConfig};
+use phygap::core::envmap::{texel_dir, CubeMap, NUM_FACES};
+use phygap::core::mesh::cameras_around;
+use phygap::formats::image_io::read_image;
+use phygap::io::model::{Model, ModelInfo};
+use phygap::testing::{running_in_ci, sphere_surfels};
+use serde_json::Value;
+
+const SIZE: usize = 16;
+
+/// A unit sphere of surfels (albedo (0.6, 0.4, 0.2), roughness 0.3, IoR 1.5) under a sky that is
+/// brighter above, with 12 training cameras around it.
+fn sphere_model() -> Model {
+    let radiance: Vec<f64> = (0..NUM_FACES * SIZE * SIZE)
+        .flat_map(|t| {
+            let (face, rest) = (t / (SIZE * SIZE), t % (SIZE * SIZE));
+            let d = texel_dir(SIZE, face, rest % SIZE, rest / SIZE);
+            let v = 0.3 + 1.2 * d.z.max(0.0) + 0.6 * (d.x + 1.0);
+            [v, 0.8 * v, 0.5 * v + 0.2]
+        })
+        .collect();
+    let surfels = sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.6, 0.4, 0.2));
+    let train_cameras = cameras_around(12, 4.0, 48, 40f64.to_radians())
+        .into_iter()
+        .enumerate()
+        .map(|(i, c)| (format!("{i:03}"), c))
+        .collect();
+    Model {
+        info: ModelInfo {
+            mode: phygap::core::config::Mode::Full,
+            world_up: [0.0, 0.0, 1.0],
+            polarizer_angles_deg: BTreeMap::new(),
+            iterations: 100,
+            train_seconds: 0.0,
+            num_surfels: surfels.len(),
+            backend: "cpu".into(),
+        },
+        config: TrainConfig {
+            iterations: 100,
+            envmap_resolution: SIZE as u32,
+            backend: BackendChoice::Cpu,
+            gridmap: false,
+            ..TrainConfig::default()
+        },
+        surfels,
+        envmap: CubeMap::from_radiance(SIZE, &radiance).unwrap(),
+        train_cameras,
+    }
+}
+
+/// The validator script, or `None` (after a notice) where Node.js or the package is missing.
+fn validator_script() -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/gltf-validator");
+    let node = Command::new("node")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    let package = dir
+        .join("node_modules/gltf-validator/package.json")
+        .is_file();
+    if node && package {
+        return Some(dir.join("validate.mjs"));
+    }
+    let message = if node {
+        "the gltf-validator package is not installed (npm ci --prefix tests/gltf-validator)"
+    } else {
+        "Node.js is not installed"
+    };
+    assert!(!running_in_ci(), "CI=true but {message}");
+    println!("skipping the glTF validator: {message}");
+    None
+}
+
+/// The validator's report on `file`.
+fn validate(script: &Path, file: &Path) -> Value {
+    let output = Command::new("node")
+        .arg(script)
+        .arg(file)
+        .output()
+        .expect("node runs");
+    assert!(
+        output.status.success(),
+        "the validator did not run: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    serde_json::from_slice(&output.stdout).expect("the validator prints its report as JSON")
+}
+
+#[test]
+fn export_writes_a_glb_that_the_khronos_validator_accepts() {
+    let dir = tempfile::tempdir().unwrap();
+    let model_dir = dir.path().join("model");
+    let model = sphere_model();
+    model.save(&model_dir).unwrap();
+    let out = dir.path().join("export");
+    let started = std::time::Instant::now();
+    let files = phygap::pipeline::export::export(&model_dir, &out).unwrap();
+    println!("export: {:.1} s", started.elapsed().as_secs_f64());
+    for name in [
+        "model.glb",
+        "mesh.ply",
+        "envmap.exr",
+        "envmap.hdr",
+        "envmap.png",
+    ] {
+        assert!(files.contains(&out.join(name)), "{name} in {files:?}");
+    }
+
+    // The HDR and the PNG are the model's lat-long map (512 × 256).
+    let (exr, _) = read_image(&out.join("envmap.exr")).unwrap();
+    let (hdr, _) = read_image(&out.join("envmap.hdr")).unwrap();
+    assert_eq!((hdr.width, hdr.height, hdr.channels), (512, 256, 3));
+    let worst = exr
+        .data
+        .chunks_exact(3)
+        .zip(hdr.data.chunks_exact(3))
+        .map(|(a, b)| {
+            let largest = a.iter().copied().fold(0.0, f32::max);
+            (0..3)
+                .map(|c| (a[c] - b[c]).abs() / largest)
+                .fold(0.0, f32::max)
+        })
+        .fold(0.0, f32::max);
+    assert!(worst < 0.01, "HDR vs EXR: {worst}");
+    let (png, _) = read_image(&out.join("envmap.png")).unwrap();
+    assert_eq!((png.width, png.height), (512, 256));
+
+    // The GLB: its materials are the surfels' (uniform here), on the extracted mesh.
+    let glb = std::fs::read(out.join("model.glb")).unwrap();
+    assert_eq!(&glb[..4], b"glTF");
+    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let json: Value = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
+    let ior = json["materials"][0]["extensions"]["KHR_materials_ior"]["ior"]
+        .as_f64()
+        .unwrap();
+    assert!((ior - 1.5).abs() < 1e-6, "{ior}");
+    let mesh = phygap::core::mesh::TriangleMesh::read_ply(&out.join("mesh.ply")).unwrap();
+    assert_eq!(json["accessors"][1]["count"], mesh.vertices.len());
+    let radius = json["accessors"][1]["max"][0].as_f64().unwrap();
+    assert!(
+        (radius - 1.0).abs() < 0.05,
+        "the unit sphere's extent: {radius}"
+    );
+    println!(
+        "model.glb: {} bytes, {} vertices, IoR {ior}",
+        glb.len(),
+        mesh.vertices.len()
+    );
+
+    let Some(script) = validator_script() else {
+        return;
+    };
+    let report = validate(&script, &out.join("model.glb"));
+    let issues = &report["issues"];
+    println!(
+        "glTF validator {}: {} errors, {} warnings, {} infos, {} hints; {}",
+        report["validatorVersion"],
+        issues["numErrors"],
+        issues["numWarnings"],
+        issues["numInfos"],
+        issues["numHints"],
+        report["info"]
+    );
+    for message in issues["messages"].as_array().into_iter().flatten() {
+        println!("  {message}");
+    }
+    assert_eq!(issues["numErrors"], 0, "{issues}");
+    assert_eq!(issues["numWarnings"], 0, "{issues}");
+    let used = &report["info"]["extensionsUsed"];
+    assert!(
+        used.as_array()
+            .is_some_and(|e| e.iter().any(|e| e == "KHR_materials_ior")),
+        "{used}"
+    );
+}

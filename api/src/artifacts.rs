@@ -36,10 +36,14 @@ fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> ArtifactError + '_ {
 }
 
 /// One stored file of a job.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, utoipa::ToSchema)]
+#[schema(as = Artifact)]
 pub struct ArtifactInfo {
+    /// Its path among the job's artifacts, e.g. `renders/s0/000.png`.
     pub name: String,
+    /// Bytes.
     pub size: u64,
+    /// The content type a download answers with.
     pub content_type: &'static str,
 }
 

@@ -28,6 +28,36 @@ pub enum Command {
     /// Run queued jobs of a shared database and object store, without the API (its listener
     /// answers only /healthz and /metrics), until SIGTERM or Ctrl-C.
     Worker(ServeArgs),
+    /// Print the OpenAPI document of the HTTP API (YAML, derived from the code), or write it to
+    /// `--out` (`--out api/openapi.yaml` regenerates the committed copy).
+    Openapi(OpenapiArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct OpenapiArgs {
+    /// File to write (default: standard output).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+impl OpenapiArgs {
+    /// Writes the document where the flags say.
+    pub fn run(&self) -> anyhow::Result<()> {
+        use anyhow::Context;
+        let yaml = crate::openapi::spec_yaml().context("rendering the OpenAPI document")?;
+        match &self.out {
+            Some(path) => {
+                std::fs::write(path, yaml).with_context(|| format!("writing {}", path.display()))?
+            }
+            None => {
+                use std::io::Write;
+                std::io::stdout()
+                    .write_all(yaml.as_bytes())
+                    .context("writing the OpenAPI document")?;
+            }
+        }
+        Ok(())
+    }
 }
 
 #[derive(Debug, Args)]

@@ -1,19 +1,25 @@
 //! `phygap-api serve` (API and workers) or `phygap-api worker` (workers alone): runs the
 //! reconstruction service until SIGTERM or Ctrl-C, then checkpoints and requeues running jobs
-//! before exiting.
+//! before exiting. `phygap-api openapi` prints the API's OpenAPI document.
 
 use anyhow::Context;
 use clap::Parser;
 use phygap_api::cli::{Cli, Command};
 
 fn main() -> anyhow::Result<()> {
+    let config = match Cli::parse().command {
+        Command::Serve(args) => args.to_config(),
+        Command::Worker(args) => args.to_worker_config(),
+        Command::Openapi(args) => return args.run(),
+    }
+    .context("reading the configuration")?;
     phygap::pipeline::allocator::keep_large_buffers();
     tokio::runtime::Runtime::new()
         .context("starting the async runtime")?
-        .block_on(serve())
+        .block_on(serve(config))
 }
 
-async fn serve() -> anyhow::Result<()> {
+async fn serve(config: phygap_api::ServiceConfig) -> anyhow::Result<()> {
     tracing_subscriber::fmt()
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env()
@@ -21,11 +27,6 @@ async fn serve() -> anyhow::Result<()> {
         )
         .with_writer(std::io::stderr)
         .init();
-    let config = match Cli::parse().command {
-        Command::Serve(args) => args.to_config(),
-        Command::Worker(args) => args.to_worker_config(),
-    }
-    .context("reading the configuration")?;
     let pipeline = phygap_api::pipeline::production_pipeline();
     let server = phygap_api::Server::start(config, pipeline)
         .await

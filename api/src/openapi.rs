@@ -1,11 +1,148 @@
-//! The OpenAPI 3.1 description of the service: `api/openapi.yaml`, compiled in and served as JSON.
+//! The OpenAPI 3.1 description of the service, derived from the code: each handler's
+//! `#[utoipa::path]` (its responses and their bodies) and the `ToSchema` derives on the serde
+//! types it answers with, so a schema cannot drift from what is sent. Which operations need the
+//! bearer token comes from [`crate::routes::route_table`], the table the router is built from.
+//! Served at `/v1/openapi.json`; `phygap-api openapi --out api/openapi.yaml` writes the
+//! committed copy (a test keeps the two equal).
 
-/// The YAML source.
-pub const SPEC_YAML: &str = include_str!("../openapi.yaml");
+use axum::http::Method;
+use utoipa::openapi::path::Operation;
+use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement, SecurityScheme};
+use utoipa::openapi::{ContentBuilder, Ref, ResponseBuilder};
+use utoipa::{Modify, OpenApi, ToSchema};
 
-/// The spec as JSON.
-pub fn spec_json() -> Result<serde_json::Value, serde_yaml::Error> {
-    serde_yaml::from_str(SPEC_YAML)
+use crate::routes::{artifacts, captures, health, jobs, viewer};
+
+/// The command that rewrites the committed document.
+pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out api/openapi.yaml";
+
+/// The document.
+#[derive(OpenApi)]
+#[openapi(
+    info(
+        title = "phygap reconstruction service",
+        description = "Upload a polarization capture (.zip or .tar holding transforms.json and \
+            its images), train a relightable model of it as a queued job, follow its progress, \
+            download its artifacts, and relight it under new environment maps. Every error is \
+            `{\"error\": {\"code\", \"message\"}}`.\n\nWhen the server runs with tokens, every \
+            /v1 route and /metrics need `Authorization: Bearer <token>`: the admin token \
+            (--token) sees every capture and job, an account token (--tokens-file) only its own \
+            account's (others' answer 404)."
+    ),
+    servers((url = "http://127.0.0.1:8080", description = "`phygap-api serve` on its default --bind")),
+    paths(
+        health::healthz,
+        health::metrics,
+        health::openapi,
+        captures::upload,
+        captures::show,
+        captures::remove,
+        jobs::submit,
+        jobs::list,
+        jobs::show,
+        jobs::remove,
+        jobs::events,
+        jobs::cancel,
+        jobs::relight,
+        artifacts::list,
+        artifacts::download,
+        viewer::material_mesh,
+        viewer::ground_truth,
+    ),
+    modifiers(&Access),
+    tags(
+        (name = "service", description = "Health, metrics and this document"),
+        (name = "captures", description = "Capture archives: upload, look up, delete"),
+        (name = "jobs", description = "Training and relight jobs: queue, follow, cancel, delete"),
+        (name = "artifacts", description = "What a job produced"),
+        (name = "viewer", description = "What the web viewer shows beside the artifacts"),
+    )
+)]
+pub struct ApiDoc;
+
+/// Raw bytes (a file), as a request or response body.
+#[derive(ToSchema)]
+#[allow(dead_code)] // Only its schema is used.
+#[schema(value_type = String, format = Binary)]
+pub struct Binary(Vec<u8>);
+
+/// The name of the bearer-token security scheme.
+const BEARER: &str = "bearer";
+
+/// Adds the bearer scheme and, from the route table, each operation's security: the bearer
+/// token (and its 401) where the router guards the route, none where it does not.
+struct Access;
+
+impl Modify for Access {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        openapi
+            .components
+            .get_or_insert_with(Default::default)
+            .add_security_scheme(
+                BEARER,
+                SecurityScheme::Http(HttpBuilder::new().scheme(HttpAuthScheme::Bearer).build()),
+            );
+        let unauthorized = ResponseBuilder::new()
+            .description(
+                "The service has tokens and the request has none or an unknown one \
+                 (unauthorized)",
+            )
+            .content(
+                "application/json",
+                ContentBuilder::new()
+                    .schema(Some(Ref::from_schema_name(crate::error::ErrorBody::name())))
+                    .build(),
+            )
+            .build();
+        for route in crate::routes::route_table(1) {
+            let path = openapi_path(route.path);
+            let Some(item) = openapi.paths.paths.get_mut(&path) else {
+                continue;
+            };
+            let Some(operation) = operation_mut(item, &route.method) else {
+                continue;
+            };
+            if route.protected {
+                operation.security =
+                    Some(vec![SecurityRequirement::new(BEARER, Vec::<String>::new())]);
+                operation
+                    .responses
+                    .responses
+                    .insert("401".into(), unauthorized.clone().into());
+            } else {
+                operation.security = Some(Vec::new());
+            }
+        }
+    }
+}
+
+fn operation_mut<'a>(
+    item: &'a mut utoipa::openapi::PathItem,
+    method: &Method,
+) -> Option<&'a mut Operation> {
+    match *method {
+        Method::GET => item.get.as_mut(),
+        Method::PUT => item.put.as_mut(),
+        Method::POST => item.post.as_mut(),
+        Method::DELETE => item.delete.as_mut(),
+        Method::PATCH => item.patch.as_mut(),
+        Method::HEAD => item.head.as_mut(),
+        Method::OPTIONS => item.options.as_mut(),
+        _ => None,
+    }
+}
+
+/// The document as JSON (what `/v1/openapi.json` answers).
+pub fn spec_json() -> Result<serde_json::Value, serde_json::Error> {
+    serde_json::to_value(ApiDoc::openapi())
+}
+
+/// The document as YAML, as committed in `api/openapi.yaml`.
+pub fn spec_yaml() -> Result<String, serde_yaml::Error> {
+    let body = serde_yaml::to_string(&ApiDoc::openapi())?;
+    Ok(format!(
+        "# Generated from the code by `{REGENERATE}`; do not edit.\n{body}"
+    ))
 }
 
 /// `(METHOD, path)` pairs the spec declares, path templates as written (`{id}`).

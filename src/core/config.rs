@@ -11,6 +11,7 @@ use thiserror::Error;
 
 /// Which measurement the photometric loss uses (METHOD.md §1).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[cfg_attr(feature = "openapi", derive(utoipa::ToSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Mode {
     /// Chosen from the capture: full if every training view has Stokes, partial if any has a
@@ -27,6 +28,7 @@ pub enum Mode {
 
 /// Compute backend.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[cfg_attr(feature = "openapi", derive(utoipa::ToSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum BackendChoice {
     /// A real GPU when one is found, else the fast host backend.
@@ -62,6 +64,7 @@ fn parse_switch(value: &str) -> Result<bool, String> {
 /// `--long-name` flag with the default as its default), so the CLI, the config file and the
 /// service's job `config` are one type.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, clap::Args)]
+#[cfg_attr(feature = "openapi", derive(utoipa::ToSchema), schema(default))]
 #[serde(default, deny_unknown_fields)]
 pub struct TrainConfig {
     /// Total optimization steps (one random training view each).

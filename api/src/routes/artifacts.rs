@@ -5,26 +5,64 @@ use axum::extract::{Path, State};
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::{Extension, Json};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use tokio_util::io::ReaderStream;
+use utoipa::{IntoParams, ToSchema};
 
 use crate::artifacts::ArtifactInfo;
 use crate::auth::Caller;
-use crate::error::ApiError;
-use crate::routes::jobs::load_job;
+use crate::error::{ApiError, ErrorBody};
+use crate::openapi::Binary;
+use crate::routes::jobs::{load_job, JobPath};
 use crate::AppState;
 
-#[derive(Serialize)]
+/// A job's artifacts.
+#[derive(Serialize, ToSchema)]
 pub struct ArtifactList {
     job_id: String,
+    /// Sorted by name; empty until the job has succeeded.
     artifacts: Vec<ArtifactInfo>,
 }
 
+/// One artifact of a job.
+#[derive(Deserialize, IntoParams)]
+#[into_params(parameter_in = Path)]
+pub struct ArtifactPath {
+    /// The job's id (`job_…`).
+    id: String,
+    /// Artifact name as listed, e.g. surfels.ply, envmap.exr, metrics.json, mesh.ply,
+    /// renders/s0/000.png (may contain /).
+    name: String,
+}
+
+/// The header a download reads (by hand, from the request's header map).
+#[derive(IntoParams)]
+#[into_params(parameter_in = Header)]
+#[allow(dead_code)] // Only its parameter's schema is used.
+pub struct RangeHeader {
+    /// One byte range: bytes=A-B, bytes=A-, bytes=-N (others are ignored: the whole file is
+    /// sent).
+    #[param(rename = "Range", value_type = String, required = false)]
+    range: Option<String>,
+}
+
 /// `GET /v1/jobs/{id}/artifacts`.
+#[utoipa::path(
+    get,
+    path = "/v1/jobs/{id}/artifacts",
+    tag = "artifacts",
+    operation_id = "list_artifacts",
+    summary = "A job's artifacts",
+    params(JobPath),
+    responses(
+        (status = OK, description = "Its artifacts (none until it has succeeded)", body = ArtifactList),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+    )
+)]
 pub async fn list(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(JobPath { id }): Path<JobPath>,
 ) -> Result<Json<ArtifactList>, ApiError> {
     load_job(&state, &caller, &id).await?;
     let artifacts = state.artifacts.list(&id).await?;
@@ -85,10 +123,28 @@ fn header_value(text: &str) -> Result<HeaderValue, ApiError> {
 }
 
 /// `GET /v1/jobs/{id}/artifacts/{name}`.
+#[utoipa::path(
+    get,
+    path = "/v1/jobs/{id}/artifacts/{name}",
+    tag = "artifacts",
+    operation_id = "download_artifact",
+    summary = "Download an artifact",
+    description = "The file with its own content type (the `content_type` of its listing), \
+        whole or one byte range.",
+    params(ArtifactPath, RangeHeader),
+    responses(
+        (status = OK, description = "The file", body = Binary, content_type = "*/*"),
+        (status = PARTIAL_CONTENT, description = "The requested range", body = Binary, content_type = "*/*"),
+        (status = NOT_FOUND, description = "No such job the token may see, or no such artifact \
+            (not_found)", body = ErrorBody),
+        (status = RANGE_NOT_SATISFIABLE, description = "The range starts past the end \
+            (range_not_satisfiable)", body = ErrorBody),
+    )
+)]
 pub async fn download(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path((id, name)): Path<(String, String)>,
+    Path(ArtifactPath { id, name }): Path<ArtifactPath>,
     headers: HeaderMap,
 ) -> Result<Response, ApiError> {
     load_job(&state, &caller, &id).await?;

@@ -10,26 +10,43 @@ use axum::http::{header, HeaderMap, StatusCode};
 use axum::Extension;
 use axum::Json;
 use futures_util::StreamExt;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use tokio::io::AsyncWriteExt;
+use utoipa::{IntoParams, ToSchema};
 
 use crate::archive::ArchiveError;
 use crate::auth::Caller;
-use crate::error::ApiError;
+use crate::error::{ApiError, ErrorBody};
+use crate::openapi::Binary;
 use crate::pipeline::PipelineError;
 use crate::queue::new_id;
 use crate::store::{now_ms, rfc3339, CaptureRecord, DeleteOutcome};
 use crate::AppState;
 
-/// A capture as answered.
-#[derive(Serialize)]
+/// An accepted capture.
+#[derive(Serialize, ToSchema)]
+#[schema(as = Capture)]
 pub struct CaptureView {
+    /// `cap_…`; what a job's `capture_id` names.
     id: String,
+    /// Views in transforms.json.
     views: usize,
+    /// The kinds of measurement its views hold: `stokes`, `polarizer4`, `partial`, `rgb`.
     kinds: Vec<String>,
+    /// What the loader noticed but accepted (e.g. views without masks).
     warnings: Vec<String>,
+    /// Size of the uploaded archive.
     size_bytes: u64,
+    #[schema(format = DateTime)]
     created_at: String,
+}
+
+/// The capture a route is about.
+#[derive(Deserialize, IntoParams)]
+#[into_params(parameter_in = Path)]
+pub struct CapturePath {
+    /// The capture's id (`cap_…`).
+    id: String,
 }
 
 impl From<CaptureRecord> for CaptureView {
@@ -229,6 +246,34 @@ async fn ingest(
 }
 
 /// `POST /v1/captures`: body is a `.zip` or `.tar` archive.
+#[utoipa::path(
+    post,
+    path = "/v1/captures",
+    tag = "captures",
+    operation_id = "upload_capture",
+    summary = "Upload a capture archive",
+    description = "The body, a .zip or .tar holding transforms.json and its images, is streamed \
+        to disk, extracted safely and validated by the capture loader. A rejected upload leaves \
+        nothing behind.",
+    request_body(content(
+        (Binary = "application/zip"),
+        (Binary = "application/x-tar"),
+        (Binary = "application/octet-stream"),
+    )),
+    responses(
+        (status = CREATED, description = "The accepted capture", body = CaptureView),
+        (status = BAD_REQUEST, description = "An empty body (empty_upload), a corrupt archive \
+            (invalid_archive), an unsafe entry: traversal, absolute path, link \
+            (unsafe_archive), or an interrupted upload (upload_interrupted)", body = ErrorBody),
+        (status = PAYLOAD_TOO_LARGE, description = "An upload over --max-upload-mb, or an \
+            archive expanding past the limits: decompression bomb, too many entries \
+            (payload_too_large)", body = ErrorBody),
+        (status = UNSUPPORTED_MEDIA_TYPE, description = "Not a .zip or .tar archive \
+            (unsupported_archive)", body = ErrorBody),
+        (status = UNPROCESSABLE_ENTITY, description = "The capture breaks the capture format \
+            (invalid_capture)", body = ErrorBody),
+    )
+)]
 pub async fn upload(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
@@ -278,20 +323,45 @@ pub async fn visible_capture(
 }
 
 /// `GET /v1/captures/{id}`.
+#[utoipa::path(
+    get,
+    path = "/v1/captures/{id}",
+    tag = "captures",
+    operation_id = "get_capture",
+    summary = "A capture",
+    params(CapturePath),
+    responses(
+        (status = OK, description = "The capture", body = CaptureView),
+        (status = NOT_FOUND, description = "No such capture the token may see (not_found)", body = ErrorBody),
+    )
+)]
 pub async fn show(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(CapturePath { id }): Path<CapturePath>,
 ) -> Result<Json<CaptureView>, ApiError> {
     Ok(Json(visible_capture(&state, &caller, &id).await?.into()))
 }
 
 /// `DELETE /v1/captures/{id}`: 204 once its record and files are gone; 409 while a queued or
 /// running job uses it.
+#[utoipa::path(
+    delete,
+    path = "/v1/captures/{id}",
+    tag = "captures",
+    operation_id = "delete_capture",
+    summary = "Delete a capture and its files",
+    params(CapturePath),
+    responses(
+        (status = NO_CONTENT, description = "Deleted"),
+        (status = NOT_FOUND, description = "No such capture the token may see (not_found)", body = ErrorBody),
+        (status = CONFLICT, description = "A queued or running job uses it (capture_in_use)", body = ErrorBody),
+    )
+)]
 pub async fn remove(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(CapturePath { id }): Path<CapturePath>,
 ) -> Result<StatusCode, ApiError> {
     visible_capture(&state, &caller, &id).await?;
     match crate::purge::delete_capture(&state, &id).await? {

@@ -5,12 +5,40 @@ use axum::http::{header, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::{Extension, Json};
 
+use serde::Serialize;
+use utoipa::ToSchema;
+
 use crate::auth::Caller;
-use crate::error::ApiError;
+use crate::error::{ApiError, ErrorBody};
 use crate::AppState;
 
+/// The answer of `GET /healthz`.
+#[derive(Serialize, ToSchema)]
+pub struct Health {
+    status: HealthStatus,
+}
+
+/// Always `ok` (a service that is not answers 503 with an error body).
+#[derive(Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum HealthStatus {
+    Ok,
+}
+
 /// `GET /healthz`: 200 while the store answers.
-pub async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::Value>, ApiError> {
+#[utoipa::path(
+    get,
+    path = "/healthz",
+    tag = "service",
+    operation_id = "healthz",
+    summary = "Liveness",
+    description = "200 while the job store answers; no token needed.",
+    responses(
+        (status = OK, description = "Up", body = Health),
+        (status = SERVICE_UNAVAILABLE, description = "The job store is not answering (unavailable)", body = ErrorBody),
+    )
+)]
+pub async fn healthz(State(state): State<AppState>) -> Result<Json<Health>, ApiError> {
     state.store.ping().await.map_err(|e| {
         tracing::error!(error = %e, "health check: store unavailable");
         ApiError::new(
@@ -19,11 +47,25 @@ pub async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::V
             "the job store is not answering",
         )
     })?;
-    Ok(Json(serde_json::json!({ "status": "ok" })))
+    Ok(Json(Health {
+        status: HealthStatus::Ok,
+    }))
 }
 
 /// `GET /metrics`: Prometheus text format; with tokens, for the admin token only (the counts
 /// span every account).
+#[utoipa::path(
+    get,
+    path = "/metrics",
+    tag = "service",
+    operation_id = "metrics",
+    summary = "Prometheus metrics",
+    description = "Prometheus text format. When the service has tokens, the admin token only: the counts span every account.",
+    responses(
+        (status = OK, description = "Prometheus text format 0.0.4", body = String, content_type = "text/plain"),
+        (status = FORBIDDEN, description = "An account token (forbidden): the metrics span every account", body = ErrorBody),
+    )
+)]
 pub async fn metrics(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
@@ -47,7 +89,17 @@ pub async fn metrics(
         .into_response())
 }
 
-/// `GET /v1/openapi.json`.
+/// `GET /v1/openapi.json`: the document [`crate::openapi::ApiDoc`] derives from the handlers.
+#[utoipa::path(
+    get,
+    path = "/v1/openapi.json",
+    tag = "service",
+    operation_id = "openapi",
+    summary = "This document, as JSON",
+    responses(
+        (status = OK, description = "The OpenAPI 3.1 document (api/openapi.yaml as JSON)", body = Object),
+    )
+)]
 pub async fn openapi() -> Result<Json<serde_json::Value>, ApiError> {
     crate::openapi::spec_json()
         .map(Json)

@@ -16,9 +16,10 @@ use futures_util::Stream;
 use phygap::core::config::TrainConfig;
 use serde::{Deserialize, Serialize};
 use tokio::io::AsyncWriteExt;
+use utoipa::{IntoParams, ToSchema};
 
 use crate::auth::Caller;
-use crate::error::ApiError;
+use crate::error::{ApiError, ErrorBody};
 use crate::queue::{new_id, CancelReason};
 use crate::routes::captures::TempDir;
 use crate::store::{
@@ -26,40 +27,87 @@ use crate::store::{
 };
 use crate::AppState;
 
-/// A job as answered (and as sent on its event stream).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// A job and its progress, as answered (and as each event of its event stream carries it).
+#[derive(Clone, Debug, PartialEq, Serialize, ToSchema)]
+#[schema(as = Job)]
 pub struct JobView {
+    /// `job_…`.
     id: String,
-    kind: &'static str,
+    kind: JobKind,
+    /// The capture it trains on (a relight job: its model's).
     capture_id: String,
+    /// Relight jobs only: the training job whose model it relights.
     #[serde(skip_serializing_if = "Option::is_none")]
     parent_job_id: Option<String>,
     state: JobState,
+    /// Stage of the run: starting, geometry, material, polar, exporting, relighting, done.
+    #[schema(required = true)]
     stage: Option<String>,
+    /// Steps done.
     iteration: u32,
+    /// Steps of the whole run (0 for relight jobs).
     iterations: u32,
+    /// The latest loss terms by name (`total` among them).
     losses: BTreeMap<String, f64>,
+    /// PSNR of the latest test-view evaluation, dB.
+    #[schema(required = true)]
     test_psnr: Option<f64>,
+    /// Estimated seconds until the run ends.
+    #[schema(required = true)]
     eta_seconds: Option<f64>,
+    /// Why it failed.
+    #[schema(required = true)]
     error: Option<String>,
+    #[schema(format = DateTime)]
     created_at: String,
+    #[schema(format = DateTime, required = true)]
     started_at: Option<String>,
+    #[schema(format = DateTime, required = true)]
     finished_at: Option<String>,
+    /// Times a worker started it (more than 1: it was resumed).
     attempts: u32,
+    /// The iteration the latest run resumed from after a restart.
+    #[schema(required = true)]
     resumed_from: Option<u32>,
+    /// Compute backend of the latest run, what it runs on and how its steps run, e.g.
+    /// "fast (16 threads, f32 AVX2); steps on the host" or "gpu on NVIDIA H100 …; whole steps on
+    /// the device"; null before training starts.
+    #[schema(required = true)]
     backend: Option<String>,
+    /// The latest problem the run worked around, with its iteration (e.g. a GridMap mesh that
+    /// could not be extracted, the previous one kept); null if none.
+    #[schema(required = true)]
     warning: Option<String>,
+    /// A cancel was asked for and the running job has not stopped yet.
     cancel_requested: bool,
+    /// Training jobs only: the training configuration, defaults filled in.
     #[serde(skip_serializing_if = "Option::is_none")]
     config: Option<TrainConfig>,
 }
 
+/// What a job does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum JobKind {
+    /// Trains a model of a capture.
+    Train,
+    /// Renders a trained model under an uploaded environment map.
+    Relight,
+}
+
+/// The job a route is about.
+#[derive(Deserialize, IntoParams)]
+#[into_params(parameter_in = Path)]
+pub struct JobPath {
+    /// The job's id (`job_…`).
+    pub id: String,
+}
+
 impl From<JobRecord> for JobView {
     fn from(job: JobRecord) -> Self {
-        let kind = job.spec.kind();
-        let (parent_job_id, config) = match job.spec {
-            JobSpec::Train { config } => (None, Some(config)),
-            JobSpec::Relight { parent_job_id, .. } => (Some(parent_job_id), None),
+        let (kind, parent_job_id, config) = match job.spec {
+            JobSpec::Train { config } => (JobKind::Train, None, Some(config)),
+            JobSpec::Relight { parent_job_id, .. } => (JobKind::Relight, Some(parent_job_id), None),
         };
         JobView {
             id: job.id,
@@ -87,12 +135,32 @@ impl From<JobRecord> for JobView {
     }
 }
 
-#[derive(Deserialize)]
+/// The body of `POST /v1/jobs`.
+#[derive(Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-struct SubmitRequest {
+pub struct SubmitRequest {
+    /// The capture to train on.
     capture_id: String,
+    /// The training configuration (`phygap config` prints the defaults; keys are the `phygap
+    /// train` flag names in snake_case; unknown keys are errors); missing keys take their
+    /// defaults.
     #[serde(default)]
     config: TrainConfig,
+}
+
+/// Longest `Idempotency-Key` (utoipa takes the document's `maxLength` as a literal only, on
+/// [`SubmitHeaders`]; `api/tests/openapi.rs` sends a key of that length and one longer).
+const MAX_IDEMPOTENCY_KEY: usize = 255;
+
+/// The headers `POST /v1/jobs` reads (by hand, from the request's header map).
+#[derive(IntoParams)]
+#[into_params(parameter_in = Header)]
+#[allow(dead_code)] // Only its parameters' schemas are used.
+pub struct SubmitHeaders {
+    /// A retried submit with the same key and body returns the same job (200); with another
+    /// body, 422 idempotency_key_reused. Keys are scoped to the token's account.
+    #[param(rename = "Idempotency-Key", value_type = String, required = false, max_length = 255)]
+    idempotency_key: Option<String>,
 }
 
 fn idempotency_key(headers: &HeaderMap) -> Result<Option<String>, ApiError> {
@@ -102,7 +170,7 @@ fn idempotency_key(headers: &HeaderMap) -> Result<Option<String>, ApiError> {
     let key = value
         .to_str()
         .ok()
-        .filter(|k| !k.is_empty() && k.len() <= 255)
+        .filter(|k| !k.is_empty() && k.len() <= MAX_IDEMPOTENCY_KEY)
         .ok_or_else(|| {
             ApiError::bad_request(
                 "invalid_idempotency_key",
@@ -125,6 +193,27 @@ pub async fn load_job(state: &AppState, caller: &Caller, id: &str) -> Result<Job
 
 /// `POST /v1/jobs` with `{capture_id, config}`: 201 with the new job, or 200 with the job an
 /// earlier request with the same `Idempotency-Key` created.
+#[utoipa::path(
+    post,
+    path = "/v1/jobs",
+    tag = "jobs",
+    operation_id = "submit_job",
+    summary = "Queue a training job",
+    params(SubmitHeaders),
+    request_body = SubmitRequest,
+    responses(
+        (status = CREATED, description = "Queued", body = JobView),
+        (status = OK, description = "The job an earlier request with this Idempotency-Key \
+            created", body = JobView),
+        (status = BAD_REQUEST, description = "A body that is not JSON (invalid_json) or cannot \
+            be read (invalid_body), or an Idempotency-Key that is not 1 to 255 visible ASCII \
+            characters (invalid_idempotency_key)", body = ErrorBody),
+        (status = UNPROCESSABLE_ENTITY, description = "Unknown or missing request fields \
+            (invalid_request), an invalid config (invalid_config), an unknown capture \
+            (unknown_capture), a reused idempotency key (idempotency_key_reused)",
+            body = ErrorBody),
+    )
+)]
 pub async fn submit(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
@@ -190,24 +279,50 @@ pub async fn submit(
     Ok((status, Json(record.into())))
 }
 
-#[derive(Deserialize)]
+/// Jobs answered by default.
+const DEFAULT_LIST_LIMIT: usize = 100;
+/// Most jobs answered.
+const MAX_LIST_LIMIT: usize = 1000;
+
+/// The query of `GET /v1/jobs`.
+#[derive(Deserialize, IntoParams)]
+#[into_params(parameter_in = Query)]
 pub struct ListQuery {
+    /// Most jobs to answer, newest first: 100 when absent, 1 to 1000 (others are clamped).
+    #[param(default = json!(DEFAULT_LIST_LIMIT))]
     limit: Option<usize>,
 }
 
-#[derive(Serialize)]
+/// Jobs, newest first.
+#[derive(Serialize, ToSchema)]
 pub struct JobList {
     jobs: Vec<JobView>,
 }
 
 /// `GET /v1/jobs?limit=N`: newest first (default 100, at most 1000).
+#[utoipa::path(
+    get,
+    path = "/v1/jobs",
+    tag = "jobs",
+    operation_id = "list_jobs",
+    summary = "Jobs, newest first",
+    description = "The token's account's jobs (the admin token: every job).",
+    params(ListQuery),
+    responses(
+        (status = OK, description = "Jobs", body = JobList),
+        (status = BAD_REQUEST, description = "A query that does not parse (invalid_query)", body = ErrorBody),
+    )
+)]
 pub async fn list(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
     query: Result<Query<ListQuery>, axum::extract::rejection::QueryRejection>,
 ) -> Result<Json<JobList>, ApiError> {
     let Query(query) = query.map_err(|e| ApiError::bad_request("invalid_query", e.body_text()))?;
-    let limit = query.limit.unwrap_or(100).clamp(1, 1000);
+    let limit = query
+        .limit
+        .unwrap_or(DEFAULT_LIST_LIMIT)
+        .clamp(1, MAX_LIST_LIMIT);
     let jobs = state.store.list_jobs(limit, caller.account()).await?;
     Ok(Json(JobList {
         jobs: jobs.into_iter().map(JobView::from).collect(),
@@ -215,10 +330,22 @@ pub async fn list(
 }
 
 /// `GET /v1/jobs/{id}`.
+#[utoipa::path(
+    get,
+    path = "/v1/jobs/{id}",
+    tag = "jobs",
+    operation_id = "get_job",
+    summary = "A job and its progress",
+    params(JobPath),
+    responses(
+        (status = OK, description = "The job", body = JobView),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+    )
+)]
 pub async fn show(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(JobPath { id }): Path<JobPath>,
 ) -> Result<Json<JobView>, ApiError> {
     Ok(Json(load_job(&state, &caller, &id).await?.into()))
 }
@@ -226,10 +353,25 @@ pub async fn show(
 /// `POST /v1/jobs/{id}/cancel`: a queued job is cancelled at once; a running one checkpoints and
 /// ends `cancelled` shortly after (its `cancel_requested` is true meanwhile). Finished jobs are
 /// left as they are (409).
+#[utoipa::path(
+    post,
+    path = "/v1/jobs/{id}/cancel",
+    tag = "jobs",
+    operation_id = "cancel_job",
+    summary = "Cancel a job",
+    description = "A queued job is cancelled at once; a running one checkpoints and ends \
+        `cancelled` shortly after (`cancel_requested` is true meanwhile).",
+    params(JobPath),
+    responses(
+        (status = OK, description = "The job after the request", body = JobView),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+        (status = CONFLICT, description = "The job already ended (job_finished)", body = ErrorBody),
+    )
+)]
 pub async fn cancel(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(JobPath { id }): Path<JobPath>,
 ) -> Result<Json<JobView>, ApiError> {
     let before = load_job(&state, &caller, &id).await?;
     if before.state.is_terminal() {
@@ -312,10 +454,24 @@ async fn next_event(mut cursor: EventsCursor) -> Option<(Result<Event, Infallibl
 /// `GET /v1/jobs/{id}/events`: server-sent events, each `data` a job object as in
 /// `GET /v1/jobs/{id}`; event `progress` while it runs, `end` once it finished (then the stream
 /// closes).
+#[utoipa::path(
+    get,
+    path = "/v1/jobs/{id}/events",
+    tag = "jobs",
+    operation_id = "job_events",
+    summary = "Progress as server-sent events",
+    description = "Each event's data is a Job object (the `Job` schema). Event `progress` while \
+        the job is queued or running, `end` once it has ended; the stream then closes.",
+    params(JobPath),
+    responses(
+        (status = OK, description = "Event stream", body = String, content_type = "text/event-stream"),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+    )
+)]
 pub async fn events(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(JobPath { id }): Path<JobPath>,
 ) -> Result<Sse<impl Stream<Item = Result<Event, Infallible>>>, ApiError> {
     load_job(&state, &caller, &id).await?;
     let cursor = EventsCursor {
@@ -369,13 +525,54 @@ fn envmap_extension(head: &[u8]) -> Option<&'static str> {
     }
 }
 
+/// The form of `POST /v1/jobs/{id}/relight` (the handler reads it field by field).
+#[derive(ToSchema)]
+#[allow(dead_code)] // Read by hand from the multipart stream; this is its schema.
+pub struct RelightForm {
+    /// A lat-long environment map, OpenEXR or Radiance HDR.
+    #[schema(value_type = String, format = Binary)]
+    envmap: Vec<u8>,
+    /// transforms.json-style cameras to render from (default: the capture's test views).
+    #[schema(value_type = Option<String>, format = Binary)]
+    cameras: Option<Vec<u8>>,
+    /// Rotation of the map about the world up axis, in degrees (default 0).
+    rotate_deg: Option<f64>,
+}
+
 /// `POST /v1/jobs/{id}/relight`: multipart form with `envmap` (an `.exr` or `.hdr` file),
 /// optional `cameras` (a transforms.json-style file) and optional `rotate_deg`. Queues a relight
 /// job of its own (201).
+#[utoipa::path(
+    post,
+    path = "/v1/jobs/{id}/relight",
+    tag = "jobs",
+    operation_id = "relight_job",
+    summary = "Relight a trained model",
+    description = "Queues a relight job of the succeeded training job `id`; its artifacts are \
+        the renders under the uploaded environment map.",
+    params(JobPath),
+    request_body(content = RelightForm, content_type = "multipart/form-data"),
+    responses(
+        (status = CREATED, description = "The relight job, queued", body = JobView),
+        (status = BAD_REQUEST, description = "A malformed form (invalid_multipart) or a field \
+            other than envmap, cameras, rotate_deg (unknown_field)", body = ErrorBody),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+        (status = CONFLICT, description = "The job is not a succeeded training job \
+            (model_not_ready)", body = ErrorBody),
+        (status = PAYLOAD_TOO_LARGE, description = "An upload over --max-upload-mb \
+            (payload_too_large)", body = ErrorBody),
+        (status = UNSUPPORTED_MEDIA_TYPE, description = "Not multipart (invalid_multipart), or \
+            a map that is neither OpenEXR nor Radiance HDR (unsupported_envmap)",
+            body = ErrorBody),
+        (status = UNPROCESSABLE_ENTITY, description = "No envmap field (missing_envmap), \
+            cameras that are not JSON (invalid_cameras), a rotate_deg that is not a finite \
+            number (invalid_rotate_deg)", body = ErrorBody),
+    )
+)]
 pub async fn relight(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(parent_id): Path<String>,
+    Path(JobPath { id: parent_id }): Path<JobPath>,
     headers: HeaderMap,
     multipart: Result<Multipart, axum::extract::multipart::MultipartRejection>,
 ) -> Result<(StatusCode, Json<JobView>), ApiError> {
@@ -506,10 +703,27 @@ const DELETE_WAIT: Duration = Duration::from_secs(60);
 /// artifacts) are gone. A queued job is cancelled first, a running one is cancelled and awaited
 /// (409 `job_stopping` if it has not stopped within a minute); 409 `job_in_use` while a queued or
 /// running relight job uses its model.
+#[utoipa::path(
+    delete,
+    path = "/v1/jobs/{id}",
+    tag = "jobs",
+    operation_id = "delete_job",
+    summary = "Delete a job and everything stored for it",
+    description = "Removes the job's record, checkpoints, inputs and artifacts. A queued job is \
+        cancelled first; a running one is cancelled and awaited for up to a minute.",
+    params(JobPath),
+    responses(
+        (status = NO_CONTENT, description = "Deleted"),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+        (status = CONFLICT, description = "A queued or running relight job uses its model \
+            (job_in_use), or it was cancelled and is still stopping (job_stopping)",
+            body = ErrorBody),
+    )
+)]
 pub async fn remove(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(JobPath { id }): Path<JobPath>,
 ) -> Result<StatusCode, ApiError> {
     let job = load_job(&state, &caller, &id).await?;
     if !job.state.is_terminal() {

@@ -1,11 +1,12 @@
-//! The HTTP surface. [`route_table`] is the single list of routes: the router is built from it and
-//! the OpenAPI test compares it with `api/openapi.yaml`, so the two cannot drift apart.
+//! The HTTP surface. [`route_table`] is the single list of routes: the router is built from it,
+//! the OpenAPI document ([`crate::openapi`]) takes from it which routes need the token, and a test
+//! compares it with the document's operations, so the two cannot drift apart.
 
-mod artifacts;
-mod captures;
-mod health;
-mod jobs;
-mod viewer;
+pub(crate) mod artifacts;
+pub(crate) mod captures;
+pub(crate) mod health;
+pub(crate) mod jobs;
+pub(crate) mod viewer;
 
 use axum::extract::DefaultBodyLimit;
 use axum::http::Method;

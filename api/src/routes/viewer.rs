@@ -12,12 +12,16 @@ use axum::response::Response;
 use axum::Extension;
 use phygap::formats::image_io::Image;
 use phygap::io::capture::{Measurement, View};
+use serde::Deserialize;
 use tokio::io::AsyncReadExt;
+use utoipa::IntoParams;
 
 use crate::auth::Caller;
-use crate::error::ApiError;
+use crate::error::{ApiError, ErrorBody};
 use crate::material_mesh::{material_mesh_ply, MaterialMeshError};
+use crate::openapi::Binary;
 use crate::queue::new_id;
+use crate::routes::jobs::JobPath;
 use crate::store::{JobRecord, JobSpec, JobState};
 use crate::AppState;
 
@@ -64,10 +68,30 @@ fn file_response(bytes: Vec<u8>, content_type: &'static str) -> Response {
 
 /// `GET /v1/jobs/{id}/material-mesh`: `mesh.ply` with each vertex's albedo (sRGB colour),
 /// roughness and IoR taken from the surfels around it.
+#[utoipa::path(
+    get,
+    path = "/v1/jobs/{id}/material-mesh",
+    tag = "viewer",
+    operation_id = "material_mesh",
+    summary = "The extracted mesh with the learned materials on its vertices",
+    description = "mesh.ply with, per vertex, the opacity- and distance-weighted mean of the \
+        albedo, roughness and IoR of its 8 nearest opaque surfels: a binary little-endian PLY \
+        with vertex x y z (nx ny nz), red green blue (albedo, sRGB 8-bit), roughness \
+        (perceptual, as three.js and glTF) and ior (float32), and the mesh's faces.",
+    params(JobPath),
+    responses(
+        (status = OK, description = "The mesh", body = Binary, content_type = "application/x-ply"),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+        (status = CONFLICT, description = "The job is not a succeeded training job \
+            (model_not_ready)", body = ErrorBody),
+        (status = UNPROCESSABLE_ENTITY, description = "Its mesh or surfels cannot be read \
+            (invalid_model)", body = ErrorBody),
+    )
+)]
 pub async fn material_mesh(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path(id): Path<String>,
+    Path(JobPath { id }): Path<JobPath>,
 ) -> Result<Response, ApiError> {
     trained_job(&state, &caller, &id).await?;
     let mesh = artifact_bytes(&state, &id, "mesh.ply").await?;
@@ -84,6 +108,33 @@ pub async fn material_mesh(
 
 /// The kinds of captured image [`ground_truth`] answers.
 const GROUND_TRUTH_KINDS: [&str; 3] = ["s0", "dolp", "aolp"];
+
+/// A captured test view.
+#[derive(Deserialize, IntoParams)]
+#[into_params(parameter_in = Path)]
+pub struct GroundTruthPath {
+    /// A succeeded training job's id (`job_…`).
+    id: String,
+    /// Which image: S0, DoLP or AoLP.
+    #[param(value_type = GroundTruthKind, inline)]
+    kind: String,
+    /// The test view as NNN.png, the same name as the job's renders/{kind}/NNN.png.
+    view: String,
+}
+
+/// The schema of [`GroundTruthPath::kind`]: one of [`GROUND_TRUTH_KINDS`].
+struct GroundTruthKind;
+
+impl utoipa::PartialSchema for GroundTruthKind {
+    fn schema() -> utoipa::openapi::RefOr<utoipa::openapi::Schema> {
+        utoipa::openapi::ObjectBuilder::new()
+            .schema_type(utoipa::openapi::Type::String)
+            .enum_values(Some(GROUND_TRUTH_KINDS))
+            .into()
+    }
+}
+
+impl utoipa::ToSchema for GroundTruthKind {}
 
 /// The 8-bit preview of one captured view, as `renders/{kind}` shows the model's: S0 with the
 /// mask applied (sRGB), DoLP in [0, 1], AoLP mapped from [0, π) to [0, 1], both masked.
@@ -139,10 +190,29 @@ fn captured_preview(view: &View, kind: &str) -> Result<(Image, bool), String> {
 
 /// `GET /v1/jobs/{id}/ground-truth/{kind}/{view}`: the captured image of test view `NNN.png`
 /// (the one `renders/{kind}/NNN.png` renders), `kind` one of s0, dolp, aolp.
+#[utoipa::path(
+    get,
+    path = "/v1/jobs/{id}/ground-truth/{kind}/{view}",
+    tag = "viewer",
+    operation_id = "ground_truth",
+    summary = "A captured test view as the renders show it (8-bit PNG)",
+    description = "The capture's image of the test view the render renders, in the same 8-bit \
+        form so the two compare side by side: S0 with the mask applied (sRGB), DoLP in [0, 1], \
+        AoLP from [0, π) mapped to [0, 1]. DoLP and AoLP need a full Stokes view.",
+    params(GroundTruthPath),
+    responses(
+        (status = OK, description = "The image", body = Binary, content_type = "image/png"),
+        (status = NOT_FOUND, description = "No such job the token may see, an unknown kind or \
+            view, a deleted capture, or a view without full Stokes for dolp or aolp (not_found)",
+            body = ErrorBody),
+        (status = CONFLICT, description = "The job is not a succeeded training job \
+            (model_not_ready)", body = ErrorBody),
+    )
+)]
 pub async fn ground_truth(
     State(state): State<AppState>,
     Extension(caller): Extension<Caller>,
-    Path((id, kind, view)): Path<(String, String, String)>,
+    Path(GroundTruthPath { id, kind, view }): Path<GroundTruthPath>,
 ) -> Result<Response, ApiError> {
     let job = trained_job(&state, &caller, &id).await?;
     if !GROUND_TRUTH_KINDS.contains(&kind.as_str()) {

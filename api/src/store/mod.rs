@@ -52,7 +52,7 @@ pub enum StoreError {
 
 /// Life cycle of a job: `queued → running → succeeded | failed | cancelled`; `running → queued`
 /// when interrupted by a shutdown or a crash.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, utoipa::ToSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum JobState {
     Queued,

@@ -24,10 +24,10 @@ struct TilePixel {
 fn tile_pixel(wg: vec3<u32>, lid: vec3<u32>, prm: Params) -> TilePixel {
     var tp: TilePixel;
     tp.x = wg.x * TILE + lid.x;
-    tp.y = (prm.band.x + wg.y) * TILE + lid.y;
-    tp.inside = tp.x < prm.dims.x && tp.y < prm.dims.y;
-    tp.pix = (tp.y - prm.band.z) * prm.dims.x + tp.x;
-    tp.range = ranges[wg.y * prm.dims.z + wg.x];
+    tp.y = (prm.band_tile_first + wg.y) * TILE + lid.y;
+    tp.inside = tp.x < prm.width && tp.y < prm.height;
+    tp.pix = (tp.y - prm.band_pixel_first) * prm.width + tp.x;
+    tp.range = ranges[wg.y * prm.tiles_x + wg.x];
     tp.centre = vec2<f32>(f32(tp.x) + 0.5, f32(tp.y) + 0.5);
     return tp;
 }

@@ -31,11 +31,26 @@ wgsl_mirror! {
     /// `ConvParams` of prefilter.wgsl.
     #[derive(Clone, Copy, Debug, Pod, Zeroable)]
     struct ConvParamsGpu = "ConvParams" {
-        grid: [u32; 4],
-        tables: [u32; 4],
-        kind: [u32; 4],
-        kernel: [f32; 4],
-        io: [u32; 4],
+        texels: u32,
+        first_texel: u32,
+        first_block: u32,
+        blocks: u32,
+        first_entry: u32,
+        first_threshold: u32,
+        first_normalizer: u32,
+        transposed: u32,
+        kernel_kind: u32,
+        pad0: u32,
+        pad1: u32,
+        pad2: u32,
+        kernel_param: f32,
+        cos_cut: f32,
+        pad3: f32,
+        pad4: f32,
+        src_first: u32,
+        dst_first: u32,
+        accumulate: u32,
+        pad5: u32,
     }
 }
 
@@ -43,8 +58,14 @@ wgsl_mirror! {
     /// `LevelParams` of prefilter.wgsl.
     #[derive(Clone, Copy, Debug, Pod, Zeroable)]
     struct LevelParamsGpu = "LevelParams" {
-        level: [u32; 4],
-        same: [u32; 4],
+        texels: u32,
+        face_size: u32,
+        src_first: u32,
+        dst_first: u32,
+        same_size: u32,
+        pad0: u32,
+        pad1: u32,
+        pad2: u32,
     }
 }
 
@@ -168,11 +189,18 @@ impl DevicePrefilter {
             let (kind, parameter) = kernel_code(table.kernel);
             let texels = grid.num_texels() as u32;
             let params = |transposed: u32| ConvParamsGpu {
-                grid: [texels, texel0, block0, grid.blocks.len() as u32],
-                tables: [entry0, threshold0, normalizer0, transposed],
-                kind: [kind, 0, 0, 0],
-                kernel: [parameter, table.cos_cut as f32, 0.0, 0.0],
-                io: [0; 4],
+                texels,
+                first_texel: texel0,
+                first_block: block0,
+                blocks: grid.blocks.len() as u32,
+                first_entry: entry0,
+                first_threshold: threshold0,
+                first_normalizer: normalizer0,
+                transposed,
+                kernel_kind: kind,
+                kernel_param: parameter,
+                cos_cut: table.cos_cut as f32,
+                ..ConvParamsGpu::zeroed()
             };
             (params(0), params(1), u64::from(texels))
         };
@@ -208,18 +236,10 @@ impl DevicePrefilter {
             .map(|(level, (mut forward, mut transposed, texels))| {
                 // Forward: pyramid level → light level; transposed: light gradient level →
                 // pyramid gradient level.
-                forward.io = [
-                    to_u32(pyramid_first[level]),
-                    to_u32(light_first[level]),
-                    0,
-                    0,
-                ];
-                transposed.io = [
-                    to_u32(light_first[level]),
-                    to_u32(pyramid_first[level]),
-                    0,
-                    0,
-                ];
+                forward.src_first = to_u32(pyramid_first[level]);
+                forward.dst_first = to_u32(light_first[level]);
+                transposed.src_first = to_u32(light_first[level]);
+                transposed.dst_first = to_u32(pyramid_first[level]);
                 Conv {
                     forward: uniform("prefilter level", bytemuck::bytes_of(&forward)),
                     transposed: uniform(
@@ -235,9 +255,12 @@ impl DevicePrefilter {
             .enumerate()
             .map(|(map, (mut forward, mut transposed, texels))| {
                 let light = irradiance_first + map as u64 * irradiance_values;
-                forward.io = [to_u32(pyramid_first[last]), to_u32(light), 0, 0];
+                forward.src_first = to_u32(pyramid_first[last]);
+                forward.dst_first = to_u32(light);
                 // The transposed irradiance adds into the coarsest level's gradient.
-                transposed.io = [to_u32(light), to_u32(pyramid_first[last]), 1, 0];
+                transposed.src_first = to_u32(light);
+                transposed.dst_first = to_u32(pyramid_first[last]);
+                transposed.accumulate = 1;
                 Conv {
                     forward: uniform("prefilter irradiance", bytemuck::bytes_of(&forward)),
                     transposed: uniform(
@@ -254,22 +277,20 @@ impl DevicePrefilter {
                 from_above: (l > 0).then(|| {
                     let same = u32::from(plan.grids[l].size == plan.grids[l - 1].size);
                     let down = LevelParamsGpu {
-                        level: [
-                            to_u32(level_texels[l]),
-                            plan.grids[l].size as u32,
-                            to_u32(pyramid_first[l - 1]),
-                            to_u32(pyramid_first[l]),
-                        ],
-                        same: [same, 0, 0, 0],
+                        texels: to_u32(level_texels[l]),
+                        face_size: plan.grids[l].size as u32,
+                        src_first: to_u32(pyramid_first[l - 1]),
+                        dst_first: to_u32(pyramid_first[l]),
+                        same_size: same,
+                        ..LevelParamsGpu::zeroed()
                     };
                     let up = LevelParamsGpu {
-                        level: [
-                            to_u32(level_texels[l - 1]),
-                            plan.grids[l - 1].size as u32,
-                            to_u32(pyramid_first[l]),
-                            to_u32(pyramid_first[l - 1]),
-                        ],
-                        same: [same, 0, 0, 0],
+                        texels: to_u32(level_texels[l - 1]),
+                        face_size: plan.grids[l - 1].size as u32,
+                        src_first: to_u32(pyramid_first[l]),
+                        dst_first: to_u32(pyramid_first[l - 1]),
+                        same_size: same,
+                        ..LevelParamsGpu::zeroed()
                     };
                     (
                         uniform("pyramid level", bytemuck::bytes_of(&down)),

@@ -114,12 +114,23 @@ wgsl_mirror! {
     /// `Params` of shaders/common.wgsl.
     #[derive(Clone, Copy, Debug, Pod, Zeroable)]
     pub(super) struct ParamsGpu = "Params" {
-        rot: [[f32; 4]; 3],
+        rot0: [f32; 4],
+        rot1: [f32; 4],
+        rot2: [f32; 4],
         trans: [f32; 4],
         origin: [f32; 4],
-        intr: [f32; 4],
-        dims: [u32; 4],
-        counts: [u32; 4],
+        fx: f32,
+        fy: f32,
+        cx: f32,
+        cy: f32,
+        width: u32,
+        height: u32,
+        tiles_x: u32,
+        tiles_y: u32,
+        surfels: u32,
+        pad0: u32,
+        pad1: u32,
+        lowpass: u32,
         near: f32,
         alpha_min: f32,
         alpha_max: f32,
@@ -127,8 +138,11 @@ wgsl_mirror! {
         lowpass_sigma_px: f32,
         inv_lowpass_sigma2: f32,
         normalize_alpha_min: f32,
-        pad0: f32,
-        band: [u32; 4],
+        pad2: f32,
+        band_tile_first: u32,
+        band_tile_end: u32,
+        band_pixel_first: u32,
+        band_pixel_rows: u32,
     }
 }
 
@@ -142,28 +156,30 @@ impl ParamsGpu {
         Self::new(camera, settings, surfels, band)
     }
 
+    /// The parameters of `band` of an image of `camera`.
     fn new(camera: &Camera, settings: &RasterSettings, surfels: u32, band: Band) -> Self {
         let (rot, trans) = camera.world_to_camera_opencv();
         let v4 = |v: glam::DVec3| [v.x as f32, v.y as f32, v.z as f32, 0.0];
         let sigma = settings.lowpass_sigma_px;
         let lowpass = sigma > 0.0;
         ParamsGpu {
-            rot: [v4(rot.x_axis), v4(rot.y_axis), v4(rot.z_axis)],
+            rot0: v4(rot.x_axis),
+            rot1: v4(rot.y_axis),
+            rot2: v4(rot.z_axis),
             trans: v4(trans),
             origin: v4(camera.origin()),
-            intr: [
-                camera.fx as f32,
-                camera.fy as f32,
-                camera.cx as f32,
-                camera.cy as f32,
-            ],
-            dims: [
-                camera.width,
-                camera.height,
-                camera.width.div_ceil(TILE),
-                camera.height.div_ceil(TILE),
-            ],
-            counts: [surfels, 0, 0, lowpass as u32],
+            fx: camera.fx as f32,
+            fy: camera.fy as f32,
+            cx: camera.cx as f32,
+            cy: camera.cy as f32,
+            width: camera.width,
+            height: camera.height,
+            tiles_x: camera.width.div_ceil(TILE),
+            tiles_y: camera.height.div_ceil(TILE),
+            surfels,
+            pad0: 0,
+            pad1: 0,
+            lowpass: lowpass as u32,
             near: settings.near as f32,
             alpha_min: settings.alpha_min as f32,
             alpha_max: settings.alpha_max as f32,
@@ -175,13 +191,11 @@ impl ParamsGpu {
                 0.0
             },
             normalize_alpha_min: settings.normalize_alpha_min as f32,
-            pad0: 0.0,
-            band: [
-                band.first,
-                band.end,
-                band.first * TILE,
-                band.pixel_rows(camera.height),
-            ],
+            pad2: 0.0,
+            band_tile_first: band.first,
+            band_tile_end: band.end,
+            band_pixel_first: band.first * TILE,
+            band_pixel_rows: band.pixel_rows(camera.height),
         }
     }
 }
@@ -270,7 +284,8 @@ wgsl_mirror! {
     struct RadixPassGpu = "RadixPass" {
         shift: u32,
         word: u32,
-        unused: [u32; 2],
+        pad0: u32,
+        pad1: u32,
     }
 }
 
@@ -635,13 +650,12 @@ impl GpuBackend {
     /// counts are the band's), bins and sorts the band's entries and rasterizes its tiles.
     fn forward_band(&self, frame: &Frame, band: Band) -> Result<BandOutcome, RasterError> {
         let device = self.device.wgpu();
-        let queue = self.device.queue();
         let (camera, settings) = (frame.camera, frame.settings);
         let (raw_buf, proj_buf) = (frame.raw, frame.proj);
         let n = frame.surfels as usize;
         let pixels = u64::from(camera.width) * u64::from(band.pixel_rows(camera.height));
         let tiles = camera.width.div_ceil(TILE) * band.tile_rows();
-        let mut params = ParamsGpu::new(camera, settings, frame.surfels, band);
+        let params = ParamsGpu::new(camera, settings, frame.surfels, band);
         let params_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("params"),
             contents: bytemuck::bytes_of(&params),
@@ -694,8 +708,6 @@ impl GpuBackend {
                 })
                 .collect()
         };
-        params.counts[1] = total as u32;
-        queue.write_buffer(&params_buf, 0, bytemuck::bytes_of(&params));
 
         let count_buf = self
             .device
@@ -860,7 +872,8 @@ impl GpuBackend {
             .map(|(shift, word)| RadixPassGpu {
                 shift,
                 word,
-                unused: [0; 2],
+                pad0: 0,
+                pad1: 0,
             })
             .collect();
         if passes.is_empty() {

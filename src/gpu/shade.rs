@@ -125,15 +125,35 @@ wgsl_mirror! {
     /// `ShadeParams` of shade_common.wgsl.
     #[derive(Clone, Copy, Debug, Pod, Zeroable)]
     pub(super) struct ShadeParamsGpu = "ShadeParams" {
-        rot: [[f32; 4]; 3],
+        rot0: [f32; 4],
+        rot1: [f32; 4],
+        rot2: [f32; 4],
         up: [f32; 4],
-        intr: [f32; 4],
-        dims: [u32; 4],
-        light_layout: [u32; 4],
-        rough: [f32; 4],
+        fx: f32,
+        fy: f32,
+        cx: f32,
+        cy: f32,
+        width: u32,
+        first_pixel: u32,
+        pixels: u32,
+        lut_size: u32,
+        levels: u32,
+        irradiance_maps: u32,
+        irradiance_offset: u32,
+        lut_offset: u32,
+        min_roughness: f32,
+        max_roughness: f32,
+        ior_nodes: u32,
+        pad0: u32,
         iors: [[f32; 4]; 2],
-        grid_counts: [u32; 4],
-        grid_geometry: [f32; 4],
+        grid_anchors: u32,
+        grid_probe_values: u32,
+        grid_nodes: u32,
+        pad1: u32,
+        grid_ray_offset: f32,
+        pad2: f32,
+        pad3: f32,
+        pad4: f32,
     }
 }
 
@@ -165,9 +185,16 @@ pub(super) struct HostProbes {
     nodes: Vec<[f32; 4]>,
     links: Vec<[u32; 2]>,
     slots: Vec<[f32; 4]>,
-    /// `grid_counts` and `grid_geometry` of the kernels' parameters.
-    counts: [u32; 4],
-    geometry: [f32; 4],
+    grid: GridCounts,
+}
+
+/// GridMap's part of the kernels' parameters.
+#[derive(Clone, Copy, Debug)]
+struct GridCounts {
+    anchors: u32,
+    probe_values: u32,
+    nodes: u32,
+    ray_offset: f32,
 }
 
 /// Lays out every texel of `env` (levels, then irradiance maps) as f32.
@@ -225,20 +252,19 @@ impl HostProbes {
             .slots()
             .flat_map(|(corner_edges, normals)| corner_edges.into_iter().chain(normals).map(v4))
             .collect();
-        let counts = [
-            anchors.len() as u32,
-            texel_values_per_probe as u32,
-            (nodes.len() / 2) as u32,
-            0,
-        ];
+        let counts = GridCounts {
+            anchors: anchors.len() as u32,
+            probe_values: texel_values_per_probe as u32,
+            nodes: (nodes.len() / 2) as u32,
+            ray_offset: grid.ray_offset() as f32,
+        };
         Ok(HostProbes {
             values,
             anchors: anchors.iter().map(|&a| v4(a)).collect(),
             nodes,
             links,
             slots,
-            counts,
-            geometry: [grid.ray_offset() as f32, 0.0, 0.0, 0.0],
+            grid: counts,
         })
     }
 
@@ -252,8 +278,7 @@ impl HostProbes {
                 device.storage_init("GridMap BVH triangles", bytemuck::cast_slice(&self.slots))?,
                 device.storage_init("GridMap BVH links", bytemuck::cast_slice(&self.links))?,
             ],
-            counts: self.counts,
-            geometry: self.geometry,
+            grid: self.grid,
         })
     }
 }
@@ -261,8 +286,7 @@ impl HostProbes {
 /// GridMap's probes, anchors, BVH nodes, triangle slots and node links on the device.
 pub(super) struct ProbeBuffers {
     buffers: [wgpu::Buffer; 5],
-    counts: [u32; 4],
-    geometry: [f32; 4],
+    grid: GridCounts,
 }
 
 impl ProbeBuffers {
@@ -275,9 +299,12 @@ impl ProbeBuffers {
 impl ShadeParamsGpu {
     /// These parameters with GridMap's counts and ray offset.
     pub(super) fn with_probes(self, probes: &ProbeBuffers) -> Self {
+        let grid = probes.grid;
         ShadeParamsGpu {
-            grid_counts: probes.counts,
-            grid_geometry: probes.geometry,
+            grid_anchors: grid.anchors,
+            grid_probe_values: grid.probe_values,
+            grid_nodes: grid.nodes,
+            grid_ray_offset: grid.ray_offset,
             ..self
         }
     }
@@ -335,25 +362,16 @@ impl HostLight {
             iors[k / 4][k % 4] = ior as f32;
         }
         let params = ShadeParamsGpu {
-            rot: [[0.0; 4]; 3],
-            up: [0.0; 4],
-            intr: [0.0; 4],
-            dims: [0, 0, 0, lut.size as u32],
-            light_layout: [
-                levels as u32,
-                irradiance_maps as u32,
-                irradiance_first as u32,
-                lut_first as u32,
-            ],
-            rough: [
-                plan.spec.min_roughness as f32,
-                plan.spec.max_roughness as f32,
-                plan.irradiance_iors.len() as f32,
-                0.0,
-            ],
+            lut_size: lut.size as u32,
+            levels: levels as u32,
+            irradiance_maps: irradiance_maps as u32,
+            irradiance_offset: irradiance_first as u32,
+            lut_offset: lut_first as u32,
+            min_roughness: plan.spec.min_roughness as f32,
+            max_roughness: plan.spec.max_roughness as f32,
+            ior_nodes: plan.irradiance_iors.len() as u32,
             iors,
-            grid_counts: [0; 4],
-            grid_geometry: [0.0; 4],
+            ..ShadeParamsGpu::zeroed()
         };
         Ok(HostLight {
             values,
@@ -382,20 +400,17 @@ impl HostLight {
     ) -> ShadeParamsGpu {
         let r = camera.rotation_opencv();
         let params = ShadeParamsGpu {
-            rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
+            rot0: v4(r.x_axis),
+            rot1: v4(r.y_axis),
+            rot2: v4(r.z_axis),
             up: v4(camera.up()),
-            intr: [
-                camera.fx as f32,
-                camera.fy as f32,
-                camera.cx as f32,
-                camera.cy as f32,
-            ],
-            dims: [
-                camera.width,
-                first_pixel as u32,
-                pixels as u32,
-                self.params.dims[3],
-            ],
+            fx: camera.fx as f32,
+            fy: camera.fy as f32,
+            cx: camera.cx as f32,
+            cy: camera.cy as f32,
+            width: camera.width,
+            first_pixel: first_pixel as u32,
+            pixels: pixels as u32,
             ..self.params
         };
         match probes {

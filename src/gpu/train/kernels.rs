@@ -86,7 +86,7 @@ wgsl_mirror! {
         pub(super) n: u32,
         pub(super) capacity: u32,
         pub(super) max_groups: u32,
-        pub(super) unused: u32,
+        pub(super) pad0: u32,
     }
 }
 
@@ -94,15 +94,35 @@ wgsl_mirror! {
     /// `TrainParams` of train_params.wgsl.
     #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
     pub(super) struct TrainParamsGpu = "TrainParams" {
-        pub(super) dims: [u32; 4],
-        pub(super) mode: [u32; 4],
-        pub(super) theta: [f32; 4],
-        pub(super) weights: [f32; 4],
-        pub(super) weights2: [f32; 4],
-        pub(super) rot: [[f32; 4]; 3],
-        pub(super) origin: [f32; 4],
-        pub(super) intr: [f32; 4],
-        pub(super) gauss: [f32; 12],
+        width: u32,
+        height: u32,
+        pixels: u32,
+        groups: u32,
+        shaded: u32,
+        stokes_loss: u32,
+        has_theta: u32,
+        pad0: u32,
+        cos_2theta: f32,
+        sin_2theta: f32,
+        unpolarized_scale: f32,
+        lambda_extra_l1: f32,
+        lambda_ssim: f32,
+        lambda_stokes: f32,
+        lambda_mask: f32,
+        lambda_normal_smooth: f32,
+        lambda_depth_normal: f32,
+        normalize_alpha_min: f32,
+        shade_alpha_min: f32,
+        pad1: f32,
+        rot0: [f32; 4],
+        rot1: [f32; 4],
+        rot2: [f32; 4],
+        origin: [f32; 4],
+        fx: f32,
+        fy: f32,
+        cx: f32,
+        cy: f32,
+        gauss: [f32; 12],
     }
 }
 
@@ -127,44 +147,34 @@ impl TrainParamsGpu {
         let r = camera.rotation_opencv();
         let window = crate::core::loss::ssim::gaussian_kernel();
         TrainParamsGpu {
-            dims: [
-                frame.width,
-                frame.height,
-                frame.pixels as u32,
-                frame.groups(),
-            ],
-            mode: [
-                u32::from(plan.shaded),
-                u32::from(plan.stokes_loss),
-                u32::from(plan.theta.is_some()),
-                0,
-            ],
-            theta: [
-                cos2 as f32,
-                sin2 as f32,
-                plan.unpolarized_scale as f32,
-                when(plan.extra_l1, weights.lambda_stokes),
-            ],
-            weights: [
-                weights.lambda_ssim as f32,
-                when(plan.stokes_loss, weights.lambda_stokes),
-                weights.lambda_mask as f32,
-                when(plan.normal_smooth, weights.lambda_normal_smooth),
-            ],
-            weights2: [
-                when(plan.depth_normal, weights.lambda_depth_normal),
-                settings.normalize_alpha_min as f32,
-                SHADE_ALPHA_MIN as f32,
-                0.0,
-            ],
-            rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
+            width: frame.width,
+            height: frame.height,
+            pixels: frame.pixels as u32,
+            groups: frame.groups(),
+            shaded: u32::from(plan.shaded),
+            stokes_loss: u32::from(plan.stokes_loss),
+            has_theta: u32::from(plan.theta.is_some()),
+            pad0: 0,
+            cos_2theta: cos2 as f32,
+            sin_2theta: sin2 as f32,
+            unpolarized_scale: plan.unpolarized_scale as f32,
+            lambda_extra_l1: when(plan.extra_l1, weights.lambda_stokes),
+            lambda_ssim: weights.lambda_ssim as f32,
+            lambda_stokes: when(plan.stokes_loss, weights.lambda_stokes),
+            lambda_mask: weights.lambda_mask as f32,
+            lambda_normal_smooth: when(plan.normal_smooth, weights.lambda_normal_smooth),
+            lambda_depth_normal: when(plan.depth_normal, weights.lambda_depth_normal),
+            normalize_alpha_min: settings.normalize_alpha_min as f32,
+            shade_alpha_min: SHADE_ALPHA_MIN as f32,
+            pad1: 0.0,
+            rot0: v4(r.x_axis),
+            rot1: v4(r.y_axis),
+            rot2: v4(r.z_axis),
             origin: v4(camera.origin()),
-            intr: [
-                camera.fx as f32,
-                camera.fy as f32,
-                camera.cx as f32,
-                camera.cy as f32,
-            ],
+            fx: camera.fx as f32,
+            fy: camera.fy as f32,
+            cx: camera.cx as f32,
+            cy: camera.cy as f32,
             gauss: std::array::from_fn(|k| window.get(k).map_or(0.0, |&v| v as f32)),
         }
     }
@@ -175,8 +185,14 @@ wgsl_mirror! {
     /// whether it is trained.
     #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
     pub(super) struct AdamParamsGpu = "AdamParams" {
-        pub(super) counts: [u32; 4],
-        pub(super) betas: [f32; 4],
+        surfels: u32,
+        pad0: u32,
+        pad1: u32,
+        pad2: u32,
+        beta1: f32,
+        beta2: f32,
+        eps: f32,
+        ndc_scale: f32,
         pub(super) lr: [f32; 16],
         pub(super) bias1: [f32; 16],
         pub(super) bias2: [f32; 16],
@@ -196,13 +212,11 @@ impl AdamParamsGpu {
         steps: &[(&str, Option<u64>); 7],
     ) -> Self {
         let mut params = AdamParamsGpu {
-            counts: [surfels, 0, 0, 0],
-            betas: [
-                config.beta1 as f32,
-                config.beta2 as f32,
-                config.eps as f32,
-                (0.5 * f64::from(frame.width.max(frame.height))) as f32,
-            ],
+            surfels,
+            beta1: config.beta1 as f32,
+            beta2: config.beta2 as f32,
+            eps: config.eps as f32,
+            ndc_scale: (0.5 * f64::from(frame.width.max(frame.height))) as f32,
             ..AdamParamsGpu::default()
         };
         for ((&(_, slots), rate), &(_, taken)) in GROUP_SLOTS.iter().zip(rates).zip(steps) {
@@ -307,7 +321,7 @@ mod tests {
                 n,
                 capacity,
                 max_groups,
-                unused: 0,
+                pad0: 0,
             };
             let params = device.uniform("scan", bytemuck::bytes_of(&params));
             let blocks = device.workgroup_grid(n64.div_ceil(SCAN_BLOCK)).unwrap();

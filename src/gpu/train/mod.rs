@@ -475,7 +475,7 @@ impl<'g> DeviceTrainer<'g> {
             n: surfels,
             capacity: capacity.min(u64::from(u32::MAX)) as u32,
             max_groups: device.wgpu().limits().max_compute_workgroups_per_dimension,
-            unused: 0,
+            pad0: 0,
         };
         queue.write_buffer(&self.scan_params, 0, bytemuck::bytes_of(&scan));
         let adam = AdamParamsGpu::new(&self.adam, surfels, frame, &step.rates, &self.group_steps);

@@ -1,8 +1,8 @@
 // Shared definitions of the rasterizer kernels: the uniform parameters, the buffer layouts and the
 // per-pixel evaluation of one projected surfel (a port of `evaluate` in src/raster/cpu.rs, in f32).
-// No bindings and no entry points: every kernel file is compiled as `common.wgsl` + itself (the
-// rasterization kernels with tile_list.wgsl between), so the forward and backward passes evaluate
-// (and skip) exactly the same (pixel, surfel) pairs.
+// No bindings and no entry points: every rasterizer kernel is compiled with this file first (the
+// files of each kernel, in order, are listed in src/gpu/shaders.rs), so the forward and backward
+// passes evaluate (and skip) exactly the same (pixel, surfel) pairs.
 
 // Tile edge in pixels; the rasterization kernels run one 8×8 workgroup per tile.
 const TILE: u32 = 8u;

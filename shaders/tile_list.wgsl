@@ -1,6 +1,7 @@
 // Shared by the two rasterization kernels (rasterize.wgsl, rasterize_backward.wgsl, each compiled
-// as common.wgsl + this + itself): the bindings of the band's sorted tile lists and the pixel a
-// thread owns. Threading: one 8×8 workgroup per tile of the band, one thread per pixel.
+// after common.wgsl and this; src/gpu/shaders.rs): the bindings of the band's sorted tile lists
+// and the pixel a thread owns. Threading: one 8×8 workgroup per tile of the band, one thread per
+// pixel.
 
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> entries: array<vec4<u32>>;

@@ -1,7 +1,7 @@
 //! Rust mirrors of the WGSL uniform and storage structs, declared once with [`wgsl_mirror!`]:
 //! the macro writes the `#[repr(C)]` struct and a description of its fields (name, offset, size,
-//! scalar type), and each mirror's test (`assert_mirrors`) parses the WGSL that declares the
-//! struct with naga, lays it out as the device will, and checks that the Rust struct has the
+//! scalar type), and each mirror's test (`assert_mirrors`) parses the WGSL of a kernel that reads
+//! the struct with naga, lays it out as the device will, and checks that the Rust struct has the
 //! WGSL struct's size and, member by member, its names, offsets, sizes and scalar types. A field
 //! renamed, swapped, resized or retyped on one side fails there instead of in a parity test. The
 //! descriptions exist in test builds only.
@@ -93,13 +93,13 @@ macro_rules! wgsl_mirror {
 }
 pub(crate) use wgsl_mirror;
 
-/// Parses `sources` (concatenated, as a pipeline composes them) and asserts that `T` mirrors
+/// Parses the module of `kernel` (as its pipeline composes it) and asserts that `T` mirrors
 /// its WGSL struct: the same size, and field by field the WGSL members in order, each of the same
 /// name, offset, size and scalar type.
 #[cfg(test)]
-pub(crate) fn assert_mirrors<T: WgslMirror>(sources: &[&str]) {
+pub(crate) fn assert_mirrors<T: WgslMirror>(kernel: &super::shaders::KernelSpec) {
     use naga::{ScalarKind as Kind, TypeInner};
-    let source = sources.concat();
+    let source = kernel.source(super::shaders::Variant::ALL[0]);
     let module = naga::front::wgsl::parse_str(&source)
         .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
     let mut layouter = naga::proc::Layouter::default();
@@ -109,7 +109,7 @@ pub(crate) fn assert_mirrors<T: WgslMirror>(sources: &[&str]) {
         .types
         .iter()
         .find(|(_, t)| t.name.as_deref() == Some(name))
-        .unwrap_or_else(|| panic!("no struct `{name}` in the WGSL"));
+        .unwrap_or_else(|| panic!("no struct `{name}` in the WGSL of `{}`", kernel.name));
     let TypeInner::Struct { members, span } = &ty.inner else {
         panic!("`{name}` is not a struct");
     };

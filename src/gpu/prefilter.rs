@@ -13,13 +13,12 @@ use std::sync::Arc;
 
 use bytemuck::{Pod, Zeroable};
 
-use super::device::Device;
+use super::device::{Device, Kernel};
 use super::layout::wgsl_mirror;
+use super::shaders;
 use super::GpuError;
-use crate::core::envmap::prefilter::{ConvolutionTable, Kernel};
+use crate::core::envmap::prefilter::{ConvolutionTable, Kernel as Lobe};
 use crate::core::envmap::{CubeMap, PrefilterPlan};
-
-const PREFILTER: &str = include_str!("../../shaders/prefilter.wgsl");
 
 /// `NO_NORMALIZER` of prefilter.wgsl.
 const NO_NORMALIZER: u32 = u32::MAX;
@@ -70,21 +69,21 @@ wgsl_mirror! {
 }
 
 pub(super) struct PrefilterKernels {
-    convolve: wgpu::ComputePipeline,
-    activate: wgpu::ComputePipeline,
-    downsample: wgpu::ComputePipeline,
-    pyramid_transpose: wgpu::ComputePipeline,
-    raw_gradient: wgpu::ComputePipeline,
+    convolve: Kernel,
+    activate: Kernel,
+    downsample: Kernel,
+    pyramid_transpose: Kernel,
+    raw_gradient: Kernel,
 }
 
 impl PrefilterKernels {
     fn compile(device: &Device) -> Result<Self, GpuError> {
         device.compile_all(|d| PrefilterKernels {
-            convolve: d.pipeline("convolve", &[PREFILTER], "convolve"),
-            activate: d.pipeline("activate", &[PREFILTER], "activate"),
-            downsample: d.pipeline("downsample", &[PREFILTER], "downsample"),
-            pyramid_transpose: d.pipeline("pyramid_transpose", &[PREFILTER], "pyramid_transpose"),
-            raw_gradient: d.pipeline("raw_gradient", &[PREFILTER], "raw_gradient"),
+            convolve: d.kernel(&shaders::CONVOLVE),
+            activate: d.kernel(&shaders::ACTIVATE),
+            downsample: d.kernel(&shaders::DOWNSAMPLE),
+            pyramid_transpose: d.kernel(&shaders::PYRAMID_TRANSPOSE),
+            raw_gradient: d.kernel(&shaders::RAW_GRADIENT),
         })
     }
 }
@@ -126,11 +125,11 @@ pub(super) struct DevicePrefilter {
     raw_grad: wgpu::Buffer,
 }
 
-fn kernel_code(kernel: Kernel) -> (u32, f32) {
+fn kernel_code(kernel: Lobe) -> (u32, f32) {
     match kernel {
-        Kernel::Ggx { alpha2 } => (0, alpha2 as f32),
-        Kernel::Cosine => (1, 0.0),
-        Kernel::FresnelCosine { ior } => (2, ior as f32),
+        Lobe::Ggx { alpha2 } => (0, alpha2 as f32),
+        Lobe::Cosine => (1, 0.0),
+        Lobe::FresnelCosine { ior } => (2, ior as f32),
     }
 }
 
@@ -357,17 +356,17 @@ impl DevicePrefilter {
         let group = device.bind(
             &k.convolve,
             &[
-                (0, params),
-                (1, &self.dirs),
-                (2, &self.solid_angle),
-                (3, &self.blocks),
-                (14, &self.block_starts),
-                (4, &self.block_texels),
-                (5, &self.block_dirs),
-                (6, &self.thresholds),
-                (7, &self.normalizers),
-                (8, src),
-                (9, dst),
+                ("conv", params),
+                ("dirs", &self.dirs),
+                ("solid_angle", &self.solid_angle),
+                ("blocks", &self.blocks),
+                ("block_starts", &self.block_starts),
+                ("block_texels", &self.block_texels),
+                ("block_dirs", &self.block_dirs),
+                ("thresholds", &self.thresholds),
+                ("normalizers", &self.normalizers),
+                ("src", src),
+                ("dst", dst),
             ],
         );
         device.dispatch_1d(encoder, "prefilter", &k.convolve, &group, texels)
@@ -389,12 +388,19 @@ impl DevicePrefilter {
         let k = &self.kernels;
         let group = device.bind(
             &k.activate,
-            &[(11, &self.raw), (12, &self.pyramid), (13, &self.derivative)],
+            &[
+                ("raw", &self.raw),
+                ("pyramid", &self.pyramid),
+                ("derivative", &self.derivative),
+            ],
         );
         device.dispatch_1d(encoder, "activate", &k.activate, &group, raw.len() as u64)?;
         for level in &self.levels {
             if let Some((down, _)) = &level.from_above {
-                let group = device.bind(&k.downsample, &[(10, down), (12, &self.pyramid)]);
+                let group = device.bind(
+                    &k.downsample,
+                    &[("level", down), ("pyramid", &self.pyramid)],
+                );
                 device.dispatch_1d(
                     encoder,
                     "downsample",
@@ -438,8 +444,10 @@ impl DevicePrefilter {
         }
         for l in (1..self.levels.len()).rev() {
             if let Some((_, up)) = &self.levels[l].from_above {
-                let group =
-                    device.bind(&k.pyramid_transpose, &[(10, up), (12, &self.pyramid_grad)]);
+                let group = device.bind(
+                    &k.pyramid_transpose,
+                    &[("level", up), ("pyramid", &self.pyramid_grad)],
+                );
                 let values = self.levels[l - 1].texels * 3;
                 device.dispatch_1d(
                     encoder,
@@ -453,9 +461,9 @@ impl DevicePrefilter {
         let group = device.bind(
             &k.raw_gradient,
             &[
-                (9, &self.raw_grad),
-                (12, &self.pyramid_grad),
-                (13, &self.derivative),
+                ("dst", &self.raw_grad),
+                ("pyramid", &self.pyramid_grad),
+                ("derivative", &self.derivative),
             ],
         );
         device.dispatch_1d(
@@ -479,7 +487,7 @@ mod tests {
 
     #[test]
     fn prefilter_params_mirror_the_wgsl() {
-        crate::gpu::layout::assert_mirrors::<ConvParamsGpu>(&[PREFILTER]);
-        crate::gpu::layout::assert_mirrors::<LevelParamsGpu>(&[PREFILTER]);
+        crate::gpu::layout::assert_mirrors::<ConvParamsGpu>(&shaders::CONVOLVE);
+        crate::gpu::layout::assert_mirrors::<LevelParamsGpu>(&shaders::DOWNSAMPLE);
     }
 }

@@ -24,9 +24,10 @@ use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use tracing::info_span;
 
-use super::device::Device;
+use super::device::{Device, Kernel};
 use super::layout::wgsl_mirror;
 use super::raster::GpuBackend;
+use super::shaders;
 use super::GpuError;
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
@@ -35,14 +36,6 @@ use crate::core::gridmap::GridMap;
 use crate::core::shading::{
     GBufferGrad, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
 };
-
-const SHADE_COMMON: &str = include_str!("../../shaders/shade_common.wgsl");
-const SHADE: &str = include_str!("../../shaders/shade.wgsl");
-const SHADE_BACKWARD: &str = include_str!("../../shaders/shade_backward.wgsl");
-const LIGHT_GLOBAL: &str = include_str!("../../shaders/light_global.wgsl");
-const LIGHT_GLOBAL_BACKWARD: &str = include_str!("../../shaders/light_global_backward.wgsl");
-const LIGHT_GRIDMAP: &str = include_str!("../../shaders/light_gridmap.wgsl");
-const LIGHT_GRIDMAP_BACKWARD: &str = include_str!("../../shaders/light_gridmap_backward.wgsl");
 
 /// IoR nodes the kernels' parameters hold (`MAX_IORS`).
 const MAX_IORS: usize = 8;
@@ -57,8 +50,8 @@ pub(super) const GRAD_FLOATS: u64 = 8;
 
 /// The forward and backward kernels under one kind of light.
 pub(super) struct LightPipelines {
-    pub(super) forward: wgpu::ComputePipeline,
-    pub(super) backward: wgpu::ComputePipeline,
+    pub(super) forward: Kernel,
+    pub(super) backward: Kernel,
 }
 
 /// The shading kernels, per kind of light.
@@ -68,22 +61,17 @@ pub(super) struct ShadePipelines {
 }
 
 impl ShadePipelines {
-    /// Compiles the kernels; `atomics` is the `add_grad` source the backward pass adds the
-    /// light's gradient with.
-    pub(super) fn compile(device: &Device, atomics: &str) -> Result<Self, GpuError> {
-        device.compile_all(|d| {
-            let light = |name: &str, forward: &str, backward: &str| LightPipelines {
-                forward: d.pipeline(name, &[SHADE_COMMON, forward, SHADE], "shade"),
-                backward: d.pipeline(
-                    name,
-                    &[SHADE_COMMON, forward, SHADE_BACKWARD, backward, atomics],
-                    "shade_backward",
-                ),
-            };
-            ShadePipelines {
-                global: light("shade (global light)", LIGHT_GLOBAL, LIGHT_GLOBAL_BACKWARD),
-                gridmap: light("shade (GridMap)", LIGHT_GRIDMAP, LIGHT_GRIDMAP_BACKWARD),
-            }
+    /// Compiles the kernels.
+    pub(super) fn compile(device: &Device) -> Result<Self, GpuError> {
+        device.compile_all(|d| ShadePipelines {
+            global: LightPipelines {
+                forward: d.kernel(&shaders::SHADE_GLOBAL),
+                backward: d.kernel(&shaders::SHADE_BACKWARD_GLOBAL),
+            },
+            gridmap: LightPipelines {
+                forward: d.kernel(&shaders::SHADE_GRIDMAP),
+                backward: d.kernel(&shaders::SHADE_BACKWARD_GRIDMAP),
+            },
         })
     }
 
@@ -290,9 +278,11 @@ pub(super) struct ProbeBuffers {
 }
 
 impl ProbeBuffers {
-    /// The probes' bindings (9–13).
-    pub(super) fn bindings(&self) -> impl Iterator<Item = (u32, &wgpu::Buffer)> {
-        (9..).zip(self.buffers.iter())
+    /// The probes' bindings.
+    pub(super) fn bindings(&self) -> impl Iterator<Item = (&'static str, &wgpu::Buffer)> {
+        ["probes", "anchors", "bvh_nodes", "bvh_slots", "bvh_links"]
+            .into_iter()
+            .zip(self.buffers.iter())
     }
 }
 
@@ -460,9 +450,9 @@ impl LightBuffers {
         &self.values
     }
 
-    /// The light's bindings (1, 2).
-    pub(super) fn bindings(&self) -> [(u32, &wgpu::Buffer); 2] {
-        [(1, &self.values), (2, &self.tables)]
+    /// The light's bindings.
+    pub(super) fn bindings(&self) -> [(&'static str, &wgpu::Buffer); 2] {
+        [("light", &self.values), ("tables", &self.tables)]
     }
 }
 
@@ -527,7 +517,7 @@ impl GpuBackend {
             specular: Vec::with_capacity(pixels),
         };
         let device = self.device();
-        let pipeline = &self.shading().for_lighting(lighting).forward;
+        let kernel = &self.shading().for_lighting(lighting).forward;
         device.scoped("shade", || -> Result<(), GpuError> {
             let light_buffers = light.upload(device)?;
             let probe_buffers = probes.as_ref().map(|p| p.upload(device)).transpose()?;
@@ -544,12 +534,17 @@ impl GpuBackend {
                     n * STOKES_FLOATS * 4,
                     wgpu::BufferUsages::COPY_SRC,
                 )?;
-                let mut bindings = vec![(0, &params), (3, &inputs), (4, &active), (5, &stokes)];
+                let mut bindings = vec![
+                    ("params", &params),
+                    ("pixels", &inputs),
+                    ("active_pixels", &active),
+                    ("stokes", &stokes),
+                ];
                 bindings.extend(light_buffers.bindings());
                 bindings.extend(probe_buffers.iter().flat_map(ProbeBuffers::bindings));
-                let group = device.bind(pipeline, &bindings);
+                let group = device.bind(kernel, &bindings);
                 let mut encoder = device.wgpu().create_command_encoder(&Default::default());
-                device.dispatch_1d(&mut encoder, "shade", pipeline, &group, n)?;
+                device.dispatch_1d(&mut encoder, "shade", kernel, &group, n)?;
                 let data = device.submit_and_read(encoder, &[(&stokes, n * STOKES_FLOATS * 4)])?;
                 let values: Vec<f32> = bytemuck::pod_collect_to_vec(&data[0]);
                 for v in values.chunks_exact(STOKES_FLOATS as usize) {
@@ -590,7 +585,7 @@ impl GpuBackend {
             ior: Vec::with_capacity(pixels),
         };
         let device = self.device();
-        let pipeline = &self.shading().for_lighting(lighting).backward;
+        let kernel = &self.shading().for_lighting(lighting).backward;
         let sums = device.scoped("shade backward", || -> Result<Vec<f32>, GpuError> {
             let light_buffers = light.upload(device)?;
             let probe_buffers = probes.as_ref().map(|p| p.upload(device)).transpose()?;
@@ -617,17 +612,17 @@ impl GpuBackend {
                     wgpu::BufferUsages::COPY_SRC,
                 )?;
                 let mut bindings = vec![
-                    (0, &params),
-                    (3, &inputs),
-                    (4, &active),
-                    (5, &up),
-                    (6, &pixel_grads),
-                    (8, &sums),
+                    ("params", &params),
+                    ("pixels", &inputs),
+                    ("active_pixels", &active),
+                    ("upstream", &up),
+                    ("pixel_grads", &pixel_grads),
+                    ("grad_acc", &sums),
                 ];
                 bindings.extend(light_buffers.bindings());
                 bindings.extend(probe_buffers.iter().flat_map(ProbeBuffers::bindings));
-                let group = device.bind(pipeline, &bindings);
-                device.dispatch_1d(&mut encoder, "shade backward", pipeline, &group, n)?;
+                let group = device.bind(kernel, &bindings);
+                device.dispatch_1d(&mut encoder, "shade backward", kernel, &group, n)?;
                 let data =
                     device.submit_and_read(encoder, &[(&pixel_grads, n * GRAD_FLOATS * 4)])?;
                 encoder = device.wgpu().create_command_encoder(&Default::default());
@@ -653,7 +648,7 @@ mod tests {
 
     #[test]
     fn shade_params_mirror_the_wgsl() {
-        crate::gpu::layout::assert_mirrors::<ShadeParamsGpu>(&[SHADE_COMMON, LIGHT_GLOBAL, SHADE]);
+        crate::gpu::layout::assert_mirrors::<ShadeParamsGpu>(&shaders::SHADE_GLOBAL);
     }
 
     #[test]

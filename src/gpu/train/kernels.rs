@@ -1,5 +1,9 @@
-//! The resident trainer's own kernels (`shaders/scan.wgsl`, `train_*.wgsl`) and the uniform
-//! parameters they read. The rasterization and shading kernels are the [`super::GpuBackend`]'s.
+//! The resident trainer's own kernels (`shaders/scan.wgsl`, `train_*.wgsl`; what each is compiled
+//! from and binds is in [`crate::gpu::shaders`]) and the uniform parameters they read. The
+//! rasterization and shading kernels are the [`super::GpuBackend`]'s.
+//!
+//! Threading: the parameters are built on the calling thread; the kernels' threading is in their
+//! WGSL files.
 
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
@@ -10,16 +14,10 @@ use crate::core::loss::LossWeights;
 use crate::core::optim::AdamConfig;
 use crate::core::raster::RasterSettings;
 use crate::core::render::SHADE_ALPHA_MIN;
-use crate::gpu::device::Device;
+use crate::gpu::device::{Device, Kernel};
 use crate::gpu::layout::wgsl_mirror;
+use crate::gpu::shaders;
 use crate::gpu::GpuError;
-
-const SCAN: &str = include_str!("../../../shaders/scan.wgsl");
-const TRAIN_COMMON: &str = include_str!("../../../shaders/train_common.wgsl");
-const TRAIN_PARAMS: &str = include_str!("../../../shaders/train_params.wgsl");
-const TRAIN_PIXELS: &str = include_str!("../../../shaders/train_pixels.wgsl");
-const TRAIN_LOSS: &str = include_str!("../../../shaders/train_loss.wgsl");
-const TRAIN_UPDATE: &str = include_str!("../../../shaders/train_update.wgsl");
 
 /// Counts per block of `scan_blocks` (`SCAN_BLOCK`).
 pub(super) const SCAN_BLOCK: u64 = 1024;
@@ -35,46 +33,39 @@ pub(super) const SUM_FIRST: usize = 8;
 
 /// The resident trainer's kernels.
 pub(super) struct TrainKernels {
-    pub(super) scan_blocks: wgpu::ComputePipeline,
-    pub(super) scan_sums: wgpu::ComputePipeline,
-    pub(super) scan_add: wgpu::ComputePipeline,
-    pub(super) prepare_pixels: wgpu::ComputePipeline,
-    pub(super) depth_normal_backward: wgpu::ComputePipeline,
-    pub(super) assemble_upstream: wgpu::ComputePipeline,
-    pub(super) compose: wgpu::ComputePipeline,
-    pub(super) ssim_moments_h: wgpu::ComputePipeline,
-    pub(super) ssim_moments_v: wgpu::ComputePipeline,
-    pub(super) ssim_adjoint_h: wgpu::ComputePipeline,
-    pub(super) loss_chain: wgpu::ComputePipeline,
-    pub(super) reduce_losses: wgpu::ComputePipeline,
-    pub(super) adam: wgpu::ComputePipeline,
-    pub(super) accumulate_light: wgpu::ComputePipeline,
+    pub(super) scan_blocks: Kernel,
+    pub(super) scan_sums: Kernel,
+    pub(super) scan_add: Kernel,
+    pub(super) prepare_pixels: Kernel,
+    pub(super) depth_normal_backward: Kernel,
+    pub(super) assemble_upstream: Kernel,
+    pub(super) compose: Kernel,
+    pub(super) ssim_moments_h: Kernel,
+    pub(super) ssim_moments_v: Kernel,
+    pub(super) ssim_adjoint_h: Kernel,
+    pub(super) loss_chain: Kernel,
+    pub(super) reduce_losses: Kernel,
+    pub(super) adam: Kernel,
+    pub(super) accumulate_light: Kernel,
 }
 
 impl TrainKernels {
     pub(super) fn compile(device: &Device) -> Result<Self, GpuError> {
-        device.compile_all(|d| {
-            let pixels =
-                |entry: &str| d.pipeline(entry, &[TRAIN_COMMON, TRAIN_PARAMS, TRAIN_PIXELS], entry);
-            let loss =
-                |entry: &str| d.pipeline(entry, &[TRAIN_COMMON, TRAIN_PARAMS, TRAIN_LOSS], entry);
-            let update = |entry: &str| d.pipeline(entry, &[TRAIN_COMMON, TRAIN_UPDATE], entry);
-            TrainKernels {
-                scan_blocks: d.pipeline("scan_blocks", &[SCAN], "scan_blocks"),
-                scan_sums: d.pipeline("scan_sums", &[SCAN], "scan_sums"),
-                scan_add: d.pipeline("scan_add", &[SCAN], "scan_add"),
-                prepare_pixels: pixels("prepare_pixels"),
-                depth_normal_backward: pixels("depth_normal_backward"),
-                assemble_upstream: pixels("assemble_upstream"),
-                compose: loss("compose"),
-                ssim_moments_h: loss("ssim_moments_h"),
-                ssim_moments_v: loss("ssim_moments_v"),
-                ssim_adjoint_h: loss("ssim_adjoint_h"),
-                loss_chain: loss("loss_chain"),
-                reduce_losses: loss("reduce_losses"),
-                adam: update("adam"),
-                accumulate_light: update("accumulate_light"),
-            }
+        device.compile_all(|d| TrainKernels {
+            scan_blocks: d.kernel(&shaders::SCAN_BLOCKS),
+            scan_sums: d.kernel(&shaders::SCAN_SUMS),
+            scan_add: d.kernel(&shaders::SCAN_ADD),
+            prepare_pixels: d.kernel(&shaders::PREPARE_PIXELS),
+            depth_normal_backward: d.kernel(&shaders::DEPTH_NORMAL_BACKWARD),
+            assemble_upstream: d.kernel(&shaders::ASSEMBLE_UPSTREAM),
+            compose: d.kernel(&shaders::COMPOSE),
+            ssim_moments_h: d.kernel(&shaders::SSIM_MOMENTS_H),
+            ssim_moments_v: d.kernel(&shaders::SSIM_MOMENTS_V),
+            ssim_adjoint_h: d.kernel(&shaders::SSIM_ADJOINT_H),
+            loss_chain: d.kernel(&shaders::LOSS_CHAIN),
+            reduce_losses: d.kernel(&shaders::REDUCE_LOSSES),
+            adam: d.kernel(&shaders::ADAM),
+            accumulate_light: d.kernel(&shaders::ACCUMULATE_LIGHT),
         })
     }
 }
@@ -244,11 +235,7 @@ mod tests {
     use rand::{Rng, SeedableRng};
 
     /// A kernel, its bindings and its workgroup grid.
-    type Stage<'a> = (
-        &'a wgpu::ComputePipeline,
-        Vec<(u32, &'a wgpu::Buffer)>,
-        (u32, u32),
-    );
+    type Stage<'a> = (&'a Kernel, Vec<(&'a str, &'a wgpu::Buffer)>, (u32, u32));
 
     fn backend() -> Option<GpuBackend> {
         match GpuContext::new(AdapterRequirement::Any) {
@@ -267,9 +254,9 @@ mod tests {
     #[test]
     fn trainer_params_mirror_the_wgsl() {
         use crate::gpu::layout::assert_mirrors;
-        assert_mirrors::<ScanParamsGpu>(&[SCAN]);
-        assert_mirrors::<TrainParamsGpu>(&[TRAIN_COMMON, TRAIN_PARAMS, TRAIN_PIXELS]);
-        assert_mirrors::<AdamParamsGpu>(&[TRAIN_COMMON, TRAIN_UPDATE]);
+        assert_mirrors::<ScanParamsGpu>(&shaders::SCAN_BLOCKS);
+        assert_mirrors::<TrainParamsGpu>(&shaders::PREPARE_PIXELS);
+        assert_mirrors::<AdamParamsGpu>(&shaders::ADAM);
     }
 
     /// The three scan kernels give the exclusive prefix sum of random tile counts, the total,
@@ -330,28 +317,37 @@ mod tests {
                 (
                     &kernels.scan_blocks,
                     vec![
-                        (0, &params),
-                        (1, &counts_buf),
-                        (2, &offsets),
-                        (3, &block_sums),
+                        ("scan", &params),
+                        ("counts", &counts_buf),
+                        ("offsets", &offsets),
+                        ("block_sums", &block_sums),
                     ],
                     blocks,
                 ),
                 (
                     &kernels.scan_sums,
-                    vec![(0, &params), (3, &block_sums), (4, &status), (5, &dispatch)],
+                    vec![
+                        ("scan", &params),
+                        ("block_sums", &block_sums),
+                        ("status", &status),
+                        ("dispatch", &dispatch),
+                    ],
                     (1, 1),
                 ),
                 (
                     &kernels.scan_add,
-                    vec![(0, &params), (2, &offsets), (3, &block_sums)],
+                    vec![
+                        ("scan", &params),
+                        ("offsets", &offsets),
+                        ("block_sums", &block_sums),
+                    ],
                     blocks,
                 ),
             ];
-            for (pipeline, bindings, (x, y)) in &stages {
-                let group = device.bind(pipeline, bindings);
+            for (kernel, bindings, (x, y)) in &stages {
+                let group = device.bind(kernel, bindings);
                 let mut pass = device.begin_pass(&mut encoder, "scan");
-                pass.set_pipeline(pipeline);
+                pass.set_pipeline(kernel.pipeline());
                 pass.set_bind_group(0, &group, &[]);
                 pass.dispatch_workgroups(*x, *y, 1);
             }

@@ -35,8 +35,9 @@ use std::sync::Arc;
 use tracing::info_span;
 
 use super::device::Device;
+use super::params::{ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
 use super::prefilter::DevicePrefilter;
-use super::raster::{GpuBackend, ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
+use super::raster::GpuBackend;
 use super::shade::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
 use super::GpuError;
 use crate::core::brdf_lut::BrdfLut;

@@ -27,14 +27,15 @@
 //! Modules: `shaders` (the table of kernels: what each is compiled from and binds), `device`
 //! (compiling, binding, dispatching, reading back), `layout` (the Rust mirrors of the WGSL
 //! structs), `params` (the rasterizer's parameters and buffer layouts), `band` (tile-row bands
-//! of large images), `sort` (the radix sort), `raster` ([`GpuBackend`]), `shade` (PolarDR, and the
-//! lights laid out for it), `prefilter` (the environment prefilter), `train`
+//! of large images), `sort` (the radix sort), `raster` ([`GpuBackend`]), `light` (lights laid
+//! out for the kernels), `shade` (PolarDR), `prefilter` (the environment prefilter), `train`
 //! ([`DeviceTrainer`]), `profile` (pass timings), `context` (adapters).
 
 mod band;
 mod context;
 mod device;
 mod layout;
+mod light;
 mod params;
 mod prefilter;
 mod profile;

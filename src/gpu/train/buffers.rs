@@ -3,10 +3,11 @@
 //! the tile entries of the binning sort, and the per-pixel buffers of one image size.
 
 use super::super::device::Device;
+use super::super::light::ShadeParamsGpu;
 use super::super::params::{
     raw_surfels, ParamsGpu, RawGpu, ENTRY_BYTES, NUM_ACC, NUM_OUT, NUM_RAW_GRAD, PROJ_BYTES, TILE,
 };
-use super::super::shade::{ShadeParamsGpu, GRAD_FLOATS, INPUT_VECTORS, STOKES_FLOATS};
+use super::super::shade::{GRAD_FLOATS, INPUT_VECTORS, STOKES_FLOATS};
 use super::super::sort::RADIX_BLOCK;
 use super::super::GpuError;
 use super::kernels::{SCAN_BLOCK, SLOTS};

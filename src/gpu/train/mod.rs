@@ -35,10 +35,10 @@ use std::sync::Arc;
 use tracing::info_span;
 
 use super::device::Device;
+use super::light::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
 use super::params::{ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
 use super::prefilter::DevicePrefilter;
 use super::raster::GpuBackend;
-use super::shade::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
 use super::GpuError;
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;

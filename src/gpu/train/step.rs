@@ -11,8 +11,9 @@ use super::buffers::{EntryBuffers, FrameBuffers, SurfelBuffers, TARGET_FLOATS};
 use super::kernels::{SCAN_BLOCK, STATUS_WORDS};
 use super::{DeviceStep, DeviceTrainer, LightState, DEPTH_BITS};
 use crate::gpu::device::{Device, Kernel};
+use crate::gpu::light::ProbeBuffers;
 use crate::gpu::params::TILE;
-use crate::gpu::shade::{LightPipelines, ProbeBuffers};
+use crate::gpu::shade::LightPipelines;
 use crate::gpu::sort::{varying_bits, KeyBits, SortDispatch, SortInputs};
 use crate::gpu::GpuError;
 

@@ -9,6 +9,8 @@
 //! Uniform blocks name every value (`near: f32`, `width: u32`, explicit `padN` where a block
 //! needs padding) instead of packing them positionally into vectors; a vector member is a vector
 //! (a rotation column, a camera centre) or an array of values indexed by slot.
+//!
+//! Threading: plain `Pod` data, written on the calling thread and uploaded by its owner.
 
 /// The scalar type of a WGSL member or of a Rust field's elements.
 #[cfg(test)]

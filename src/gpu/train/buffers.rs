@@ -1,6 +1,9 @@
 //! The resident trainer's device buffers: the surfels' raw parameters, Adam moments and
 //! densification statistics (and their conversion from and to the host's f64 training state),
 //! the tile entries of the binning sort, and the per-pixel buffers of one image size.
+//!
+//! Threading: created and read back on the calling thread, inside the trainer's
+//! [`Device::scoped`] calls.
 
 use super::super::device::Device;
 use super::super::light::ShadeParamsGpu;

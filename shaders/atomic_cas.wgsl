@@ -1,6 +1,7 @@
 // `add_grad` for adapters without float atomics: a compare-and-swap loop on the f32 bit pattern
 // held in an atomic<u32> (retries until no other thread wrote in between).
-// Appended to rasterize_backward.wgsl and shade_backward.wgsl; threading as there.
+// Part of the rasterize_backward and shade_backward kernels without float atomics
+// (`Part::AddGrad` in src/gpu/shaders.rs); threading as there.
 
 @group(0) @binding(8) var<storage, read_write> grad_acc: array<atomic<u32>>;
 

@@ -1,5 +1,6 @@
 // `add_grad` for adapters with SHADER_FLOAT32_ATOMIC: one native float atomic add per value.
-// Appended to rasterize_backward.wgsl and shade_backward.wgsl; threading as there.
+// Part of the rasterize_backward and shade_backward kernels with float atomics
+// (`Part::AddGrad` in src/gpu/shaders.rs); threading as there.
 
 @group(0) @binding(8) var<storage, read_write> grad_acc: array<atomic<f32>>;
 

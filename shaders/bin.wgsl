@@ -19,7 +19,7 @@
 @compute @workgroup_size(256)
 fn emit(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let i = linear_index(gid, nwg);
-    if i >= params.counts.x {
+    if i >= params.surfels {
         return;
     }
     let p = proj[i];
@@ -28,14 +28,14 @@ fn emit(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
         return;
     }
     let depth_bits = bitcast<u32>(p.q1.w);
-    let tiles_x = params.dims.z;
+    let tiles_x = params.tiles_x;
     let rows = band_tile_rows(r, params);
     let capacity = arrayLength(&entries);
     var o = offsets[i];
     for (var ty = rows.x; ty < rows.y; ty++) {
         for (var tx = r.x / TILE; tx <= (r.z - 1u) / TILE; tx++) {
             if o < capacity {
-                entries[o] = vec4<u32>((ty - params.band.x) * tiles_x + tx, depth_bits, i, 0u);
+                entries[o] = vec4<u32>((ty - params.band_tile_first) * tiles_x + tx, depth_bits, i, 0u);
             }
             o++;
         }

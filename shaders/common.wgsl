@@ -1,8 +1,8 @@
 // Shared definitions of the rasterizer kernels: the uniform parameters, the buffer layouts and the
 // per-pixel evaluation of one projected surfel (a port of `evaluate` in src/raster/cpu.rs, in f32).
-// No bindings and no entry points: every kernel file is compiled as `common.wgsl` + itself (the
-// rasterization kernels with tile_list.wgsl between), so the forward and backward passes evaluate
-// (and skip) exactly the same (pixel, surfel) pairs.
+// No bindings and no entry points: every rasterizer kernel is compiled with this file first (the
+// files of each kernel, in order, are listed in src/gpu/shaders.rs), so the forward and backward
+// passes evaluate (and skip) exactly the same (pixel, surfel) pairs.
 
 // Tile edge in pixels; the rasterization kernels run one 8×8 workgroup per tile.
 const TILE: u32 = 8u;
@@ -21,12 +21,21 @@ struct Params {
     trans: vec4<f32>,
     // Camera centre in world coordinates.
     origin: vec4<f32>,
-    // fx, fy, cx, cy.
-    intr: vec4<f32>,
-    // width, height, tiles along x, tiles along y.
-    dims: vec4<u32>,
-    // surfels, tile entries, unused, low-pass filter on (1) or off (0).
-    counts: vec4<u32>,
+    // Focal lengths and principal point in pixels.
+    fx: f32,
+    fy: f32,
+    cx: f32,
+    cy: f32,
+    // Image size in pixels and in tiles.
+    width: u32,
+    height: u32,
+    tiles_x: u32,
+    tiles_y: u32,
+    // Surfels to project; the screen-space low-pass filter on (1) or off (0).
+    surfels: u32,
+    pad0: u32,
+    pad1: u32,
+    lowpass: u32,
     // Projection and compositing thresholds (RasterSettings).
     near: f32,
     alpha_min: f32,
@@ -37,11 +46,14 @@ struct Params {
     inv_lowpass_sigma2: f32,
     // ε of the α-normalization of the G-buffers.
     normalize_alpha_min: f32,
-    pad0: f32,
-    // The band of tile rows being rasterized (large images are split into bands): first tile
-    // row, end tile row (exclusive), first pixel row, pixel rows. Per-pixel buffers and tile
-    // ranges hold the band only, indexed from its first row.
-    band: vec4<u32>,
+    pad2: f32,
+    // The band of tile rows being rasterized (large images are split into bands): its tile rows
+    // [band_tile_first, band_tile_end), its first pixel row and its pixel rows. Per-pixel
+    // buffers and tile ranges hold the band only, indexed from its first row.
+    band_tile_first: u32,
+    band_tile_end: u32,
+    band_pixel_first: u32,
+    band_pixel_rows: u32,
 }
 
 // Raw (unactivated) surfel parameters.
@@ -93,8 +105,8 @@ struct Hit {
 
 // The tile rows [lo, hi) of pixel box `r` inside the band (lo == hi when it misses the band).
 fn band_tile_rows(r: vec4<u32>, prm: Params) -> vec2<u32> {
-    let lo = max(r.y / TILE, prm.band.x);
-    let hi = min((r.w - 1u) / TILE + 1u, prm.band.y);
+    let lo = max(r.y / TILE, prm.band_tile_first);
+    let hi = min((r.w - 1u) / TILE + 1u, prm.band_tile_end);
     return vec2<u32>(lo, max(lo, hi));
 }
 
@@ -114,7 +126,7 @@ fn evaluate(p: Proj, x: f32, y: f32, prm: Params) -> Hit {
     let dy = y - p.mean_op.y;
     let rho_cut = p.q2.w;
     var rho2 = BIG;
-    if prm.counts.w != 0u {
+    if prm.lowpass != 0u {
         rho2 = (dx * dx + dy * dy) * prm.inv_lowpass_sigma2;
     }
     // ρ_3d = (px² + py²) / pz² within the cut, tested without the division.
@@ -219,8 +231,8 @@ fn geometry(r: Raw, prm: Params) -> Geometry {
     geo.b = geo.scale.y * (cam_rot * geo.rot[1]);
     geo.c = cam_rot * p + prm.trans.xyz;
     geo.m2 = vec3<f32>(geo.a.z, geo.b.z, geo.c.z);
-    geo.m0 = prm.intr.x * vec3<f32>(geo.a.x, geo.b.x, geo.c.x) + prm.intr.z * geo.m2;
-    geo.m1 = prm.intr.y * vec3<f32>(geo.a.y, geo.b.y, geo.c.y) + prm.intr.w * geo.m2;
+    geo.m0 = prm.fx * vec3<f32>(geo.a.x, geo.b.x, geo.c.x) + prm.cx * geo.m2;
+    geo.m1 = prm.fy * vec3<f32>(geo.a.y, geo.b.y, geo.c.y) + prm.cy * geo.m2;
     geo.normal_sign = select(1.0, -1.0, dot(geo.rot[2], p - prm.origin.xyz) > 0.0);
     return geo;
 }

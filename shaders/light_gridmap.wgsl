@@ -4,7 +4,7 @@
 // their mip chains where the mirror ray from x is blocked by the mesh, the global map where it
 // escapes. The occlusion test walks the mesh's BVH (flattened depth first, as src/bvh.rs builds
 // it) with a fixed stack, nearer child first, and Möller–Trumbore triangle tests: the ray starts
-// `grid_geometry.x` along the direction, steps through up to MAX_EXITS back-facing hits, and the
+// `grid_ray_offset` along the direction, steps through up to MAX_EXITS back-facing hits, and the
 // first front-facing hit means "occluded". Compiled after shade_common.wgsl (before the backward
 // file when differentiating); one thread per pixel as there.
 
@@ -43,11 +43,11 @@ struct Blend {
 // inline them (the node check, a branch, is kept off them as a precaution); a bound that also
 // reads a buffer length keeps the kernel as compiled.
 fn anchor_count() -> u32 {
-    return min(params.grid_counts.x, arrayLength(&anchors));
+    return min(params.grid_anchors, arrayLength(&anchors));
 }
 
 fn node_count() -> u32 {
-    return min(params.grid_counts.z, arrayLength(&bvh_links));
+    return min(params.grid_nodes, arrayLength(&bvh_links));
 }
 
 fn raw_weight(x: vec3<f32>, k: u32) -> f32 {
@@ -65,7 +65,7 @@ fn anchor_blend(x: vec3<f32>) -> Blend {
 
 // Texel t of probe k.
 fn probe_texel(t: u32, k: u32) -> vec3<f32> {
-    let o = (t * params.grid_counts.x + k) * 3u;
+    let o = (t * params.grid_anchors + k) * 3u;
     return vec3<f32>(probes[o], probes[o + 1u], probes[o + 2u]);
 }
 
@@ -107,7 +107,7 @@ fn blended_specular(b: Blend, dir: vec3<f32>, roughness: f32) -> vec3<f32> {
 
 // Σ_k w_k E_d,k(n).
 fn blended_irradiance(b: Blend, normal: vec3<f32>, ior: f32) -> vec3<f32> {
-    let coarsest = params.light_layout.x - 1u;
+    let coarsest = params.levels - 1u;
     let blend = irradiance_blend(ior);
     let first = blended_sample(b, cube_taps(coarsest, irradiance_first(blend.a), normal));
     if blend.a == blend.b || blend.t == 0.0 {
@@ -245,7 +245,7 @@ fn occluded(x: vec3<f32>, dir: vec3<f32>) -> bool {
         return false;
     }
     let d = dir / len;
-    let offset = params.grid_geometry.x;
+    let offset = params.grid_ray_offset;
     var origin = x + offset * d;
     for (var e = 0u; e < MAX_EXITS; e++) {
         let hit = closest_hit(origin, d);

@@ -43,7 +43,7 @@ fn light_irradiance_backward(
     grad_out: vec3<f32>,
 ) -> vec4<f32> {
     let weights = at.blend;
-    let coarsest = params.light_layout.x - 1u;
+    let coarsest = params.levels - 1u;
     let blend = irradiance_blend(ior);
     if blend.a == blend.b || blend.t == 0.0 {
         let first = blended_sample_backward(

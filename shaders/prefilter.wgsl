@@ -14,27 +14,48 @@
 // Threading: one thread per output texel (or value), 256-thread workgroups on a 2-D grid.
 
 struct ConvParams {
-    // output texels (this grid's), first texel of the grid in `dirs`/`solid_angle`, first block
-    // of the grid, blocks of the grid.
-    grid: vec4<u32>,
-    // first entry of the grid in `block_texels`/`block_dirs`, first threshold of this
-    // convolution, first normalizer (or NO_NORMALIZER), transposed (1) or forward (0).
-    tables: vec4<u32>,
-    // kernel (0 GGX, 1 cosine, 2 Fresnel cosine), unused ×3.
-    kind: vec4<u32>,
-    // GGX α² or the IoR, cos of the angular cutoff, unused ×2.
-    kernel: vec4<f32>,
-    // first value read in `src`, first value written in `dst`, add into dst (1) or overwrite (0),
-    // unused.
-    io: vec4<u32>,
+    // The grid: its texels (the output texels), its first texel in `dirs`/`solid_angle`, its
+    // first block and its blocks.
+    texels: u32,
+    first_texel: u32,
+    first_block: u32,
+    blocks: u32,
+    // The grid's first entry in `block_texels`/`block_dirs`, this convolution's first threshold
+    // and first normalizer (or NO_NORMALIZER); transposed (1) or forward (0).
+    first_entry: u32,
+    first_threshold: u32,
+    first_normalizer: u32,
+    transposed: u32,
+    // The kernel (0 GGX, 1 cosine, 2 Fresnel cosine), its parameter (GGX α² or the IoR) and the
+    // cosine of its angular cutoff.
+    kernel_kind: u32,
+    pad0: u32,
+    pad1: u32,
+    pad2: u32,
+    kernel_param: f32,
+    cos_cut: f32,
+    pad3: f32,
+    pad4: f32,
+    // The first value read in `src`, the first value written in `dst`, add into `dst` (1) or
+    // overwrite it (0).
+    src_first: u32,
+    dst_first: u32,
+    accumulate: u32,
+    pad5: u32,
 }
 
 struct LevelParams {
-    // texels of the output level, its face size, first value of the source level in `pyramid`,
-    // first value of the output level.
-    level: vec4<u32>,
-    // the output has the size of the source (1: copy or add all) or half of it (0), unused ×3.
-    same: vec4<u32>,
+    // Texels of the output level, its face size, the first value of the source level in
+    // `pyramid`, the first value of the output level.
+    texels: u32,
+    face_size: u32,
+    src_first: u32,
+    dst_first: u32,
+    // The output has the size of the source (1: copy or add all) or half of it (0).
+    same_size: u32,
+    pad0: u32,
+    pad1: u32,
+    pad2: u32,
 }
 
 const NO_NORMALIZER: u32 = 0xffffffffu;
@@ -77,9 +98,9 @@ fn fresnel_unpolarized(c_in: f32, ior: f32) -> f32 {
 // cos²θ_h (α² − 1) + 1 = (1 − c) / 2 + cos²θ_h α² is tiny for sharp lobes (α² = 4e-5 at r = 0.08),
 // and forming it as the f32 sum of numbers near ±1 would lose three digits.
 fn kernel_weight(c: f32, one_minus_c: f32) -> f32 {
-    switch conv.kind.x {
+    switch conv.kernel_kind {
         case 0u: {
-            let alpha2 = conv.kernel.x;
+            let alpha2 = conv.kernel_param;
             let cos2h = 0.5 * (1.0 + c);
             let denom = 0.5 * one_minus_c + cos2h * alpha2;
             return alpha2 / (denom * denom) * c;
@@ -88,34 +109,34 @@ fn kernel_weight(c: f32, one_minus_c: f32) -> f32 {
             return c * INV_PI;
         }
         default: {
-            return c * (1.0 - fresnel_unpolarized(c, conv.kernel.x)) * INV_PI;
+            return c * (1.0 - fresnel_unpolarized(c, conv.kernel_param)) * INV_PI;
         }
     }
 }
 
 fn normalizer(t: u32) -> f32 {
-    if conv.tables.z == NO_NORMALIZER {
+    if conv.first_normalizer == NO_NORMALIZER {
         return 1.0;
     }
-    return normalizers[conv.tables.z + t];
+    return normalizers[conv.first_normalizer + t];
 }
 
 @compute @workgroup_size(256)
 fn convolve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let o = value_index(gid, nwg);
-    let texels = conv.grid.x;
+    let texels = conv.texels;
     if o >= texels {
         return;
     }
-    let transposed = conv.tables.w != 0u;
-    let n = dirs[conv.grid.y + o].xyz;
-    let first_block = conv.grid.z;
-    let block_count = conv.grid.w;
-    let cos_cut = conv.kernel.y;
+    let transposed = conv.transposed != 0u;
+    let n = dirs[conv.first_texel + o].xyz;
+    let first_block = conv.first_block;
+    let block_count = conv.blocks;
+    let cos_cut = conv.cos_cut;
     var acc = vec3<f32>(0.0);
     for (var b = 0u; b < block_count; b++) {
         let block = blocks[first_block + b];
-        if dot(n, block.xyz) < thresholds[conv.tables.y + b] {
+        if dot(n, block.xyz) < thresholds[conv.first_threshold + b] {
             continue;
         }
         let start = block_starts[first_block + b];
@@ -124,30 +145,30 @@ fn convolve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgrou
             end = block_starts[first_block + b + 1u];
         }
         for (var e = start; e < end; e++) {
-            let d = block_dirs[conv.tables.x + e].xyz;
+            let d = block_dirs[conv.first_entry + e].xyz;
             let c = dot(n, d);
             if c <= cos_cut {
                 continue;
             }
-            let t = block_texels[conv.tables.x + e];
+            let t = block_texels[conv.first_entry + e];
             let gap = n - d;
             var w = kernel_weight(c, 0.5 * dot(gap, gap));
             if transposed {
                 w /= normalizer(t);
             } else {
-                w *= solid_angle[conv.grid.y + t];
+                w *= solid_angle[conv.first_texel + t];
             }
-            let s = conv.io.x + 3u * t;
+            let s = conv.src_first + 3u * t;
             acc += w * vec3<f32>(src[s], src[s + 1u], src[s + 2u]);
         }
     }
     if transposed {
-        acc *= solid_angle[conv.grid.y + o];
+        acc *= solid_angle[conv.first_texel + o];
     } else {
         acc /= normalizer(o);
     }
-    let d = conv.io.y + 3u * o;
-    if conv.io.z != 0u {
+    let d = conv.dst_first + 3u * o;
+    if conv.accumulate != 0u {
         acc += vec3<f32>(dst[d], dst[d + 1u], dst[d + 2u]);
     }
     dst[d] = acc.x;
@@ -177,17 +198,17 @@ fn activate(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgrou
 @compute @workgroup_size(256)
 fn downsample(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let i = value_index(gid, nwg);
-    let texels = level.level.x;
+    let texels = level.texels;
     if i >= texels * 3u {
         return;
     }
-    let src_first = level.level.z;
-    let out = level.level.w + i;
-    if level.same.x != 0u {
+    let src_first = level.src_first;
+    let out = level.dst_first + i;
+    if level.same_size != 0u {
         pyramid[out] = pyramid[src_first + i];
         return;
     }
-    let half = level.level.y;
+    let half = level.face_size;
     let size = 2u * half;
     let t = i / 3u;
     let c = i % 3u;
@@ -204,22 +225,22 @@ fn downsample(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgr
     pyramid[out] = sum;
 }
 
-// Adds a level's gradient (at `level.z`, face size level.y / 2 unless `same`) into the level
-// above it (at `level.w`, `level.x` texels, face size level.y).
+// Adds a level's gradient (at `src_first`, face size `face_size` / 2 unless `same_size`) into
+// the level above it (at `dst_first`, `texels` texels, face size `face_size`).
 @compute @workgroup_size(256)
 fn pyramid_transpose(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let i = value_index(gid, nwg);
-    let texels = level.level.x;
+    let texels = level.texels;
     if i >= texels * 3u {
         return;
     }
-    let coarse_first = level.level.z;
-    let out = level.level.w + i;
-    if level.same.x != 0u {
+    let coarse_first = level.src_first;
+    let out = level.dst_first + i;
+    if level.same_size != 0u {
         pyramid[out] += pyramid[coarse_first + i];
         return;
     }
-    let size = level.level.y;
+    let size = level.face_size;
     let half = size / 2u;
     let t = i / 3u;
     let c = i % 3u;

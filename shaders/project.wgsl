@@ -41,7 +41,7 @@ fn pixel_span(lo: f32, hi: f32, n: u32) -> vec2<u32> {
 fn project(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let i = linear_index(gid, nwg);
     let prm = params;
-    if i >= prm.counts.x {
+    if i >= prm.surfels {
         return;
     }
     var out: Proj;
@@ -67,8 +67,8 @@ fn project(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
     let qc = cross(m0, m1);
     let det = dot(m2, qc);
     let mean = vec2<f32>(
-        prm.intr.x * geo.c.x / geo.c.z + prm.intr.z,
-        prm.intr.y * geo.c.y / geo.c.z + prm.intr.w,
+        prm.fx * geo.c.x / geo.c.z + prm.cx,
+        prm.fy * geo.c.y / geo.c.z + prm.cy,
     );
     let normal = geo.normal_sign * geo.rot[2];
     let albedo = vec3<f32>(sigmoid(r.albedo.x), sigmoid(r.albedo.y), sigmoid(r.albedo.z));
@@ -94,8 +94,8 @@ fn project(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
     }
 
     // Box: the α-cut disc on the surfel plane (a projected conic) united with the low-pass disc.
-    let w = prm.dims.x;
-    let h = prm.dims.y;
+    let w = prm.width;
+    let h = prm.height;
     let radius = sqrt(rho_cut);
     var lo = vec2<f32>(0.0, 0.0);
     var hi = vec2<f32>(f32(w), f32(h));
@@ -107,7 +107,7 @@ fn project(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
         lo = vec2<f32>(ex.x, ey.x);
         hi = vec2<f32>(ex.y, ey.y);
     }
-    if prm.counts.w != 0u {
+    if prm.lowpass != 0u {
         let r2d = min(prm.lowpass_sigma_px * radius, BIG);
         lo = min(lo, mean - vec2<f32>(r2d));
         hi = max(hi, mean + vec2<f32>(r2d));

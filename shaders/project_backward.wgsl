@@ -39,7 +39,7 @@ fn rotation_backward(q: vec4<f32>, g: mat3x3<f32>) -> vec4<f32> {
 fn project_backward(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let i = linear_index(gid, nwg);
     let prm = params;
-    if i >= prm.counts.x {
+    if i >= prm.surfels {
         return;
     }
     let out = i * 16u;
@@ -73,10 +73,10 @@ fn project_backward(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_
     // Screen translation by δ: M0 += δx M2, M1 += δy M2, μ += δ.
     let mean2d = vec2<f32>(dot(gm0, m2) + g_mean.x, dot(gm1, m2) + g_mean.y);
 
-    let fx = prm.intr.x;
-    let fy = prm.intr.y;
-    let cx = prm.intr.z;
-    let cy = prm.intr.w;
+    let fx = prm.fx;
+    let fy = prm.fy;
+    let cx = prm.cx;
+    let cy = prm.cy;
     let ga = vec3<f32>(fx * gm0.x, fy * gm1.x, cx * gm0.x + cy * gm1.x + gm2.x);
     let gb = vec3<f32>(fx * gm0.y, fy * gm1.y, cx * gm0.y + cy * gm1.y + gm2.y);
     var gc = vec3<f32>(fx * gm0.z, fy * gm1.z, cx * gm0.z + cy * gm1.z + gm2.z);

@@ -28,8 +28,8 @@ struct RadixPass {
     shift: u32,
     // Key word: 0 = depth bits (entry.y), 1 = tile (entry.x).
     word: u32,
-    unused0: u32,
-    unused1: u32,
+    pad0: u32,
+    pad1: u32,
 }
 
 @group(0) @binding(0) var<uniform> pass_: RadixPass;

@@ -22,7 +22,7 @@ struct ScanParams {
     capacity: u32,
     // Most workgroups per grid dimension.
     max_groups: u32,
-    unused: u32,
+    pad0: u32,
 }
 
 @group(0) @binding(0) var<uniform> scan: ScanParams;

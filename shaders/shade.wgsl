@@ -15,7 +15,7 @@ fn store_rgb(i: u32, slot: u32, v: vec3<f32>) {
 @compute @workgroup_size(256)
 fn shade(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
     let i = linear_index(gid, groups);
-    if i >= params.dims.z || active_pixels[i] == 0u {
+    if i >= params.pixels || active_pixels[i] == 0u {
         return;
     }
     let s = shade_pixel(load_pixel(i));

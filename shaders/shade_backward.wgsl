@@ -49,7 +49,7 @@ fn specular_backward(dir: vec3<f32>, roughness: f32, grad_out: vec3<f32>) -> vec
 
 // Backward of `irradiance_light`: (dL/d normal, dL/d IoR).
 fn irradiance_backward(normal: vec3<f32>, ior: f32, grad_out: vec3<f32>) -> vec4<f32> {
-    let coarsest = params.light_layout.x - 1u;
+    let coarsest = params.levels - 1u;
     let blend = irradiance_blend(ior);
     if blend.a == blend.b {
         let a = taps_backward(cube_taps(coarsest, irradiance_first(blend.a), normal), grad_out, 1.0);
@@ -67,7 +67,7 @@ fn shade_backward(
     @builtin(num_workgroups) groups: vec3<u32>,
 ) {
     let i = linear_index(gid, groups);
-    if i >= params.dims.z || active_pixels[i] == 0u {
+    if i >= params.pixels || active_pixels[i] == 0u {
         return;
     }
     let px = load_pixel(i);

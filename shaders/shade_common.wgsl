@@ -20,20 +20,39 @@ struct ShadeParams {
     rot2: vec4<f32>,
     // The camera's up vector (Stokes frames are built from it).
     up: vec4<f32>,
-    // fx, fy, cx, cy.
-    intr: vec4<f32>,
-    // width, first pixel of this chunk, pixels in this chunk, BRDF table cells per axis.
-    dims: vec4<u32>,
-    // mip levels, irradiance maps, first irradiance texel in `light`, first BRDF value in `light`.
-    light_layout: vec4<u32>,
-    // roughness of level 0, roughness of the second-to-last level, IoR nodes, unused.
-    rough: vec4<f32>,
+    // Focal lengths and principal point in pixels.
+    fx: f32,
+    fy: f32,
+    cx: f32,
+    cy: f32,
+    // Image width, the first pixel of this chunk and its pixel count; BRDF table cells per axis.
+    width: u32,
+    first_pixel: u32,
+    pixels: u32,
+    lut_size: u32,
+    // The light's layout: mip levels, irradiance maps, the first irradiance texel in `light`, the
+    // first BRDF table value in `light`.
+    levels: u32,
+    irradiance_maps: u32,
+    irradiance_offset: u32,
+    lut_offset: u32,
+    // Roughness of level 0 and of the second-to-last level; IoR nodes (irradiance maps blended
+    // by IoR, `iors`).
+    min_roughness: f32,
+    max_roughness: f32,
+    ior_nodes: u32,
+    pad0: u32,
     // IoR of each irradiance map (Fresnel-weighted irradiance), 4 per vector.
     iors: array<vec4<f32>, 2>,
-    // GridMap only: anchors, f32 values per probe, unused, unused.
-    grid_counts: vec4<u32>,
-    // GridMap only: start offset of the mirror ray, unused (3).
-    grid_geometry: vec4<f32>,
+    // GridMap only: anchors, f32 values per probe, BVH nodes; the start offset of the mirror ray.
+    grid_anchors: u32,
+    grid_probe_values: u32,
+    grid_nodes: u32,
+    pad1: u32,
+    grid_ray_offset: f32,
+    pad2: f32,
+    pad3: f32,
+    pad4: f32,
 }
 
 @group(0) @binding(0) var<uniform> params: ShadeParams;
@@ -164,10 +183,10 @@ fn lut_bilinear(base: u32, n: u32, mu_axis: vec3<f32>, r_axis: vec3<f32>) -> vec
 
 // `BrdfLut::lookup_with_grad`.
 fn lut_lookup(mu: f32, roughness: f32) -> LutSample {
-    let n = params.dims.w;
+    let n = params.lut_size;
     let mu_axis = lut_axis(mu, n);
     let r_axis = lut_axis(roughness, n);
-    let base = params.light_layout.w;
+    let base = params.lut_offset;
     return LutSample(
         lut_bilinear(base, n, mu_axis, r_axis),
         lut_bilinear(base + n * n, n, mu_axis, r_axis),
@@ -274,10 +293,10 @@ fn sample_taps(taps: Taps) -> vec3<f32> {
 
 // `level_blend`: (first level, weight of the next, d weight / d roughness).
 fn level_blend(roughness: f32) -> vec3<f32> {
-    let n = params.light_layout.x;
+    let n = params.levels;
     let second_last = f32(n - 2u);
-    let r_min = params.rough.x;
-    let r_max = params.rough.y;
+    let r_min = params.min_roughness;
+    let r_max = params.max_roughness;
     var level = 0.0;
     var dlevel = 0.0;
     if roughness < r_max {
@@ -323,7 +342,7 @@ struct IrradianceBlend {
 // (nor branch) depends on the uniform block alone: lavapipe (Mesa 22) recompiled the kernel at
 // every dispatch to inline such a bound, and a dispatch then cost a compile (≈1 s).
 fn irradiance_blend(ior: f32) -> IrradianceBlend {
-    let nodes = u32(params.rough.z);
+    let nodes = params.ior_nodes;
     // The segment [k, k + 1] holding the IoR: the inner nodes at or below it (nodes ascend).
     var k = 0u;
     for (var i = 1u; i + 1u < MAX_IORS; i++) {
@@ -345,14 +364,14 @@ fn irradiance_blend(ior: f32) -> IrradianceBlend {
 
 // First texel of irradiance map `k` in `light` (every map is on the coarsest level's grid).
 fn irradiance_first(k: u32) -> u32 {
-    let coarsest = params.light_layout.x - 1u;
+    let coarsest = params.levels - 1u;
     let size = tables[coarsest * 4u];
-    return params.light_layout.z + k * 6u * size * size;
+    return params.irradiance_offset + k * 6u * size * size;
 }
 
 // Diffuse irradiance E_d(n) (`PreparedEnv::irradiance`).
 fn irradiance_light(normal: vec3<f32>, ior: f32) -> vec3<f32> {
-    let coarsest = params.light_layout.x - 1u;
+    let coarsest = params.levels - 1u;
     let blend = irradiance_blend(ior);
     let a = sample_taps(cube_taps(coarsest, irradiance_first(blend.a), normal));
     if blend.t == 0.0 {
@@ -376,10 +395,10 @@ struct Pixel {
 }
 
 fn load_pixel(i: u32) -> Pixel {
-    let p = params.dims.y + i;
-    let x = f32(p % params.dims.x) + 0.5;
-    let y = f32(p / params.dims.x) + 0.5;
-    let c = vec3<f32>((x - params.intr.z) / params.intr.x, (y - params.intr.w) / params.intr.y, 1.0);
+    let p = params.first_pixel + i;
+    let x = f32(p % params.width) + 0.5;
+    let y = f32(p / params.width) + 0.5;
+    let c = vec3<f32>((x - params.cx) / params.fx, (y - params.cy) / params.fy, 1.0);
     let d = normalize(params.rot0.xyz * c.x + params.rot1.xyz * c.y + params.rot2.xyz * c.z);
     let sx = normalize(cross(d, params.up.xyz));
     let a = pixels[3u * i];

@@ -1,6 +1,7 @@
 // Shared by the two rasterization kernels (rasterize.wgsl, rasterize_backward.wgsl, each compiled
-// as common.wgsl + this + itself): the bindings of the band's sorted tile lists and the pixel a
-// thread owns. Threading: one 8×8 workgroup per tile of the band, one thread per pixel.
+// after common.wgsl and this; src/gpu/shaders.rs): the bindings of the band's sorted tile lists
+// and the pixel a thread owns. Threading: one 8×8 workgroup per tile of the band, one thread per
+// pixel.
 
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> entries: array<vec4<u32>>;
@@ -24,10 +25,10 @@ struct TilePixel {
 fn tile_pixel(wg: vec3<u32>, lid: vec3<u32>, prm: Params) -> TilePixel {
     var tp: TilePixel;
     tp.x = wg.x * TILE + lid.x;
-    tp.y = (prm.band.x + wg.y) * TILE + lid.y;
-    tp.inside = tp.x < prm.dims.x && tp.y < prm.dims.y;
-    tp.pix = (tp.y - prm.band.z) * prm.dims.x + tp.x;
-    tp.range = ranges[wg.y * prm.dims.z + wg.x];
+    tp.y = (prm.band_tile_first + wg.y) * TILE + lid.y;
+    tp.inside = tp.x < prm.width && tp.y < prm.height;
+    tp.pix = (tp.y - prm.band_pixel_first) * prm.width + tp.x;
+    tp.range = ranges[wg.y * prm.tiles_x + wg.x];
     tp.centre = vec2<f32>(f32(tp.x) + 0.5, f32(tp.y) + 0.5);
     return tp;
 }

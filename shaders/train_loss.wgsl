@@ -84,27 +84,27 @@ fn workgroup_sum(t: u32, wg: u32, slot: u32, value: f32) {
         workgroupBarrier();
     }
     if t == 0u {
-        partials[slot * train.dims.w + wg] = wg_sum[0];
+        partials[slot * train.groups + wg] = wg_sum[0];
     }
     workgroupBarrier();
 }
 
 // The colour behind the prediction at p (not yet multiplied by α).
 fn colour_at(p: u32) -> vec3<f32> {
-    if train.mode.x == 0u {
-        return gbuf_vec3(p, 5u) * train.theta.z;
+    if train.shaded == 0u {
+        return gbuf_vec3(p, 5u) * train.unpolarized_scale;
     }
-    if train.mode.z == 0u {
-        return stokes_rgb(p, 0u) * train.theta.z;
+    if train.has_theta == 0u {
+        return stokes_rgb(p, 0u) * train.unpolarized_scale;
     }
-    return 0.5 * (stokes_rgb(p, 0u) + stokes_rgb(p, 1u) * train.theta.x
-        + stokes_rgb(p, 2u) * train.theta.y);
+    return 0.5 * (stokes_rgb(p, 0u) + stokes_rgb(p, 1u) * train.cos_2theta
+        + stokes_rgb(p, 2u) * train.sin_2theta);
 }
 
 @compute @workgroup_size(THREADS)
 fn compose(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let p = pixel_index(gid, nwg);
-    if p >= train.dims.z {
+    if p >= train.pixels {
         return;
     }
     let v = colour_at(p) * gbuf[10u * p];
@@ -116,12 +116,12 @@ fn compose(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
 @compute @workgroup_size(THREADS)
 fn ssim_moments_h(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let p = pixel_index(gid, nwg);
-    let pixels = train.dims.z;
+    let pixels = train.pixels;
     if p >= pixels {
         return;
     }
-    let w = i32(train.dims.x);
-    let x = i32(p % train.dims.x);
+    let w = i32(train.width);
+    let x = i32(p % train.width);
     let row = p - u32(x);
     var m: array<f32, 15>;
     for (var k = 0; k < 15; k++) {
@@ -151,13 +151,13 @@ fn ssim_moments_h(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wo
 
 // Plane `plane` of blur_a blurred along columns, at pixel p.
 fn column_blur_a(p: u32, plane: u32) -> f32 {
-    let pixels = train.dims.z;
-    let w = train.dims.x;
+    let pixels = train.pixels;
+    let w = train.width;
     let y = i32(p / w);
     var sum = 0.0;
     for (var tap = 0; tap < 11; tap++) {
         let yi = y + tap - SSIM_RADIUS;
-        if yi < 0 || yi >= i32(train.dims.y) {
+        if yi < 0 || yi >= i32(train.height) {
             continue;
         }
         sum += gauss(tap) * blur_a[plane * pixels + u32(yi) * w + p % w];
@@ -173,7 +173,7 @@ fn ssim_moments_v(
     @builtin(local_invocation_index) t: u32,
 ) {
     let p = pixel_index(gid, nwg);
-    let pixels = train.dims.z;
+    let pixels = train.pixels;
     var ssim_sum = 0.0;
     if p < pixels {
         let inv_n = 1.0 / f32(3u * pixels);
@@ -204,12 +204,12 @@ fn ssim_moments_v(
 @compute @workgroup_size(THREADS)
 fn ssim_adjoint_h(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let p = pixel_index(gid, nwg);
-    let pixels = train.dims.z;
+    let pixels = train.pixels;
     if p >= pixels {
         return;
     }
-    let w = i32(train.dims.x);
-    let x = i32(p % train.dims.x);
+    let w = i32(train.width);
+    let x = i32(p % train.width);
     let row = p - u32(x);
     for (var k = 0u; k < 9u; k++) {
         var sum = 0.0;
@@ -256,13 +256,13 @@ fn loss_chain(
     @builtin(local_invocation_index) t: u32,
 ) {
     let p = pixel_index(gid, nwg);
-    let pixels = train.dims.z;
+    let pixels = train.pixels;
     var sums: array<f32, SLOTS>;
     for (var k = 0u; k < SLOTS; k++) {
         sums[k] = 0.0;
     }
     if p < pixels {
-        let w = train.dims.x;
+        let w = train.width;
         let i = p % w;
         let j = p / w;
         let inv3 = 1.0 / f32(3u * pixels);
@@ -281,10 +281,10 @@ fn loss_chain(
             let b2 = column_blur_a(p, 3u * c + 2u);
             ssim_grad[c] = b0 + 2.0 * prediction[c] * b1 + tgt[c] * b2;
         }
-        let lambda_ssim = train.weights.x;
+        let lambda_ssim = train.lambda_ssim;
         var gp = (1.0 - lambda_ssim) * sign3(diff) * inv3 - lambda_ssim * ssim_grad;
         // The extra L1 on Î(θ) of partial views.
-        gp += train.theta.w * sign3(diff) * inv3;
+        gp += train.lambda_extra_l1 * sign3(diff) * inv3;
 
         var up: array<f32, 10>;
         for (var k = 0u; k < 10u; k++) {
@@ -293,14 +293,14 @@ fn loss_chain(
         // Mask.
         let m = target_image[10u * p + 3u];
         sums[SLOT_MASK] = (alpha - m) * (alpha - m);
-        up[0] += train.weights.z * 2.0 * (alpha - m) * inv_p;
+        up[0] += train.lambda_mask * 2.0 * (alpha - m) * inv_p;
 
         // From the prediction to the Stokes images (or the albedo) and α.
         var d0 = vec3<f32>(0.0);
         var d1 = vec3<f32>(0.0);
         var d2 = vec3<f32>(0.0);
-        let k = train.theta.z;
-        if train.mode.x == 0u {
+        let k = train.unpolarized_scale;
+        if train.shaded == 0u {
             let albedo = gbuf_vec3(p, 5u);
             let g_albedo = gp * (k * alpha);
             up[5] += g_albedo.x;
@@ -311,26 +311,26 @@ fn loss_chain(
             let s0 = stokes_rgb(p, 0u);
             let s1 = stokes_rgb(p, 1u);
             let s2 = stokes_rgb(p, 2u);
-            if train.mode.z == 0u {
+            if train.has_theta == 0u {
                 d0 = gp * (alpha * k);
                 up[0] += k * dot(s0, gp);
             } else {
-                let c2 = train.theta.x;
-                let s2t = train.theta.y;
+                let c2 = train.cos_2theta;
+                let s2t = train.sin_2theta;
                 d0 = gp * (0.5 * alpha);
                 d1 = gp * (0.5 * alpha * c2);
                 d2 = gp * (0.5 * alpha * s2t);
                 up[0] += dot(0.5 * (s0 + s1 * c2 + s2 * s2t), gp);
                 sums[SLOT_ANGLE] = alpha * dot(s2 * c2 - s1 * s2t, gp);
             }
-            if train.mode.y != 0u {
+            if train.stokes_loss != 0u {
                 let r1 = alpha * s1 - target_rgb(p, 4u);
                 let r2 = alpha * s2 - target_rgb(p, 7u);
                 let a1 = abs(r1);
                 let a2 = abs(r2);
                 sums[SLOT_STOKES] = a1.x + a1.y + a1.z + a2.x + a2.y + a2.z;
-                let g1 = train.weights.y * sign3(r1) * inv3;
-                let g2 = train.weights.y * sign3(r2) * inv3;
+                let g1 = train.lambda_stokes * sign3(r1) * inv3;
+                let g2 = train.lambda_stokes * sign3(r2) * inv3;
                 d1 += g1 * alpha;
                 d2 += g2 * alpha;
                 up[0] += dot(s1, g1) + dot(s2, g2);
@@ -344,7 +344,7 @@ fn loss_chain(
 
         // Edge-aware normal smoothness: this pixel's pairs with its right and lower neighbours
         // (value and both ends' gradients), and its upper and left neighbours' pairs with it.
-        let lambda_smooth = train.weights.w;
+        let lambda_smooth = train.lambda_normal_smooth;
         if lambda_smooth > 0.0 {
             var g = vec3<f32>(0.0);
             if i + 1u < w {
@@ -352,7 +352,7 @@ fn loss_chain(
                 sums[SLOT_SMOOTH] += pair.value;
                 g -= pair.scale * pair.d;
             }
-            if j + 1u < train.dims.y {
+            if j + 1u < train.height {
                 let pair = smooth_pair(p, p + w);
                 sums[SLOT_SMOOTH] += pair.value;
                 g -= pair.scale * pair.d;
@@ -374,7 +374,7 @@ fn loss_chain(
         // Depth–normal consistency, before the factor λ / (valid pixels).
         var gn = vec3<f32>(0.0);
         var gd = vec3<f32>(0.0);
-        if train.weights2.x > 0.0 {
+        if train.lambda_depth_normal > 0.0 {
             let n = gbuf_vec3(p, 2u);
             let nd = depth_normal[p].xyz;
             let len = length(n);
@@ -405,7 +405,7 @@ fn loss_chain(
 
 @compute @workgroup_size(THREADS)
 fn reduce_losses(@builtin(local_invocation_index) t: u32) {
-    let groups = train.dims.w;
+    let groups = train.groups;
     for (var slot = 0u; slot < SLOTS; slot++) {
         var sum = 0.0;
         for (var g = t; g < groups; g += THREADS) {

@@ -4,26 +4,44 @@
 // 2-D grid (`pixel_index`); per-workgroup partial sums go to `partials[slot · groups + workgroup]`.
 
 struct TrainParams {
-    // width, height, pixels, workgroups of a per-pixel kernel (partial sums per slot).
-    dims: vec4<u32>,
-    // shaded (PolarDR or warm-up stage: 1; plain 2DGS: 0), S1/S2 targets used (1/0), a
-    // polarizer angle θ applies (1/0), unused.
-    mode: vec4<u32>,
-    // cos 2θ, sin 2θ, unpolarized scale k (½ for a view behind a polarizer fitted as
-    // unpolarized, else 1), weight of the extra L1 on Î(θ) (partial views in the PolarDR stage).
-    theta: vec4<f32>,
-    // λ_ssim, λ_stokes on S1/S2 (0 when unused), λ_mask, λ_normal_smooth (0 when unused).
-    weights: vec4<f32>,
-    // λ_depth_normal, α-normalization ε (depth normals are defined where α > ε), α above which
-    // a pixel is shaded, unused.
-    weights2: vec4<f32>,
+    // Image size, pixels, and workgroups of a per-pixel kernel (partial sums per slot).
+    width: u32,
+    height: u32,
+    pixels: u32,
+    groups: u32,
+    // Flags (1/0): shaded (PolarDR or warm-up stage; plain 2DGS: 0), S1/S2 targets used, a
+    // polarizer angle θ applies.
+    shaded: u32,
+    stokes_loss: u32,
+    has_theta: u32,
+    pad0: u32,
+    // cos 2θ, sin 2θ, the unpolarized scale k (½ for a view behind a polarizer fitted as
+    // unpolarized, else 1), the weight of the extra L1 on Î(θ) (partial views in the PolarDR
+    // stage).
+    cos_2theta: f32,
+    sin_2theta: f32,
+    unpolarized_scale: f32,
+    lambda_extra_l1: f32,
+    // The loss weights (λ_stokes, λ_normal_smooth and λ_depth_normal 0 when unused).
+    lambda_ssim: f32,
+    lambda_stokes: f32,
+    lambda_mask: f32,
+    lambda_normal_smooth: f32,
+    lambda_depth_normal: f32,
+    // α-normalization ε (depth normals are defined where α > ε), α above which a pixel is shaded.
+    normalize_alpha_min: f32,
+    shade_alpha_min: f32,
+    pad1: f32,
     // Camera-to-world rotation (columns: the OpenCV right, down, forward axes), camera centre.
     rot0: vec4<f32>,
     rot1: vec4<f32>,
     rot2: vec4<f32>,
     origin: vec4<f32>,
-    // fx, fy, cx, cy.
-    intr: vec4<f32>,
+    // Focal lengths and principal point in pixels.
+    fx: f32,
+    fy: f32,
+    cx: f32,
+    cy: f32,
     // The normalized 1-D Gaussian window of SSIM (11 taps, σ = 1.5; `loss::ssim::gaussian_kernel`).
     gauss: array<vec4<f32>, 3>,
 }
@@ -40,9 +58,9 @@ fn workgroup_index(wg: vec3<u32>, nwg: vec3<u32>) -> u32 {
 
 // Camera-space (OpenCV, z = 1) direction of pixel p's centre.
 fn camera_dir(p: u32) -> vec3<f32> {
-    let x = f32(p % train.dims.x) + 0.5;
-    let y = f32(p / train.dims.x) + 0.5;
-    return vec3<f32>((x - train.intr.z) / train.intr.x, (y - train.intr.w) / train.intr.y, 1.0);
+    let x = f32(p % train.width) + 0.5;
+    let y = f32(p / train.width) + 0.5;
+    return vec3<f32>((x - train.cx) / train.fx, (y - train.cy) / train.fy, 1.0);
 }
 
 fn to_world(v: vec3<f32>) -> vec3<f32> {

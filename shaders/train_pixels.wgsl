@@ -43,13 +43,13 @@ fn depth_at(p: u32) -> f32 {
 
 // Whether pixel p's depth normal is defined: interior, itself and its 4 neighbours covered.
 fn depth_normal_defined(p: u32) -> bool {
-    let w = train.dims.x;
+    let w = train.width;
     let i = p % w;
     let j = p / w;
-    if i < 1u || j < 1u || i + 1u >= w || j + 1u >= train.dims.y {
+    if i < 1u || j < 1u || i + 1u >= w || j + 1u >= train.height {
         return false;
     }
-    let eps = train.weights2.y;
+    let eps = train.normalize_alpha_min;
     return alpha_at(p) > eps && alpha_at(p - 1u) > eps && alpha_at(p + 1u) > eps
         && alpha_at(p - w) > eps && alpha_at(p + w) > eps;
 }
@@ -69,7 +69,7 @@ fn depth_normal_at(p: u32) -> DepthNormal {
     if !depth_normal_defined(p) {
         return d;
     }
-    let w = train.dims.x;
+    let w = train.width;
     d.dx = camera_dir(p + 1u) * depth_at(p + 1u) - camera_dir(p - 1u) * depth_at(p - 1u);
     d.dy = camera_dir(p + w) * depth_at(p + w) - camera_dir(p - w) * depth_at(p - w);
     let c = cross(d.dx, d.dy);
@@ -85,7 +85,7 @@ fn depth_normal_at(p: u32) -> DepthNormal {
 @compute @workgroup_size(THREADS)
 fn prepare_pixels(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let p = pixel_index(gid, nwg);
-    if p >= train.dims.z {
+    if p >= train.pixels {
         return;
     }
     let o = p * 10u;
@@ -94,7 +94,7 @@ fn prepare_pixels(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wo
     shade_in[3u * p] = vec4<f32>(gbuf[o + 2u], gbuf[o + 3u], gbuf[o + 4u], gbuf[o + 8u]);
     shade_in[3u * p + 1u] = vec4<f32>(gbuf[o + 5u], gbuf[o + 6u], gbuf[o + 7u], gbuf[o + 9u]);
     shade_in[3u * p + 2u] = vec4<f32>(position, 0.0);
-    active_pixels[p] = u32(gbuf[o] > train.weights2.z);
+    active_pixels[p] = u32(gbuf[o] > train.shade_alpha_min);
     let d = depth_normal_at(p);
     var n = vec3<f32>(0.0);
     if d.len > 0.0 {
@@ -107,7 +107,7 @@ fn prepare_pixels(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wo
 fn depth_normal_scale() -> f32 {
     let count = bitcast<f32>(status[SUM_FIRST + SLOT_DEPTH_NORMAL_COUNT]);
     if count > 0.0 {
-        return train.weights2.x / count;
+        return train.lambda_depth_normal / count;
     }
     return 0.0;
 }
@@ -118,7 +118,7 @@ fn depth_normal_backward(
     @builtin(num_workgroups) nwg: vec3<u32>,
 ) {
     let p = pixel_index(gid, nwg);
-    if p >= train.dims.z {
+    if p >= train.pixels {
         return;
     }
     var gdx = vec3<f32>(0.0);
@@ -157,10 +157,10 @@ fn assemble_upstream(
     @builtin(num_workgroups) nwg: vec3<u32>,
 ) {
     let p = pixel_index(gid, nwg);
-    if p >= train.dims.z {
+    if p >= train.pixels {
         return;
     }
-    let w = train.dims.x;
+    let w = train.width;
     let i = p % w;
     let j = p / w;
     // dx(i, j) = P(i+1, j) − P(i−1, j): P(i, j) receives +gdx(i−1, j) − gdx(i+1, j).
@@ -174,7 +174,7 @@ fn assemble_upstream(
     if j >= 1u {
         gp += gdy_at(p - w);
     }
-    if j + 1u < train.dims.y {
+    if j + 1u < train.height {
         gp -= gdy_at(p + w);
     }
     var up: array<f32, 10>;
@@ -186,7 +186,7 @@ fn assemble_upstream(
     for (var k = 0u; k < 3u; k++) {
         up[2u + k] += scale * dn_grad[6u * p + k];
     }
-    if train.mode.x != 0u && active_pixels[p] != 0u {
+    if train.shaded != 0u && active_pixels[p] != 0u {
         // The shader's gradients: normal (3), albedo (3), roughness, IoR.
         for (var k = 0u; k < 8u; k++) {
             up[2u + k] += shade_grads[8u * p + k];

@@ -9,10 +9,17 @@
 // workgroups on a 2-D grid.
 
 struct AdamParams {
-    // surfels, unused (3).
-    counts: vec4<u32>,
-    // β1, β2, ε, the densification statistics' pixel-to-NDC factor (½ max(width, height)).
-    betas: vec4<f32>,
+    // Surfels to update.
+    surfels: u32,
+    pad0: u32,
+    pad1: u32,
+    pad2: u32,
+    // Adam's β1, β2 and ε; the densification statistics' pixel-to-NDC factor of the screen-space
+    // gradient (½ max(width, height)).
+    beta1: f32,
+    beta2: f32,
+    eps: f32,
+    ndc_scale: f32,
     // Per raw value slot (the layout of `Raw`, 16 slots): learning rate, 1 / (1 − β1ᵗ),
     // 1 / (1 − β2ᵗ) of its group, and whether the group is trained this step (1) or frozen (0).
     lr: array<vec4<f32>, 4>,
@@ -46,12 +53,12 @@ fn index_1d(gid: vec3<u32>, nwg: vec3<u32>) -> u32 {
 @compute @workgroup_size(THREADS)
 fn adam(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
     let i = index_1d(gid, nwg);
-    if i >= adam_params.counts.x || atomicLoad(&step_status[STATUS_OVERFLOW]) != 0u {
+    if i >= adam_params.surfels || atomicLoad(&step_status[STATUS_OVERFLOW]) != 0u {
         return;
     }
-    let beta1 = adam_params.betas.x;
-    let beta2 = adam_params.betas.y;
-    let eps = adam_params.betas.z;
+    let beta1 = adam_params.beta1;
+    let beta2 = adam_params.beta2;
+    let eps = adam_params.eps;
     var finite = true;
     for (var slot = 0u; slot < 15u; slot++) {
         let q = slot / 4u;
@@ -76,7 +83,7 @@ fn adam(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
     }
     let g2d = raw_grad[16u * i + MEAN2D_GRAD];
     if g2d > 0.0 {
-        grad_sum[i] += g2d * adam_params.betas.w;
+        grad_sum[i] += g2d * adam_params.ndc_scale;
         seen[i] += 1u;
     }
 }

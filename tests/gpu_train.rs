@@ -504,7 +504,7 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
     }) else {
         return;
     };
-    let gpu = phygap::pipeline::backend::Engine::Gpu(Box::new(gpu));
+    let gpu = phygap::pipeline::backend::Engine::Gpu(gpu);
     let dir = tempfile::tempdir().unwrap();
     let options = phygap::pipeline::synth::SynthOptions {
         views: 6,
@@ -751,7 +751,7 @@ fn a_device_run_remeshes_gridmap_without_failures() {
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
     };
-    let gpu = phygap::pipeline::backend::Engine::Gpu(Box::new(gpu));
+    let gpu = phygap::pipeline::backend::Engine::Gpu(gpu);
     let dir = tempfile::tempdir().unwrap();
     let options = phygap::pipeline::synth::SynthOptions {
         shape: phygap::pipeline::synth::Shape::Torus,

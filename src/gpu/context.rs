@@ -5,6 +5,10 @@
 //! environment variable (e.g. `vulkan`). Adapters are ranked discrete > integrated > virtual >
 //! other > cpu. A software adapter is one whose device type is `Cpu` or whose name is a known
 //! software rasterizer (llvmpipe/lavapipe, SwiftShader, WARP).
+//!
+//! Threading: discovery and device creation block the calling thread (`pollster`); a
+//! [`GpuContext`] is shared by reference, and its users serialize their work on it
+//! (`super::device`).
 
 use std::fmt;
 

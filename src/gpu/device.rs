@@ -1,7 +1,8 @@
 //! The device the gpu kernels run on, and what every kernel module does with it: compile a
-//! pipeline, create storage buffers checked against the device's binding limit, bind them, size
-//! 1-D dispatch grids, encode (optionally timed) compute passes, submit and read buffers back, and
-//! turn the device's validation and out-of-memory errors into [`GpuError`]s.
+//! kernel of the table in [`super::shaders`] (its bind group layout built from the table), create
+//! storage buffers checked against the device's binding limit, bind them by their WGSL names,
+//! size 1-D dispatch grids, encode (optionally timed) compute passes, submit and read buffers
+//! back, and turn the device's validation and out-of-memory errors into [`GpuError`]s.
 //!
 //! Threading: work on one [`Device`] is serialized by [`Device::scoped`] (wgpu's error scopes are
 //! one stack per device, so two threads inside it at once would pop each other's scopes).
@@ -11,6 +12,7 @@ use std::sync::{Mutex, PoisonError};
 use wgpu::util::DeviceExt;
 
 use super::profile::PassProfiler;
+use super::shaders::{KernelSpec, Variant};
 use super::{GpuContext, GpuError};
 use crate::core::raster::StageTime;
 
@@ -21,9 +23,24 @@ pub(super) const GROUP: u32 = 256;
 /// largest element of any kernel is a projected surfel (7 × vec4).
 pub(super) const MIN_BINDING_BYTES: u64 = 112;
 
-/// An opened adapter with its limits, the pass profiler and the lock that serializes work.
+/// A compiled kernel: its pipeline, the layout of its bind group and its entry in the table.
+pub(super) struct Kernel {
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+    spec: &'static KernelSpec,
+}
+
+impl Kernel {
+    pub(super) fn pipeline(&self) -> &wgpu::ComputePipeline {
+        &self.pipeline
+    }
+}
+
+/// An opened adapter with its limits, the kernel variant its features choose, the pass profiler
+/// and the lock that serializes work.
 pub struct Device {
     ctx: GpuContext,
+    variant: Variant,
     /// The largest buffer a binding may hold: the device's limit, or less (to test splitting).
     binding_limit: u64,
     profiler: Option<PassProfiler>,
@@ -31,9 +48,15 @@ pub struct Device {
 }
 
 impl Device {
-    /// With `max_binding_bytes`, buffers above it count as beyond the binding limit; with
-    /// `profile`, every pass is timed where the adapter has `TIMESTAMP_QUERY`.
-    pub(super) fn new(ctx: GpuContext, max_binding_bytes: Option<u64>, profile: bool) -> Self {
+    /// Kernels are compiled as `variant`; with `max_binding_bytes`, buffers above it count as
+    /// beyond the binding limit; with `profile`, every pass is timed where the adapter has
+    /// `TIMESTAMP_QUERY`.
+    pub(super) fn new(
+        ctx: GpuContext,
+        variant: Variant,
+        max_binding_bytes: Option<u64>,
+        profile: bool,
+    ) -> Self {
         let limits = ctx.device.limits();
         let device_limit =
             u64::from(limits.max_storage_buffer_binding_size).min(limits.max_buffer_size);
@@ -46,12 +69,18 @@ impl Device {
             binding_limit: max_binding_bytes.map_or(device_limit, |m| m.min(device_limit)),
             profiler,
             ctx,
+            variant,
             exclusive: Mutex::new(()),
         }
     }
 
     pub fn context(&self) -> &GpuContext {
         &self.ctx
+    }
+
+    /// The kernel variant the adapter's features chose.
+    pub(super) fn variant(&self) -> Variant {
+        self.variant
     }
 
     pub(super) fn wgpu(&self) -> &wgpu::Device {
@@ -67,29 +96,40 @@ impl Device {
         self.binding_limit
     }
 
-    /// Compiles the concatenated `sources` into a compute pipeline with entry point `entry`.
-    /// Errors surface in the caller's error scope (see [`Device::compile_all`]).
-    pub(super) fn pipeline(
-        &self,
-        label: &str,
-        sources: &[&str],
-        entry: &str,
-    ) -> wgpu::ComputePipeline {
-        let module = self
-            .wgpu()
-            .create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some(label),
-                source: wgpu::ShaderSource::Wgsl(sources.concat().into()),
-            });
-        self.wgpu()
-            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(label),
-                layout: None,
-                module: &module,
-                entry_point: Some(entry),
-                compilation_options: Default::default(),
-                cache: None,
-            })
+    /// Compiles `spec` (its files as this device's variant chooses them) into a compute pipeline
+    /// whose bind group layout holds the table's bindings. Errors surface in the caller's error
+    /// scope (see [`Device::compile_all`]): a WGSL error, or a binding the table and the WGSL
+    /// disagree on.
+    pub(super) fn kernel(&self, spec: &'static KernelSpec) -> Kernel {
+        let device = self.wgpu();
+        let entries: Vec<wgpu::BindGroupLayoutEntry> =
+            spec.all_bindings().map(|b| b.layout_entry()).collect();
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some(spec.name),
+            entries: &entries,
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(spec.name),
+            bind_group_layouts: &[&layout],
+            push_constant_ranges: &[],
+        });
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(spec.name),
+            source: wgpu::ShaderSource::Wgsl(spec.source(self.variant).into()),
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(spec.name),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: Some(spec.entry),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        Kernel {
+            pipeline,
+            layout,
+            spec,
+        }
     }
 
     /// Runs `build` (which compiles pipelines with [`Device::pipeline`]) inside a validation
@@ -176,22 +216,54 @@ impl Device {
             })
     }
 
-    /// A bind group of `pipeline`'s group 0 with each `(binding, buffer)` bound whole.
+    /// A bind group of `kernel` with each `(name, buffer)` bound whole at the binding of that
+    /// WGSL name.
+    ///
+    /// # Panics
+    /// When a name is not one of the kernel's bindings, or a binding is left out or given twice
+    /// (a call site disagrees with the table in [`super::shaders`]).
     pub(super) fn bind(
         &self,
-        pipeline: &wgpu::ComputePipeline,
-        buffers: &[(u32, &wgpu::Buffer)],
+        kernel: &Kernel,
+        buffers: &[(&str, &wgpu::Buffer)],
     ) -> wgpu::BindGroup {
-        let entries: Vec<wgpu::BindGroupEntry> = buffers
-            .iter()
-            .map(|&(binding, buffer)| wgpu::BindGroupEntry {
-                binding,
-                resource: buffer.as_entire_binding(),
+        self.bind_resources(
+            kernel,
+            buffers
+                .iter()
+                .map(|&(name, buffer)| (name, buffer.as_entire_binding())),
+        )
+    }
+
+    /// [`Device::bind`] with any resources (e.g. a slice of a buffer).
+    pub(super) fn bind_resources<'a>(
+        &self,
+        kernel: &Kernel,
+        resources: impl IntoIterator<Item = (&'a str, wgpu::BindingResource<'a>)>,
+    ) -> wgpu::BindGroup {
+        let spec = kernel.spec;
+        let entries: Vec<wgpu::BindGroupEntry> = resources
+            .into_iter()
+            .map(|(name, resource)| wgpu::BindGroupEntry {
+                binding: spec.number_of(name),
+                resource,
             })
             .collect();
+        for binding in spec.all_bindings() {
+            let given = entries
+                .iter()
+                .filter(|e| e.binding == binding.number)
+                .count();
+            assert!(
+                given == 1,
+                "kernel `{}`: binding `{}` given {given} times",
+                spec.name,
+                binding.name
+            );
+        }
         self.wgpu().create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &pipeline.get_bind_group_layout(0),
+            label: Some(spec.name),
+            layout: &kernel.layout,
             entries: &entries,
         })
     }
@@ -226,12 +298,12 @@ impl Device {
         })
     }
 
-    /// One pass running `pipeline` over `threads` invocations of a 1-D kernel (none for 0).
+    /// One pass running `kernel` over `threads` invocations of a 1-D kernel (none for 0).
     pub(super) fn dispatch_1d(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         label: &'static str,
-        pipeline: &wgpu::ComputePipeline,
+        kernel: &Kernel,
         group: &wgpu::BindGroup,
         threads: u64,
     ) -> Result<(), GpuError> {
@@ -240,7 +312,7 @@ impl Device {
         }
         let (x, y) = self.grid(threads)?;
         let mut pass = self.begin_pass(encoder, label);
-        pass.set_pipeline(pipeline);
+        pass.set_pipeline(&kernel.pipeline);
         pass.set_bind_group(0, group, &[]);
         pass.dispatch_workgroups(x, y, 1);
         Ok(())

@@ -1,10 +1,16 @@
 //! Rust mirrors of the WGSL uniform and storage structs, declared once with [`wgsl_mirror!`]:
-//! the macro writes the `#[repr(C)]` struct and a description of its fields (offset, size,
-//! scalar type), and each mirror's test (`assert_mirrors`) parses the WGSL with naga, lays it
-//! out as the device will, and checks that the Rust struct has the WGSL struct's size and that
-//! every Rust field covers exactly the WGSL members at its bytes, of the same scalar type. A
-//! field swapped, resized or retyped on one side fails there instead of in a parity test. The
+//! the macro writes the `#[repr(C)]` struct and a description of its fields (name, offset, size,
+//! scalar type), and each mirror's test (`assert_mirrors`) parses the WGSL of a kernel that reads
+//! the struct with naga, lays it out as the device will, and checks that the Rust struct has the
+//! WGSL struct's size and, member by member, its names, offsets, sizes and scalar types. A field
+//! renamed, swapped, resized or retyped on one side fails there instead of in a parity test. The
 //! descriptions exist in test builds only.
+//!
+//! Uniform blocks name every value (`near: f32`, `width: u32`, explicit `padN` where a block
+//! needs padding) instead of packing them positionally into vectors; a vector member is a vector
+//! (a rotation column, a camera centre) or an array of values indexed by slot.
+//!
+//! Threading: plain `Pod` data, written on the calling thread and uploaded by its owner.
 
 /// The scalar type of a WGSL member or of a Rust field's elements.
 #[cfg(test)]
@@ -89,13 +95,13 @@ macro_rules! wgsl_mirror {
 }
 pub(crate) use wgsl_mirror;
 
-/// Parses `sources` (concatenated, as a pipeline composes them) and asserts that `T` mirrors
-/// its WGSL struct: same size, and each Rust field spans exactly the WGSL members that start
-/// within its bytes, back to back, all of its scalar type.
+/// Parses the module of `kernel` (as its pipeline composes it) and asserts that `T` mirrors
+/// its WGSL struct: the same size, and field by field the WGSL members in order, each of the same
+/// name, offset, size and scalar type.
 #[cfg(test)]
-pub(crate) fn assert_mirrors<T: WgslMirror>(sources: &[&str]) {
+pub(crate) fn assert_mirrors<T: WgslMirror>(kernel: &super::shaders::KernelSpec) {
     use naga::{ScalarKind as Kind, TypeInner};
-    let source = sources.concat();
+    let source = kernel.source(super::shaders::Variant::ALL[0]);
     let module = naga::front::wgsl::parse_str(&source)
         .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
     let mut layouter = naga::proc::Layouter::default();
@@ -105,7 +111,7 @@ pub(crate) fn assert_mirrors<T: WgslMirror>(sources: &[&str]) {
         .types
         .iter()
         .find(|(_, t)| t.name.as_deref() == Some(name))
-        .unwrap_or_else(|| panic!("no struct `{name}` in the WGSL"));
+        .unwrap_or_else(|| panic!("no struct `{name}` in the WGSL of `{}`", kernel.name));
     let TypeInner::Struct { members, span } = &ty.inner else {
         panic!("`{name}` is not a struct");
     };
@@ -131,6 +137,7 @@ pub(crate) fn assert_mirrors<T: WgslMirror>(sources: &[&str]) {
             other => panic!("`{name}`: unsupported scalar {other:?}"),
         }
     };
+    // (name, offset, size, scalar type) of each member.
     let wgsl: Vec<(&str, usize, usize, ScalarKind)> = members
         .iter()
         .map(|m| {
@@ -142,40 +149,25 @@ pub(crate) fn assert_mirrors<T: WgslMirror>(sources: &[&str]) {
             )
         })
         .collect();
-    let mut covered = 0;
-    for field in T::fields() {
-        let end = field.offset + field.size;
-        let inside: Vec<_> = wgsl
-            .iter()
-            .filter(|m| m.1 >= field.offset && m.1 < end)
-            .collect();
-        let what = format!(
-            "`{name}` field `{}` (bytes {}..{end})",
-            field.name, field.offset
-        );
-        assert!(!inside.is_empty(), "{what}: no WGSL member there");
-        let mut at = field.offset;
-        for (member, offset, size, kind) in &inside {
-            assert_eq!(
-                *offset, at,
-                "{what}: WGSL member `{member}` is not where expected"
-            );
-            assert_eq!(
-                *kind, field.kind,
-                "{what}: WGSL member `{member}` has another type"
-            );
-            at += size;
-        }
+    let rust = T::fields();
+    for (i, (field, &(member, offset, size, kind))) in rust.iter().zip(&wgsl).enumerate() {
+        let what = format!("`{name}` field {i}");
+        assert_eq!(field.name, member, "{what}: Rust and WGSL names");
         assert_eq!(
-            at, end,
-            "{what}: the WGSL members there span {}..{at}",
-            field.offset
+            (field.offset, field.size),
+            (offset, size),
+            "{what} `{member}`: bytes (offset, size) in Rust and in WGSL"
         );
-        covered += inside.len();
+        assert_eq!(
+            field.kind, kind,
+            "{what} `{member}`: scalar type in Rust and in WGSL"
+        );
     }
     assert_eq!(
-        covered,
+        rust.len(),
         wgsl.len(),
-        "`{name}`: WGSL members without a Rust field"
+        "`{name}`: fields in Rust ({:?}) and members in WGSL ({:?})",
+        rust.iter().map(|f| f.name).collect::<Vec<_>>(),
+        wgsl.iter().map(|m| m.0).collect::<Vec<_>>()
     );
 }

@@ -23,18 +23,31 @@
 //! Still on the host: the environment map's prefilter and its transpose (every
 //! `envmap_prefilter_interval` steps), GridMap's mesh extraction and probe rendering (every
 //! `gridmap_interval` / `mesh_interval` steps), densification and evaluation.
+//!
+//! Modules: `shaders` (the table of kernels: what each is compiled from and binds), `device`
+//! (compiling, binding, dispatching, reading back), `layout` (the Rust mirrors of the WGSL
+//! structs), `params` (the rasterizer's parameters and buffer layouts), `band` (tile-row bands
+//! of large images), `sort` (the radix sort), `raster` ([`GpuBackend`]), `light` (lights laid
+//! out for the kernels), `shade` (PolarDR), `prefilter` (the environment prefilter), `train`
+//! ([`DeviceTrainer`]), `profile` (pass timings), `context` (adapters).
 
+mod band;
 mod context;
 mod device;
 mod layout;
+mod light;
+mod params;
 mod prefilter;
 mod profile;
 mod raster;
 mod shade;
+mod shaders;
+mod sort;
 mod train;
 
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};
-pub use raster::{AtomicsMode, GpuBackend, GpuOptions, Walk};
+pub use raster::{GpuBackend, GpuOptions};
+pub use shaders::{AtomicsMode, Walk};
 pub use train::{DeviceStep, DeviceStepResult, DeviceTrainer};
 
 use thiserror::Error;

@@ -13,13 +13,12 @@ use std::sync::Arc;
 
 use bytemuck::{Pod, Zeroable};
 
-use super::device::Device;
+use super::device::{Device, Kernel};
 use super::layout::wgsl_mirror;
+use super::shaders;
 use super::GpuError;
-use crate::core::envmap::prefilter::{ConvolutionTable, Kernel};
+use crate::core::envmap::prefilter::{ConvolutionTable, Kernel as Lobe};
 use crate::core::envmap::{CubeMap, PrefilterPlan};
-
-const PREFILTER: &str = include_str!("../../shaders/prefilter.wgsl");
 
 /// `NO_NORMALIZER` of prefilter.wgsl.
 const NO_NORMALIZER: u32 = u32::MAX;
@@ -31,11 +30,26 @@ wgsl_mirror! {
     /// `ConvParams` of prefilter.wgsl.
     #[derive(Clone, Copy, Debug, Pod, Zeroable)]
     struct ConvParamsGpu = "ConvParams" {
-        grid: [u32; 4],
-        tables: [u32; 4],
-        kind: [u32; 4],
-        kernel: [f32; 4],
-        io: [u32; 4],
+        texels: u32,
+        first_texel: u32,
+        first_block: u32,
+        blocks: u32,
+        first_entry: u32,
+        first_threshold: u32,
+        first_normalizer: u32,
+        transposed: u32,
+        kernel_kind: u32,
+        pad0: u32,
+        pad1: u32,
+        pad2: u32,
+        kernel_param: f32,
+        cos_cut: f32,
+        pad3: f32,
+        pad4: f32,
+        src_first: u32,
+        dst_first: u32,
+        accumulate: u32,
+        pad5: u32,
     }
 }
 
@@ -43,27 +57,33 @@ wgsl_mirror! {
     /// `LevelParams` of prefilter.wgsl.
     #[derive(Clone, Copy, Debug, Pod, Zeroable)]
     struct LevelParamsGpu = "LevelParams" {
-        level: [u32; 4],
-        same: [u32; 4],
+        texels: u32,
+        face_size: u32,
+        src_first: u32,
+        dst_first: u32,
+        same_size: u32,
+        pad0: u32,
+        pad1: u32,
+        pad2: u32,
     }
 }
 
 pub(super) struct PrefilterKernels {
-    convolve: wgpu::ComputePipeline,
-    activate: wgpu::ComputePipeline,
-    downsample: wgpu::ComputePipeline,
-    pyramid_transpose: wgpu::ComputePipeline,
-    raw_gradient: wgpu::ComputePipeline,
+    convolve: Kernel,
+    activate: Kernel,
+    downsample: Kernel,
+    pyramid_transpose: Kernel,
+    raw_gradient: Kernel,
 }
 
 impl PrefilterKernels {
     fn compile(device: &Device) -> Result<Self, GpuError> {
         device.compile_all(|d| PrefilterKernels {
-            convolve: d.pipeline("convolve", &[PREFILTER], "convolve"),
-            activate: d.pipeline("activate", &[PREFILTER], "activate"),
-            downsample: d.pipeline("downsample", &[PREFILTER], "downsample"),
-            pyramid_transpose: d.pipeline("pyramid_transpose", &[PREFILTER], "pyramid_transpose"),
-            raw_gradient: d.pipeline("raw_gradient", &[PREFILTER], "raw_gradient"),
+            convolve: d.kernel(&shaders::CONVOLVE),
+            activate: d.kernel(&shaders::ACTIVATE),
+            downsample: d.kernel(&shaders::DOWNSAMPLE),
+            pyramid_transpose: d.kernel(&shaders::PYRAMID_TRANSPOSE),
+            raw_gradient: d.kernel(&shaders::RAW_GRADIENT),
         })
     }
 }
@@ -105,11 +125,11 @@ pub(super) struct DevicePrefilter {
     raw_grad: wgpu::Buffer,
 }
 
-fn kernel_code(kernel: Kernel) -> (u32, f32) {
+fn kernel_code(kernel: Lobe) -> (u32, f32) {
     match kernel {
-        Kernel::Ggx { alpha2 } => (0, alpha2 as f32),
-        Kernel::Cosine => (1, 0.0),
-        Kernel::FresnelCosine { ior } => (2, ior as f32),
+        Lobe::Ggx { alpha2 } => (0, alpha2 as f32),
+        Lobe::Cosine => (1, 0.0),
+        Lobe::FresnelCosine { ior } => (2, ior as f32),
     }
 }
 
@@ -168,11 +188,18 @@ impl DevicePrefilter {
             let (kind, parameter) = kernel_code(table.kernel);
             let texels = grid.num_texels() as u32;
             let params = |transposed: u32| ConvParamsGpu {
-                grid: [texels, texel0, block0, grid.blocks.len() as u32],
-                tables: [entry0, threshold0, normalizer0, transposed],
-                kind: [kind, 0, 0, 0],
-                kernel: [parameter, table.cos_cut as f32, 0.0, 0.0],
-                io: [0; 4],
+                texels,
+                first_texel: texel0,
+                first_block: block0,
+                blocks: grid.blocks.len() as u32,
+                first_entry: entry0,
+                first_threshold: threshold0,
+                first_normalizer: normalizer0,
+                transposed,
+                kernel_kind: kind,
+                kernel_param: parameter,
+                cos_cut: table.cos_cut as f32,
+                ..ConvParamsGpu::zeroed()
             };
             (params(0), params(1), u64::from(texels))
         };
@@ -208,18 +235,10 @@ impl DevicePrefilter {
             .map(|(level, (mut forward, mut transposed, texels))| {
                 // Forward: pyramid level → light level; transposed: light gradient level →
                 // pyramid gradient level.
-                forward.io = [
-                    to_u32(pyramid_first[level]),
-                    to_u32(light_first[level]),
-                    0,
-                    0,
-                ];
-                transposed.io = [
-                    to_u32(light_first[level]),
-                    to_u32(pyramid_first[level]),
-                    0,
-                    0,
-                ];
+                forward.src_first = to_u32(pyramid_first[level]);
+                forward.dst_first = to_u32(light_first[level]);
+                transposed.src_first = to_u32(light_first[level]);
+                transposed.dst_first = to_u32(pyramid_first[level]);
                 Conv {
                     forward: uniform("prefilter level", bytemuck::bytes_of(&forward)),
                     transposed: uniform(
@@ -235,9 +254,12 @@ impl DevicePrefilter {
             .enumerate()
             .map(|(map, (mut forward, mut transposed, texels))| {
                 let light = irradiance_first + map as u64 * irradiance_values;
-                forward.io = [to_u32(pyramid_first[last]), to_u32(light), 0, 0];
+                forward.src_first = to_u32(pyramid_first[last]);
+                forward.dst_first = to_u32(light);
                 // The transposed irradiance adds into the coarsest level's gradient.
-                transposed.io = [to_u32(light), to_u32(pyramid_first[last]), 1, 0];
+                transposed.src_first = to_u32(light);
+                transposed.dst_first = to_u32(pyramid_first[last]);
+                transposed.accumulate = 1;
                 Conv {
                     forward: uniform("prefilter irradiance", bytemuck::bytes_of(&forward)),
                     transposed: uniform(
@@ -254,22 +276,20 @@ impl DevicePrefilter {
                 from_above: (l > 0).then(|| {
                     let same = u32::from(plan.grids[l].size == plan.grids[l - 1].size);
                     let down = LevelParamsGpu {
-                        level: [
-                            to_u32(level_texels[l]),
-                            plan.grids[l].size as u32,
-                            to_u32(pyramid_first[l - 1]),
-                            to_u32(pyramid_first[l]),
-                        ],
-                        same: [same, 0, 0, 0],
+                        texels: to_u32(level_texels[l]),
+                        face_size: plan.grids[l].size as u32,
+                        src_first: to_u32(pyramid_first[l - 1]),
+                        dst_first: to_u32(pyramid_first[l]),
+                        same_size: same,
+                        ..LevelParamsGpu::zeroed()
                     };
                     let up = LevelParamsGpu {
-                        level: [
-                            to_u32(level_texels[l - 1]),
-                            plan.grids[l - 1].size as u32,
-                            to_u32(pyramid_first[l]),
-                            to_u32(pyramid_first[l - 1]),
-                        ],
-                        same: [same, 0, 0, 0],
+                        texels: to_u32(level_texels[l - 1]),
+                        face_size: plan.grids[l - 1].size as u32,
+                        src_first: to_u32(pyramid_first[l]),
+                        dst_first: to_u32(pyramid_first[l - 1]),
+                        same_size: same,
+                        ..LevelParamsGpu::zeroed()
                     };
                     (
                         uniform("pyramid level", bytemuck::bytes_of(&down)),
@@ -336,17 +356,17 @@ impl DevicePrefilter {
         let group = device.bind(
             &k.convolve,
             &[
-                (0, params),
-                (1, &self.dirs),
-                (2, &self.solid_angle),
-                (3, &self.blocks),
-                (14, &self.block_starts),
-                (4, &self.block_texels),
-                (5, &self.block_dirs),
-                (6, &self.thresholds),
-                (7, &self.normalizers),
-                (8, src),
-                (9, dst),
+                ("conv", params),
+                ("dirs", &self.dirs),
+                ("solid_angle", &self.solid_angle),
+                ("blocks", &self.blocks),
+                ("block_starts", &self.block_starts),
+                ("block_texels", &self.block_texels),
+                ("block_dirs", &self.block_dirs),
+                ("thresholds", &self.thresholds),
+                ("normalizers", &self.normalizers),
+                ("src", src),
+                ("dst", dst),
             ],
         );
         device.dispatch_1d(encoder, "prefilter", &k.convolve, &group, texels)
@@ -368,12 +388,19 @@ impl DevicePrefilter {
         let k = &self.kernels;
         let group = device.bind(
             &k.activate,
-            &[(11, &self.raw), (12, &self.pyramid), (13, &self.derivative)],
+            &[
+                ("raw", &self.raw),
+                ("pyramid", &self.pyramid),
+                ("derivative", &self.derivative),
+            ],
         );
         device.dispatch_1d(encoder, "activate", &k.activate, &group, raw.len() as u64)?;
         for level in &self.levels {
             if let Some((down, _)) = &level.from_above {
-                let group = device.bind(&k.downsample, &[(10, down), (12, &self.pyramid)]);
+                let group = device.bind(
+                    &k.downsample,
+                    &[("level", down), ("pyramid", &self.pyramid)],
+                );
                 device.dispatch_1d(
                     encoder,
                     "downsample",
@@ -417,8 +444,10 @@ impl DevicePrefilter {
         }
         for l in (1..self.levels.len()).rev() {
             if let Some((_, up)) = &self.levels[l].from_above {
-                let group =
-                    device.bind(&k.pyramid_transpose, &[(10, up), (12, &self.pyramid_grad)]);
+                let group = device.bind(
+                    &k.pyramid_transpose,
+                    &[("level", up), ("pyramid", &self.pyramid_grad)],
+                );
                 let values = self.levels[l - 1].texels * 3;
                 device.dispatch_1d(
                     encoder,
@@ -432,9 +461,9 @@ impl DevicePrefilter {
         let group = device.bind(
             &k.raw_gradient,
             &[
-                (9, &self.raw_grad),
-                (12, &self.pyramid_grad),
-                (13, &self.derivative),
+                ("dst", &self.raw_grad),
+                ("pyramid", &self.pyramid_grad),
+                ("derivative", &self.derivative),
             ],
         );
         device.dispatch_1d(
@@ -458,7 +487,7 @@ mod tests {
 
     #[test]
     fn prefilter_params_mirror_the_wgsl() {
-        crate::gpu::layout::assert_mirrors::<ConvParamsGpu>(&[PREFILTER]);
-        crate::gpu::layout::assert_mirrors::<LevelParamsGpu>(&[PREFILTER]);
+        crate::gpu::layout::assert_mirrors::<ConvParamsGpu>(&shaders::CONVOLVE);
+        crate::gpu::layout::assert_mirrors::<LevelParamsGpu>(&shaders::DOWNSAMPLE);
     }
 }

@@ -24,15 +24,15 @@ pub enum Engine {
     Cpu(CpuBackend),
     /// The f32 SIMD host engine.
     Fast(FastBackend),
-    /// The wgpu engine (boxed: it holds the device's pipelines and buffers).
-    Gpu(Box<GpuBackend>),
+    /// The wgpu engine.
+    Gpu(GpuBackend),
 }
 
 impl Engine {
     /// The gpu engine, for the device trainer; `None` for the host engines.
     pub fn gpu(&self) -> Option<&GpuBackend> {
         match self {
-            Engine::Gpu(gpu) => Some(gpu.as_ref()),
+            Engine::Gpu(gpu) => Some(gpu),
             Engine::Cpu(_) | Engine::Fast(_) => None,
         }
     }
@@ -45,7 +45,7 @@ impl Deref for Engine {
         match self {
             Engine::Cpu(cpu) => cpu,
             Engine::Fast(fast) => fast,
-            Engine::Gpu(gpu) => gpu.as_ref(),
+            Engine::Gpu(gpu) => gpu,
         }
     }
 }
@@ -67,11 +67,9 @@ pub fn select_with(choice: BackendChoice, options: GpuOptions) -> Result<Engine,
     match choice {
         BackendChoice::Cpu => Ok(Engine::Cpu(CpuBackend)),
         BackendChoice::Fast => Ok(Engine::Fast(FastBackend::new())),
-        BackendChoice::Gpu => Ok(Engine::Gpu(Box::new(gpu(GpuContext::new(
-            AdapterRequirement::Any,
-        )?)?))),
+        BackendChoice::Gpu => Ok(Engine::Gpu(gpu(GpuContext::new(AdapterRequirement::Any)?)?)),
         BackendChoice::Auto => match GpuContext::new(AdapterRequirement::Hardware).and_then(gpu) {
-            Ok(gpu) => Ok(Engine::Gpu(Box::new(gpu))),
+            Ok(gpu) => Ok(Engine::Gpu(gpu)),
             Err(e) => {
                 info!("backend auto: using fast ({e})");
                 Ok(Engine::Fast(FastBackend::new()))

@@ -1,12 +1,17 @@
 //! The resident trainer's device buffers: the surfels' raw parameters, Adam moments and
 //! densification statistics (and their conversion from and to the host's f64 training state),
 //! the tile entries of the binning sort, and the per-pixel buffers of one image size.
+//!
+//! Threading: created and read back on the calling thread, inside the trainer's
+//! [`Device::scoped`] calls.
 
 use super::super::device::Device;
-use super::super::raster::{
-    raw_surfels, RawGpu, ENTRY_BYTES, NUM_ACC, NUM_OUT, NUM_RAW_GRAD, PROJ_BYTES, RADIX_BLOCK, TILE,
+use super::super::light::ShadeParamsGpu;
+use super::super::params::{
+    raw_surfels, ParamsGpu, RawGpu, ENTRY_BYTES, NUM_ACC, NUM_OUT, NUM_RAW_GRAD, PROJ_BYTES, TILE,
 };
 use super::super::shade::{GRAD_FLOATS, INPUT_VECTORS, STOKES_FLOATS};
+use super::super::sort::RADIX_BLOCK;
 use super::super::GpuError;
 use super::kernels::{SCAN_BLOCK, SLOTS};
 use crate::core::densify::DensifyStats;
@@ -252,15 +257,9 @@ impl FrameBuffers {
             height,
             pixels: p,
             grid,
-            raster_params: uniform(
-                "raster params",
-                size_of::<super::super::raster::ParamsGpu>(),
-            ),
+            raster_params: uniform("raster params", size_of::<ParamsGpu>()),
             train_params: uniform("train params", size_of::<super::kernels::TrainParamsGpu>()),
-            shade_params: uniform(
-                "shade params",
-                size_of::<super::super::shade::ShadeParamsGpu>(),
-            ),
+            shade_params: uniform("shade params", size_of::<ShadeParamsGpu>()),
             ranges: device.storage("tile ranges", tiles * 8, COPY)?,
             gbuf: floats("g-buffers", NUM_OUT as u64)?,
             final_t: floats("final transmittance", 1)?,

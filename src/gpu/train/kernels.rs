@@ -1,5 +1,9 @@
-//! The resident trainer's own kernels (`shaders/scan.wgsl`, `train_*.wgsl`) and the uniform
-//! parameters they read. The rasterization and shading kernels are the [`super::GpuBackend`]'s.
+//! The resident trainer's own kernels (`shaders/scan.wgsl`, `train_*.wgsl`; what each is compiled
+//! from and binds is in [`crate::gpu::shaders`]) and the uniform parameters they read. The
+//! rasterization and shading kernels are the [`super::GpuBackend`]'s.
+//!
+//! Threading: the parameters are built on the calling thread; the kernels' threading is in their
+//! WGSL files.
 
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
@@ -10,16 +14,10 @@ use crate::core::loss::LossWeights;
 use crate::core::optim::AdamConfig;
 use crate::core::raster::RasterSettings;
 use crate::core::render::SHADE_ALPHA_MIN;
-use crate::gpu::device::Device;
+use crate::gpu::device::{Device, Kernel};
 use crate::gpu::layout::wgsl_mirror;
+use crate::gpu::shaders;
 use crate::gpu::GpuError;
-
-const SCAN: &str = include_str!("../../../shaders/scan.wgsl");
-const TRAIN_COMMON: &str = include_str!("../../../shaders/train_common.wgsl");
-const TRAIN_PARAMS: &str = include_str!("../../../shaders/train_params.wgsl");
-const TRAIN_PIXELS: &str = include_str!("../../../shaders/train_pixels.wgsl");
-const TRAIN_LOSS: &str = include_str!("../../../shaders/train_loss.wgsl");
-const TRAIN_UPDATE: &str = include_str!("../../../shaders/train_update.wgsl");
 
 /// Counts per block of `scan_blocks` (`SCAN_BLOCK`).
 pub(super) const SCAN_BLOCK: u64 = 1024;
@@ -35,46 +33,39 @@ pub(super) const SUM_FIRST: usize = 8;
 
 /// The resident trainer's kernels.
 pub(super) struct TrainKernels {
-    pub(super) scan_blocks: wgpu::ComputePipeline,
-    pub(super) scan_sums: wgpu::ComputePipeline,
-    pub(super) scan_add: wgpu::ComputePipeline,
-    pub(super) prepare_pixels: wgpu::ComputePipeline,
-    pub(super) depth_normal_backward: wgpu::ComputePipeline,
-    pub(super) assemble_upstream: wgpu::ComputePipeline,
-    pub(super) compose: wgpu::ComputePipeline,
-    pub(super) ssim_moments_h: wgpu::ComputePipeline,
-    pub(super) ssim_moments_v: wgpu::ComputePipeline,
-    pub(super) ssim_adjoint_h: wgpu::ComputePipeline,
-    pub(super) loss_chain: wgpu::ComputePipeline,
-    pub(super) reduce_losses: wgpu::ComputePipeline,
-    pub(super) adam: wgpu::ComputePipeline,
-    pub(super) accumulate_light: wgpu::ComputePipeline,
+    pub(super) scan_blocks: Kernel,
+    pub(super) scan_sums: Kernel,
+    pub(super) scan_add: Kernel,
+    pub(super) prepare_pixels: Kernel,
+    pub(super) depth_normal_backward: Kernel,
+    pub(super) assemble_upstream: Kernel,
+    pub(super) compose: Kernel,
+    pub(super) ssim_moments_h: Kernel,
+    pub(super) ssim_moments_v: Kernel,
+    pub(super) ssim_adjoint_h: Kernel,
+    pub(super) loss_chain: Kernel,
+    pub(super) reduce_losses: Kernel,
+    pub(super) adam: Kernel,
+    pub(super) accumulate_light: Kernel,
 }
 
 impl TrainKernels {
     pub(super) fn compile(device: &Device) -> Result<Self, GpuError> {
-        device.compile_all(|d| {
-            let pixels =
-                |entry: &str| d.pipeline(entry, &[TRAIN_COMMON, TRAIN_PARAMS, TRAIN_PIXELS], entry);
-            let loss =
-                |entry: &str| d.pipeline(entry, &[TRAIN_COMMON, TRAIN_PARAMS, TRAIN_LOSS], entry);
-            let update = |entry: &str| d.pipeline(entry, &[TRAIN_COMMON, TRAIN_UPDATE], entry);
-            TrainKernels {
-                scan_blocks: d.pipeline("scan_blocks", &[SCAN], "scan_blocks"),
-                scan_sums: d.pipeline("scan_sums", &[SCAN], "scan_sums"),
-                scan_add: d.pipeline("scan_add", &[SCAN], "scan_add"),
-                prepare_pixels: pixels("prepare_pixels"),
-                depth_normal_backward: pixels("depth_normal_backward"),
-                assemble_upstream: pixels("assemble_upstream"),
-                compose: loss("compose"),
-                ssim_moments_h: loss("ssim_moments_h"),
-                ssim_moments_v: loss("ssim_moments_v"),
-                ssim_adjoint_h: loss("ssim_adjoint_h"),
-                loss_chain: loss("loss_chain"),
-                reduce_losses: loss("reduce_losses"),
-                adam: update("adam"),
-                accumulate_light: update("accumulate_light"),
-            }
+        device.compile_all(|d| TrainKernels {
+            scan_blocks: d.kernel(&shaders::SCAN_BLOCKS),
+            scan_sums: d.kernel(&shaders::SCAN_SUMS),
+            scan_add: d.kernel(&shaders::SCAN_ADD),
+            prepare_pixels: d.kernel(&shaders::PREPARE_PIXELS),
+            depth_normal_backward: d.kernel(&shaders::DEPTH_NORMAL_BACKWARD),
+            assemble_upstream: d.kernel(&shaders::ASSEMBLE_UPSTREAM),
+            compose: d.kernel(&shaders::COMPOSE),
+            ssim_moments_h: d.kernel(&shaders::SSIM_MOMENTS_H),
+            ssim_moments_v: d.kernel(&shaders::SSIM_MOMENTS_V),
+            ssim_adjoint_h: d.kernel(&shaders::SSIM_ADJOINT_H),
+            loss_chain: d.kernel(&shaders::LOSS_CHAIN),
+            reduce_losses: d.kernel(&shaders::REDUCE_LOSSES),
+            adam: d.kernel(&shaders::ADAM),
+            accumulate_light: d.kernel(&shaders::ACCUMULATE_LIGHT),
         })
     }
 }
@@ -86,7 +77,7 @@ wgsl_mirror! {
         pub(super) n: u32,
         pub(super) capacity: u32,
         pub(super) max_groups: u32,
-        pub(super) unused: u32,
+        pub(super) pad0: u32,
     }
 }
 
@@ -94,15 +85,35 @@ wgsl_mirror! {
     /// `TrainParams` of train_params.wgsl.
     #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
     pub(super) struct TrainParamsGpu = "TrainParams" {
-        pub(super) dims: [u32; 4],
-        pub(super) mode: [u32; 4],
-        pub(super) theta: [f32; 4],
-        pub(super) weights: [f32; 4],
-        pub(super) weights2: [f32; 4],
-        pub(super) rot: [[f32; 4]; 3],
-        pub(super) origin: [f32; 4],
-        pub(super) intr: [f32; 4],
-        pub(super) gauss: [f32; 12],
+        width: u32,
+        height: u32,
+        pixels: u32,
+        groups: u32,
+        shaded: u32,
+        stokes_loss: u32,
+        has_theta: u32,
+        pad0: u32,
+        cos_2theta: f32,
+        sin_2theta: f32,
+        unpolarized_scale: f32,
+        lambda_extra_l1: f32,
+        lambda_ssim: f32,
+        lambda_stokes: f32,
+        lambda_mask: f32,
+        lambda_normal_smooth: f32,
+        lambda_depth_normal: f32,
+        normalize_alpha_min: f32,
+        shade_alpha_min: f32,
+        pad1: f32,
+        rot0: [f32; 4],
+        rot1: [f32; 4],
+        rot2: [f32; 4],
+        origin: [f32; 4],
+        fx: f32,
+        fy: f32,
+        cx: f32,
+        cy: f32,
+        gauss: [f32; 12],
     }
 }
 
@@ -127,44 +138,34 @@ impl TrainParamsGpu {
         let r = camera.rotation_opencv();
         let window = crate::core::loss::ssim::gaussian_kernel();
         TrainParamsGpu {
-            dims: [
-                frame.width,
-                frame.height,
-                frame.pixels as u32,
-                frame.groups(),
-            ],
-            mode: [
-                u32::from(plan.shaded),
-                u32::from(plan.stokes_loss),
-                u32::from(plan.theta.is_some()),
-                0,
-            ],
-            theta: [
-                cos2 as f32,
-                sin2 as f32,
-                plan.unpolarized_scale as f32,
-                when(plan.extra_l1, weights.lambda_stokes),
-            ],
-            weights: [
-                weights.lambda_ssim as f32,
-                when(plan.stokes_loss, weights.lambda_stokes),
-                weights.lambda_mask as f32,
-                when(plan.normal_smooth, weights.lambda_normal_smooth),
-            ],
-            weights2: [
-                when(plan.depth_normal, weights.lambda_depth_normal),
-                settings.normalize_alpha_min as f32,
-                SHADE_ALPHA_MIN as f32,
-                0.0,
-            ],
-            rot: [v4(r.x_axis), v4(r.y_axis), v4(r.z_axis)],
+            width: frame.width,
+            height: frame.height,
+            pixels: frame.pixels as u32,
+            groups: frame.groups(),
+            shaded: u32::from(plan.shaded),
+            stokes_loss: u32::from(plan.stokes_loss),
+            has_theta: u32::from(plan.theta.is_some()),
+            pad0: 0,
+            cos_2theta: cos2 as f32,
+            sin_2theta: sin2 as f32,
+            unpolarized_scale: plan.unpolarized_scale as f32,
+            lambda_extra_l1: when(plan.extra_l1, weights.lambda_stokes),
+            lambda_ssim: weights.lambda_ssim as f32,
+            lambda_stokes: when(plan.stokes_loss, weights.lambda_stokes),
+            lambda_mask: weights.lambda_mask as f32,
+            lambda_normal_smooth: when(plan.normal_smooth, weights.lambda_normal_smooth),
+            lambda_depth_normal: when(plan.depth_normal, weights.lambda_depth_normal),
+            normalize_alpha_min: settings.normalize_alpha_min as f32,
+            shade_alpha_min: SHADE_ALPHA_MIN as f32,
+            pad1: 0.0,
+            rot0: v4(r.x_axis),
+            rot1: v4(r.y_axis),
+            rot2: v4(r.z_axis),
             origin: v4(camera.origin()),
-            intr: [
-                camera.fx as f32,
-                camera.fy as f32,
-                camera.cx as f32,
-                camera.cy as f32,
-            ],
+            fx: camera.fx as f32,
+            fy: camera.fy as f32,
+            cx: camera.cx as f32,
+            cy: camera.cy as f32,
             gauss: std::array::from_fn(|k| window.get(k).map_or(0.0, |&v| v as f32)),
         }
     }
@@ -175,8 +176,14 @@ wgsl_mirror! {
     /// whether it is trained.
     #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
     pub(super) struct AdamParamsGpu = "AdamParams" {
-        pub(super) counts: [u32; 4],
-        pub(super) betas: [f32; 4],
+        surfels: u32,
+        pad0: u32,
+        pad1: u32,
+        pad2: u32,
+        beta1: f32,
+        beta2: f32,
+        eps: f32,
+        ndc_scale: f32,
         pub(super) lr: [f32; 16],
         pub(super) bias1: [f32; 16],
         pub(super) bias2: [f32; 16],
@@ -196,13 +203,11 @@ impl AdamParamsGpu {
         steps: &[(&str, Option<u64>); 7],
     ) -> Self {
         let mut params = AdamParamsGpu {
-            counts: [surfels, 0, 0, 0],
-            betas: [
-                config.beta1 as f32,
-                config.beta2 as f32,
-                config.eps as f32,
-                (0.5 * f64::from(frame.width.max(frame.height))) as f32,
-            ],
+            surfels,
+            beta1: config.beta1 as f32,
+            beta2: config.beta2 as f32,
+            eps: config.eps as f32,
+            ndc_scale: (0.5 * f64::from(frame.width.max(frame.height))) as f32,
             ..AdamParamsGpu::default()
         };
         for ((&(_, slots), rate), &(_, taken)) in GROUP_SLOTS.iter().zip(rates).zip(steps) {
@@ -230,11 +235,7 @@ mod tests {
     use rand::{Rng, SeedableRng};
 
     /// A kernel, its bindings and its workgroup grid.
-    type Stage<'a> = (
-        &'a wgpu::ComputePipeline,
-        Vec<(u32, &'a wgpu::Buffer)>,
-        (u32, u32),
-    );
+    type Stage<'a> = (&'a Kernel, Vec<(&'a str, &'a wgpu::Buffer)>, (u32, u32));
 
     fn backend() -> Option<GpuBackend> {
         match GpuContext::new(AdapterRequirement::Any) {
@@ -253,9 +254,9 @@ mod tests {
     #[test]
     fn trainer_params_mirror_the_wgsl() {
         use crate::gpu::layout::assert_mirrors;
-        assert_mirrors::<ScanParamsGpu>(&[SCAN]);
-        assert_mirrors::<TrainParamsGpu>(&[TRAIN_COMMON, TRAIN_PARAMS, TRAIN_PIXELS]);
-        assert_mirrors::<AdamParamsGpu>(&[TRAIN_COMMON, TRAIN_UPDATE]);
+        assert_mirrors::<ScanParamsGpu>(&shaders::SCAN_BLOCKS);
+        assert_mirrors::<TrainParamsGpu>(&shaders::PREPARE_PIXELS);
+        assert_mirrors::<AdamParamsGpu>(&shaders::ADAM);
     }
 
     /// The three scan kernels give the exclusive prefix sum of random tile counts, the total,
@@ -307,7 +308,7 @@ mod tests {
                 n,
                 capacity,
                 max_groups,
-                unused: 0,
+                pad0: 0,
             };
             let params = device.uniform("scan", bytemuck::bytes_of(&params));
             let blocks = device.workgroup_grid(n64.div_ceil(SCAN_BLOCK)).unwrap();
@@ -316,28 +317,37 @@ mod tests {
                 (
                     &kernels.scan_blocks,
                     vec![
-                        (0, &params),
-                        (1, &counts_buf),
-                        (2, &offsets),
-                        (3, &block_sums),
+                        ("scan", &params),
+                        ("counts", &counts_buf),
+                        ("offsets", &offsets),
+                        ("block_sums", &block_sums),
                     ],
                     blocks,
                 ),
                 (
                     &kernels.scan_sums,
-                    vec![(0, &params), (3, &block_sums), (4, &status), (5, &dispatch)],
+                    vec![
+                        ("scan", &params),
+                        ("block_sums", &block_sums),
+                        ("status", &status),
+                        ("dispatch", &dispatch),
+                    ],
                     (1, 1),
                 ),
                 (
                     &kernels.scan_add,
-                    vec![(0, &params), (2, &offsets), (3, &block_sums)],
+                    vec![
+                        ("scan", &params),
+                        ("offsets", &offsets),
+                        ("block_sums", &block_sums),
+                    ],
                     blocks,
                 ),
             ];
-            for (pipeline, bindings, (x, y)) in &stages {
-                let group = device.bind(pipeline, bindings);
+            for (kernel, bindings, (x, y)) in &stages {
+                let group = device.bind(kernel, bindings);
                 let mut pass = device.begin_pass(&mut encoder, "scan");
-                pass.set_pipeline(pipeline);
+                pass.set_pipeline(kernel.pipeline());
                 pass.set_bind_group(0, &group, &[]);
                 pass.dispatch_workgroups(*x, *y, 1);
             }

@@ -35,9 +35,10 @@ use std::sync::Arc;
 use tracing::info_span;
 
 use super::device::Device;
+use super::light::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
+use super::params::{ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
 use super::prefilter::DevicePrefilter;
-use super::raster::{GpuBackend, ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
-use super::shade::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
+use super::raster::GpuBackend;
 use super::GpuError;
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
@@ -475,7 +476,7 @@ impl<'g> DeviceTrainer<'g> {
             n: surfels,
             capacity: capacity.min(u64::from(u32::MAX)) as u32,
             max_groups: device.wgpu().limits().max_compute_workgroups_per_dimension,
-            unused: 0,
+            pad0: 0,
         };
         queue.write_buffer(&self.scan_params, 0, bytemuck::bytes_of(&scan));
         let adam = AdamParamsGpu::new(&self.adam, surfels, frame, &step.rates, &self.group_steps);

@@ -1,20 +1,24 @@
 //! The passes of one device step, encoded in order into one command encoder and submitted
 //! together: binning (projection, the device scan, emission, the indirect radix sort and tile
 //! ranges), rasterization and shading, the losses, the backward passes, and the update. Each
-//! pass is one compute pass (timed when profiling); the bindings of each kernel are listed where
-//! it is dispatched (the pipelines' layouts are derived from the WGSL, so each list names exactly
-//! what the kernel reads and writes).
+//! pass is one compute pass (timed when profiling); each dispatch binds its kernel's buffers by
+//! their WGSL names (the numbers, and what each kernel binds, are in [`crate::gpu::shaders`]).
+//!
+//! Threading: encoding on the calling thread (one step at a time); the kernels' threading is in
+//! their WGSL files.
 
 use super::buffers::{EntryBuffers, FrameBuffers, SurfelBuffers, TARGET_FLOATS};
 use super::kernels::{SCAN_BLOCK, STATUS_WORDS};
 use super::{DeviceStep, DeviceTrainer, LightState, DEPTH_BITS};
-use crate::gpu::device::Device;
-use crate::gpu::raster::{varying_bits, KeyBits, SortDispatch, SortInputs, TILE};
-use crate::gpu::shade::{LightPipelines, ProbeBuffers};
+use crate::gpu::device::{Device, Kernel};
+use crate::gpu::light::ProbeBuffers;
+use crate::gpu::params::TILE;
+use crate::gpu::shade::LightPipelines;
+use crate::gpu::sort::{varying_bits, KeyBits, SortDispatch, SortInputs};
 use crate::gpu::GpuError;
 
-/// Bindings of one dispatch: (binding number, buffer).
-type Bindings<'b> = [(u32, &'b wgpu::Buffer)];
+/// Bindings of one dispatch: (WGSL name, buffer).
+type Bindings<'b> = [(&'static str, &'b wgpu::Buffer)];
 
 /// One step's command encoder and the dispatch shapes its passes use.
 struct Passes<'a> {
@@ -27,53 +31,43 @@ impl Passes<'_> {
     fn dispatch(
         &mut self,
         label: &'static str,
-        pipeline: &wgpu::ComputePipeline,
+        kernel: &Kernel,
         bindings: &Bindings,
         grid: (u32, u32),
     ) {
-        let group = self.device.bind(pipeline, bindings);
+        let group = self.device.bind(kernel, bindings);
         let mut pass = self.device.begin_pass(&mut self.encoder, label);
-        pass.set_pipeline(pipeline);
+        pass.set_pipeline(kernel.pipeline());
         pass.set_bind_group(0, &group, &[]);
         pass.dispatch_workgroups(grid.0, grid.1, 1);
     }
 
     /// One thread per pixel.
-    fn per_pixel(
-        &mut self,
-        label: &'static str,
-        pipeline: &wgpu::ComputePipeline,
-        bindings: &Bindings,
-    ) {
+    fn per_pixel(&mut self, label: &'static str, kernel: &Kernel, bindings: &Bindings) {
         let grid = self.frame.grid;
-        self.dispatch(label, pipeline, bindings, grid);
+        self.dispatch(label, kernel, bindings, grid);
     }
 
     /// One 8×8 workgroup per tile.
-    fn per_tile(
-        &mut self,
-        label: &'static str,
-        pipeline: &wgpu::ComputePipeline,
-        bindings: &Bindings,
-    ) {
+    fn per_tile(&mut self, label: &'static str, kernel: &Kernel, bindings: &Bindings) {
         let grid = (
             self.frame.width.div_ceil(TILE),
             self.frame.height.div_ceil(TILE),
         );
-        self.dispatch(label, pipeline, bindings, grid);
+        self.dispatch(label, kernel, bindings, grid);
     }
 
     /// One thread per item (surfel, light value).
     fn per_item(
         &mut self,
         label: &'static str,
-        pipeline: &wgpu::ComputePipeline,
+        kernel: &Kernel,
         bindings: &Bindings,
         items: u64,
     ) -> Result<(), GpuError> {
-        let group = self.device.bind(pipeline, bindings);
+        let group = self.device.bind(kernel, bindings);
         self.device
-            .dispatch_1d(&mut self.encoder, label, pipeline, &group, items)
+            .dispatch_1d(&mut self.encoder, label, kernel, &group, items)
     }
 }
 
@@ -125,7 +119,12 @@ impl DeviceTrainer<'_> {
         passes.per_item(
             "project",
             &raster.project,
-            &[(0, rp), (1, &s.raw), (2, &s.proj), (3, &s.tile_counts)],
+            &[
+                ("params", rp),
+                ("raw", &s.raw),
+                ("proj", &s.proj),
+                ("tile_counts", &s.tile_counts),
+            ],
             n,
         )?;
         let blocks = device.workgroup_grid(n.div_ceil(SCAN_BLOCK).max(1))?;
@@ -134,10 +133,10 @@ impl DeviceTrainer<'_> {
             "scan",
             &k.scan_blocks,
             &[
-                (0, sp),
-                (1, &s.tile_counts),
-                (2, &s.offsets),
-                (3, &s.block_sums),
+                ("scan", sp),
+                ("counts", &s.tile_counts),
+                ("offsets", &s.offsets),
+                ("block_sums", &s.block_sums),
             ],
             blocks,
         );
@@ -145,27 +144,37 @@ impl DeviceTrainer<'_> {
             "scan",
             &k.scan_sums,
             &[
-                (0, sp),
-                (3, &s.block_sums),
-                (4, &self.status),
-                (5, &self.dispatch),
+                ("scan", sp),
+                ("block_sums", &s.block_sums),
+                ("status", &self.status),
+                ("dispatch", &self.dispatch),
             ],
             (1, 1),
         );
         passes.dispatch(
             "scan",
             &k.scan_add,
-            &[(0, sp), (2, &s.offsets), (3, &s.block_sums)],
+            &[
+                ("scan", sp),
+                ("offsets", &s.offsets),
+                ("block_sums", &s.block_sums),
+            ],
             blocks,
         );
         passes.per_item(
             "emit",
             &raster.emit,
-            &[(0, rp), (1, &s.proj), (2, &s.offsets), (3, &e.entries[0])],
+            &[
+                ("params", rp),
+                ("proj", &s.proj),
+                ("offsets", &s.offsets),
+                ("entries", &e.entries[0]),
+            ],
             n,
         )?;
         let tiles = f.width.div_ceil(TILE) * f.height.div_ceil(TILE);
-        let sorted = self.gpu.encode_sort(
+        let sorted = self.gpu.sort().encode(
+            device,
             &mut passes.encoder,
             e.entries.clone(),
             &SortInputs {
@@ -183,10 +192,14 @@ impl DeviceTrainer<'_> {
         )?;
         let group = device.bind(
             &raster.tile_ranges,
-            &[(3, &sorted), (4, &f.ranges), (5, &self.status)],
+            &[
+                ("entries", &sorted),
+                ("ranges", &f.ranges),
+                ("entry_count", &self.status),
+            ],
         );
         let mut pass = device.begin_pass(&mut passes.encoder, "tile_ranges");
-        pass.set_pipeline(&raster.tile_ranges);
+        pass.set_pipeline(raster.tile_ranges.pipeline());
         pass.set_bind_group(0, &group, &[]);
         pass.dispatch_workgroups_indirect(&self.dispatch, 12);
         Ok(sorted)
@@ -207,25 +220,25 @@ impl DeviceTrainer<'_> {
             "rasterize",
             &raster.rasterize,
             &[
-                (0, &f.raster_params),
-                (1, sorted),
-                (2, &f.ranges),
-                (3, &s.proj),
-                (4, &f.gbuf),
-                (5, &f.final_t),
-                (6, &f.contrib),
-                (7, &f.evals),
+                ("params", &f.raster_params),
+                ("entries", sorted),
+                ("ranges", &f.ranges),
+                ("proj", &s.proj),
+                ("gbuf", &f.gbuf),
+                ("final_t", &f.final_t),
+                ("contrib", &f.contrib),
+                ("evals", &f.evals),
             ],
         );
         passes.per_pixel(
             "prepare_pixels",
             &self.kernels.prepare_pixels,
             &[
-                (0, &f.train_params),
-                (1, &f.gbuf),
-                (2, &f.shade_in),
-                (3, &f.active),
-                (4, &f.depth_normal),
+                ("train", &f.train_params),
+                ("gbuf", &f.gbuf),
+                ("shade_in", &f.shade_in),
+                ("active_pixels", &f.active),
+                ("depth_normal", &f.depth_normal),
             ],
         );
         let light = self.light.as_ref().filter(|_| shaded)?;
@@ -235,10 +248,10 @@ impl DeviceTrainer<'_> {
             &self.gpu.shading().global
         };
         let mut bindings = vec![
-            (0, &f.shade_params),
-            (3, &f.shade_in),
-            (4, &f.active),
-            (5, &f.stokes),
+            ("params", &f.shade_params),
+            ("pixels", &f.shade_in),
+            ("active_pixels", &f.active),
+            ("stokes", &f.stokes),
         ];
         bindings.extend(light.buffers.bindings());
         bindings.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
@@ -255,44 +268,63 @@ impl DeviceTrainer<'_> {
         passes.per_pixel(
             "compose",
             &k.compose,
-            &[(0, tp), (1, &f.gbuf), (2, &f.stokes), (4, &f.pred)],
+            &[
+                ("train", tp),
+                ("gbuf", &f.gbuf),
+                ("stokes", &f.stokes),
+                ("pred", &f.pred),
+            ],
         );
         passes.per_pixel(
             "ssim_moments_h",
             &k.ssim_moments_h,
-            &[(0, tp), (3, &f.target), (4, &f.pred), (5, &f.blur_a)],
+            &[
+                ("train", tp),
+                ("target_image", &f.target),
+                ("pred", &f.pred),
+                ("blur_a", &f.blur_a),
+            ],
         );
         passes.per_pixel(
             "ssim_moments_v",
             &k.ssim_moments_v,
-            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b), (7, &f.partials)],
+            &[
+                ("train", tp),
+                ("blur_a", &f.blur_a),
+                ("blur_b", &f.blur_b),
+                ("partials", &f.partials),
+            ],
         );
         passes.per_pixel(
             "ssim_adjoint_h",
             &k.ssim_adjoint_h,
-            &[(0, tp), (5, &f.blur_a), (6, &f.blur_b)],
+            &[("train", tp), ("blur_a", &f.blur_a), ("blur_b", &f.blur_b)],
         );
         passes.per_pixel(
             "loss_chain",
             &k.loss_chain,
             &[
-                (0, tp),
-                (1, &f.gbuf),
-                (2, &f.stokes),
-                (3, &f.target),
-                (4, &f.pred),
-                (5, &f.blur_a),
-                (7, &f.partials),
-                (8, &f.d_stokes),
-                (9, &f.up_partial),
-                (10, &f.dn_grad),
-                (12, &f.depth_normal),
+                ("train", tp),
+                ("gbuf", &f.gbuf),
+                ("stokes", &f.stokes),
+                ("target_image", &f.target),
+                ("pred", &f.pred),
+                ("blur_a", &f.blur_a),
+                ("partials", &f.partials),
+                ("d_stokes", &f.d_stokes),
+                ("up_partial", &f.up_partial),
+                ("dn_grad", &f.dn_grad),
+                ("depth_normal", &f.depth_normal),
             ],
         );
         passes.dispatch(
             "reduce_losses",
             &k.reduce_losses,
-            &[(0, tp), (7, &f.partials), (11, &self.status)],
+            &[
+                ("train", tp),
+                ("partials", &f.partials),
+                ("status", &self.status),
+            ],
             (1, 1),
         );
     }
@@ -312,12 +344,12 @@ impl DeviceTrainer<'_> {
         if let Some((light, kernels)) = shading {
             passes.encoder.clear_buffer(&light.step_grad, 0, None);
             let mut bindings = vec![
-                (0, &f.shade_params),
-                (3, &f.shade_in),
-                (4, &f.active),
-                (5, &f.d_stokes),
-                (6, &f.shade_grads),
-                (8, &light.step_grad),
+                ("params", &f.shade_params),
+                ("pixels", &f.shade_in),
+                ("active_pixels", &f.active),
+                ("upstream", &f.d_stokes),
+                ("pixel_grads", &f.shade_grads),
+                ("grad_acc", &light.step_grad),
             ];
             bindings.extend(light.buffers.bindings());
             bindings.extend(self.probes.iter().flat_map(ProbeBuffers::bindings));
@@ -327,25 +359,25 @@ impl DeviceTrainer<'_> {
             "depth_normal_backward",
             &k.depth_normal_backward,
             &[
-                (0, tp),
-                (1, &f.gbuf),
-                (5, &f.dn_grad),
-                (6, &self.status),
-                (7, &f.gdxy),
+                ("train", tp),
+                ("gbuf", &f.gbuf),
+                ("dn_grad", &f.dn_grad),
+                ("status", &self.status),
+                ("gdxy", &f.gdxy),
             ],
         );
         passes.per_pixel(
             "assemble_upstream",
             &k.assemble_upstream,
             &[
-                (0, tp),
-                (3, &f.active),
-                (5, &f.dn_grad),
-                (6, &self.status),
-                (7, &f.gdxy),
-                (8, &f.up_partial),
-                (9, &f.shade_grads),
-                (10, &f.upstream),
+                ("train", tp),
+                ("active_pixels", &f.active),
+                ("dn_grad", &f.dn_grad),
+                ("status", &self.status),
+                ("gdxy", &f.gdxy),
+                ("up_partial", &f.up_partial),
+                ("shade_grads", &f.shade_grads),
+                ("upstream", &f.upstream),
             ],
         );
         let raster = self.gpu.raster();
@@ -354,26 +386,26 @@ impl DeviceTrainer<'_> {
             "rasterize_backward",
             &raster.rasterize_backward,
             &[
-                (0, rp),
-                (1, sorted),
-                (2, &f.ranges),
-                (3, &s.proj),
-                (4, &f.gbuf),
-                (5, &f.upstream),
-                (6, &f.final_t),
-                (7, &f.contrib),
-                (8, &s.acc),
+                ("params", rp),
+                ("entries", sorted),
+                ("ranges", &f.ranges),
+                ("proj", &s.proj),
+                ("gbuf", &f.gbuf),
+                ("upstream", &f.upstream),
+                ("final_t", &f.final_t),
+                ("contrib", &f.contrib),
+                ("grad_acc", &s.acc),
             ],
         );
         passes.per_item(
             "project_backward",
             &raster.project_backward,
             &[
-                (0, rp),
-                (1, &s.raw),
-                (2, &s.proj),
-                (3, &s.acc),
-                (4, &s.raw_grad),
+                ("params", rp),
+                ("raw", &s.raw),
+                ("proj", &s.proj),
+                ("grad_acc", &s.acc),
+                ("raw_grads", &s.raw_grad),
             ],
             s.count as u64,
         )
@@ -392,14 +424,14 @@ impl DeviceTrainer<'_> {
             "adam",
             &k.adam,
             &[
-                (0, &self.adam_params),
-                (1, &s.raw),
-                (2, &s.moment1),
-                (3, &s.moment2),
-                (4, &s.raw_grad),
-                (5, &s.grad_sum),
-                (6, &s.seen),
-                (7, &self.status),
+                ("adam_params", &self.adam_params),
+                ("raw", &s.raw),
+                ("moment1", &s.moment1),
+                ("moment2", &s.moment2),
+                ("raw_grad", &s.raw_grad),
+                ("grad_sum", &s.grad_sum),
+                ("seen", &s.seen),
+                ("step_status", &self.status),
             ],
             s.count as u64,
         )?;
@@ -408,9 +440,9 @@ impl DeviceTrainer<'_> {
                 "accumulate_light",
                 &k.accumulate_light,
                 &[
-                    (7, &self.status),
-                    (8, &light.step_grad),
-                    (9, &light.pending),
+                    ("step_status", &self.status),
+                    ("light_step", &light.step_grad),
+                    ("light_pending", &light.pending),
                 ],
                 light.host.gradient_bytes() / 4,
             )?;

@@ -9,6 +9,7 @@ use std::fs::{File, OpenOptions};
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
+use phygap::io::capture::colmap;
 use thiserror::Error;
 
 /// Bounds on what an archive may expand to.
@@ -218,7 +219,8 @@ fn open_archive(path: &Path) -> Result<(File, u64, ArchiveFormat), ArchiveError>
 }
 
 /// Extracts the archive at `archive` into the (empty or new) folder `target` and returns the
-/// capture root: `target`, or its single top-level folder when `transforms.json` is in there.
+/// capture root: `target`, or its single top-level folder when that holds the capture
+/// (`transforms.json` or a COLMAP model in `sparse/0/` or `sparse/`).
 pub fn extract(
     archive: &Path,
     target: &Path,
@@ -327,15 +329,20 @@ fn extract_tar(file: File, target: &Path, budget: &mut Budget) -> Result<(), Arc
     Ok(())
 }
 
+/// Whether `dir` is the root of a capture: it holds `transforms.json` or a COLMAP model.
+fn is_capture_root(dir: &Path) -> bool {
+    dir.join("transforms.json").is_file() || colmap::find_model(dir).is_some()
+}
+
 fn capture_root(target: &Path) -> PathBuf {
-    if target.join("transforms.json").is_file() {
+    if is_capture_root(target) {
         return target.to_owned();
     }
     let children: Vec<PathBuf> = std::fs::read_dir(target)
         .map(|dir| dir.filter_map(|e| e.ok().map(|e| e.path())).collect())
         .unwrap_or_default();
     match children.as_slice() {
-        [only] if only.is_dir() && only.join("transforms.json").is_file() => only.clone(),
+        [only] if only.is_dir() && is_capture_root(only) => only.clone(),
         _ => target.to_owned(),
     }
 }
@@ -381,6 +388,20 @@ mod tests {
                 "{bad}"
             );
         }
+    }
+
+    #[test]
+    fn a_colmap_folder_is_a_capture_root() {
+        let bytes = zip_bytes(&[
+            ("scan/sparse/0/cameras.txt", b"# none"),
+            ("scan/raw/a.png", b"xyz"),
+        ]);
+        let (dir, root) = extract_bytes(&bytes, ExtractLimits::default());
+        assert_eq!(root.unwrap(), dir.path().join("out/scan"));
+        // Without a model, the folder is not recognised and the archive's top is the root.
+        let bytes = zip_bytes(&[("scan/sparse/0/notes.txt", b"-"), ("scan/raw/a.png", b"x")]);
+        let (dir, root) = extract_bytes(&bytes, ExtractLimits::default());
+        assert_eq!(root.unwrap(), dir.path().join("out"));
     }
 
     #[test]

@@ -21,8 +21,8 @@ pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out
 #[openapi(
     info(
         title = "phygap reconstruction service",
-        description = "Upload a polarization capture (.zip or .tar holding transforms.json and \
-            its images), train a relightable model of it as a queued job, follow its progress, \
+        description = "Upload a polarization capture (.zip or .tar holding transforms.json or a \
+            COLMAP model, and its images or raw mosaic frames), train a relightable model of it as a queued job, follow its progress, \
             download its artifacts, and relight it under new environment maps. Every error is \
             `{\"error\": {\"code\", \"message\"}}`.\n\nWhen the server runs with tokens, every \
             /v1 route and /metrics need `Authorization: Bearer <token>`: the admin token \

@@ -252,8 +252,8 @@ async fn ingest(
     tag = "captures",
     operation_id = "upload_capture",
     summary = "Upload a capture archive",
-    description = "The body, a .zip or .tar holding transforms.json and its images, is streamed \
-        to disk, extracted safely and validated by the capture loader. A rejected upload leaves \
+    description = "The body, a .zip or .tar holding transforms.json (or a COLMAP model in \
+        sparse/0/) and its images or raw mosaic frames, is streamed to disk, extracted safely and validated by the capture loader. A rejected upload leaves \
         nothing behind.",
     request_body(content(
         (Binary = "application/zip"),

@@ -107,6 +107,14 @@ struct Answer {
     json: Value,
 }
 
+impl Answer {
+    /// The status and the error code of an error answer (`""` when the body has none).
+    fn error(&self) -> (u16, &str) {
+        let code = self.json["error"]["code"].as_str().unwrap_or("");
+        (self.status, code)
+    }
+}
+
 /// The served document, and the checks of answers against it.
 struct Spec {
     doc: Value,
@@ -312,10 +320,7 @@ async fn live_answers_match_the_declared_schemas() {
             send(anonymous, Method::GET, "/metrics").await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (401, &json!("unauthorized"))
-    );
+    assert_eq!(answer.error(), (401, "unauthorized"));
     let answer = spec
         .check(
             Method::GET,
@@ -323,10 +328,7 @@ async fn live_answers_match_the_declared_schemas() {
             send(&account, Method::GET, "/metrics").await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (403, &json!("forbidden"))
-    );
+    assert_eq!(answer.error(), (403, "forbidden"));
     let answer = spec
         .check(
             Method::GET,
@@ -380,10 +382,7 @@ async fn live_answers_match_the_declared_schemas() {
                 upload(&admin, body).await.unwrap(),
             )
             .await;
-        assert_eq!(
-            (answer.status, answer.json["error"]["code"].as_str()),
-            (status, Some(code))
-        );
+        assert_eq!(answer.error(), (status, code));
     }
     let answer = spec
         .check(
@@ -463,10 +462,7 @@ async fn live_answers_match_the_declared_schemas() {
         let answer = spec
             .check(Method::POST, "/v1/jobs", admin.post_job(&body, None).await)
             .await;
-        assert_eq!(
-            (answer.status, answer.json["error"]["code"].as_str()),
-            (status, Some(code))
-        );
+        assert_eq!(answer.error(), (status, code));
     }
     let too_long = "k".repeat(longest_key + 1);
     let answer = spec
@@ -476,10 +472,7 @@ async fn live_answers_match_the_declared_schemas() {
             admin.post_job(&request, Some(&too_long)).await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (400, &json!("invalid_idempotency_key"))
-    );
+    assert_eq!(answer.error(), (400, "invalid_idempotency_key"));
     let not_json = admin
         .client
         .post(admin.url("/v1/jobs"))
@@ -488,10 +481,7 @@ async fn live_answers_match_the_declared_schemas() {
         .await
         .unwrap();
     let answer = spec.check(Method::POST, "/v1/jobs", not_json).await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (400, &json!("invalid_json"))
-    );
+    assert_eq!(answer.error(), (400, "invalid_json"));
 
     // The queued job holds the capture, and has no model yet.
     let answer = spec
@@ -501,10 +491,7 @@ async fn live_answers_match_the_declared_schemas() {
             admin.delete_capture(&capture_id).await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (409, &json!("capture_in_use"))
-    );
+    assert_eq!(answer.error(), (409, "capture_in_use"));
     let answer = spec
         .check(
             Method::GET,
@@ -517,10 +504,7 @@ async fn live_answers_match_the_declared_schemas() {
             .await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (409, &json!("model_not_ready"))
-    );
+    assert_eq!(answer.error(), (409, "model_not_ready"));
     let answer = spec
         .check(
             Method::GET,
@@ -533,10 +517,7 @@ async fn live_answers_match_the_declared_schemas() {
             .await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (409, &json!("model_not_ready"))
-    );
+    assert_eq!(answer.error(), (409, "model_not_ready"));
     let answer = spec
         .check(
             Method::POST,
@@ -544,10 +525,7 @@ async fn live_answers_match_the_declared_schemas() {
             admin.relight(&queued, b"#?RADIANCE\n".to_vec(), "0").await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (409, &json!("model_not_ready"))
-    );
+    assert_eq!(answer.error(), (409, "model_not_ready"));
     let answer = spec
         .check(
             Method::POST,
@@ -589,10 +567,7 @@ async fn live_answers_match_the_declared_schemas() {
             admin.cancel(&queued).await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (409, &json!("job_finished"))
-    );
+    assert_eq!(answer.error(), (409, "job_finished"));
 
     // The trained job, its list, artifacts and viewer routes.
     admin.wait_succeeded(&trained).await;
@@ -633,10 +608,7 @@ async fn live_answers_match_the_declared_schemas() {
             send(&admin, Method::GET, "/v1/jobs?limit=many").await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (400, &json!("invalid_query"))
-    );
+    assert_eq!(answer.error(), (400, "invalid_query"));
     let answer = spec
         .check(
             Method::GET,
@@ -784,10 +756,7 @@ async fn live_answers_match_the_declared_schemas() {
     let answer = spec
         .check(Method::POST, "/v1/jobs/{id}/relight", response)
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (400, &json!("unknown_field"))
-    );
+    assert_eq!(answer.error(), (400, "unknown_field"));
     let message = answer.json["error"]["message"].as_str().unwrap();
     let accepted: BTreeSet<String> = message
         .split_once("(expected ")
@@ -804,10 +773,7 @@ async fn live_answers_match_the_declared_schemas() {
             admin.relight(&trained, b"not an image".to_vec(), "0").await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (415, &json!("unsupported_envmap"))
-    );
+    assert_eq!(answer.error(), (415, "unsupported_envmap"));
     let answer = spec
         .check(
             Method::POST,
@@ -817,10 +783,7 @@ async fn live_answers_match_the_declared_schemas() {
                 .await,
         )
         .await;
-    assert_eq!(
-        (answer.status, &answer.json["error"]["code"]),
-        (422, &json!("invalid_rotate_deg"))
-    );
+    assert_eq!(answer.error(), (422, "invalid_rotate_deg"));
     let envmap_path = dir.path().join("sky.exr");
     phygap::formats::image_io::write_exr(
         &envmap_path,

@@ -14,6 +14,7 @@ mod frame;
 mod hull;
 mod images;
 mod json;
+mod lens;
 pub mod mosaic;
 mod raw;
 pub mod simulate;
@@ -167,7 +168,10 @@ pub fn load(path: &Path) -> Result<Capture, CaptureError> {
         .filter(|p| !p.as_os_str().is_empty())
         .unwrap_or(Path::new("."));
     let root = folder.canonicalize().unwrap_or_else(|_| folder.to_owned());
-    load_document(&json_path, root, &document, Vec::new())
+    let (distortions, lens_problems) = lens::frame_distortions(&document);
+    let mut capture = load_document(&json_path, root, &document, lens_problems)?;
+    lens::undistort_views(&mut capture, &distortions);
+    Ok(capture)
 }
 
 /// Validates and loads a transforms document whose paths are relative to `root`; `problems`

@@ -23,14 +23,13 @@ pub mod undistort;
 use std::path::{Path, PathBuf};
 
 use glam::{DMat3, DMat4, DQuat, DVec3};
-use rayon::prelude::*;
 use serde::Serialize;
 use serde_json::{json, Map, Value};
 use thiserror::Error;
 
 use super::error::Problem;
 use super::json::check_relative_path;
-use super::{Capture, CaptureError, Measurement};
+use super::{Capture, CaptureError};
 use crate::core::camera::{Camera, CameraConvention, Intrinsics};
 pub use model::{ColmapCamera, ColmapImage, ColmapModel, ColmapPoint, ModelFormat};
 pub use undistort::Distortion;
@@ -344,25 +343,7 @@ pub fn load(root: &Path, location: &ModelLocation) -> Result<Capture, CaptureErr
     let mut capture =
         super::load_document(&location.dir, root, &Value::Object(document), problems)?;
 
-    capture
-        .views
-        .par_iter_mut()
-        .filter_map(|view| distortions[view.frame_index].map(|d| (view, d)))
-        .for_each(|(view, d)| {
-            let camera = view.camera;
-            let fix = |image: &mut crate::formats::image_io::Image| {
-                *image = undistort::undistort_image(image, &camera, &d).0;
-            };
-            match &mut view.measurement {
-                Measurement::Stokes { s0, s1, s2 } => {
-                    fix(s0);
-                    fix(s1);
-                    fix(s2);
-                }
-                Measurement::Polarizer { image, .. } | Measurement::Rgb { image } => fix(image),
-            }
-            view.mask = undistort::undistort_mask(&view.mask, &camera, &d);
-        });
+    super::lens::undistort_views(&mut capture, &distortions);
     capture.points = model
         .points
         .iter()

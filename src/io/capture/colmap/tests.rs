@@ -4,7 +4,7 @@
 //! give errors that say what is wrong where.
 
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use glam::DMat4;
 
@@ -14,7 +14,7 @@ use crate::core::camera::Camera;
 use crate::formats::image_io::{read_image, write_exr, write_png, Image};
 use crate::io::capture::mosaic::Sensor;
 use crate::io::capture::simulate::{write_raw_capture, SimulateOptions};
-use crate::io::capture::{load, load_cameras};
+use crate::io::capture::{load, load_cameras, Measurement, View};
 use crate::pipeline::synth::{synth, SynthOptions};
 
 /// The OpenCV camera-to-world matrix of a camera (kept in OpenGL axes by [`Camera`]).
@@ -302,69 +302,58 @@ fn bilinear(image: &Image, u: f64, v: f64, c: usize) -> f32 {
     top * (1.0 - ty) + bottom * ty
 }
 
-#[test]
-fn opencv_views_are_undistorted_to_their_pinhole_images() {
-    let (_synth_dir, reference) = synth_capture(6, 64);
-    let distortion = Distortion {
-        k1: -0.5,
-        k2: 0.1,
-        p1: 5e-4,
-        p2: -3e-4,
+const LENS: Distortion = Distortion {
+    k1: -0.5,
+    k2: 0.1,
+    p1: 5e-4,
+    p2: -3e-4,
+};
+
+/// Writes what a lens with `LENS` records of `view` (at each pixel, the pinhole image where its
+/// undistorted ray lands): its Stokes images at `stokes` (S0, S1, S2) and its mask at `mask`.
+fn write_through_lens(view: &View, stokes: [PathBuf; 3], mask: PathBuf) {
+    let camera = view.camera;
+    let distorted = |image: &Image| {
+        Image::from_fn(image.width, image.height, image.channels, |i, j, o| {
+            let (xd, yd) = (
+                (i as f64 + 0.5 - camera.cx) / camera.fx,
+                (j as f64 + 0.5 - camera.cy) / camera.fy,
+            );
+            let (x, y) = LENS.undistort(xd, yd).unwrap();
+            let (u, v) = (camera.fx * x + camera.cx, camera.fy * y + camera.cy);
+            for (c, out) in o.iter_mut().enumerate() {
+                *out = bilinear(image, u, v, c);
+            }
+        })
     };
-    let dir = tempfile::tempdir().unwrap();
-    let mut model = model_of(&named_cameras(&reference));
-    for camera in model.cameras.values_mut() {
-        camera.model = "OPENCV".into();
-        camera
-            .params
-            .extend([distortion.k1, distortion.k2, distortion.p1, distortion.p2]);
-    }
-    // What a lens with this distortion records: at each pixel, the pinhole image where its
-    // undistorted ray lands.
-    for view in &reference.views {
-        let camera = view.camera;
-        let distorted = |image: &Image| {
-            Image::from_fn(image.width, image.height, image.channels, |i, j, o| {
-                let (xd, yd) = (
-                    (i as f64 + 0.5 - camera.cx) / camera.fx,
-                    (j as f64 + 0.5 - camera.cy) / camera.fy,
-                );
-                let (x, y) = distortion.undistort(xd, yd).unwrap();
-                let (u, v) = (camera.fx * x + camera.cx, camera.fy * y + camera.cy);
-                for (c, out) in o.iter_mut().enumerate() {
-                    *out = bilinear(image, u, v, c);
-                }
-            })
-        };
-        let stem = format!("{:03}", view.frame_index);
-        let Measurement::Stokes { s0, s1, s2 } = &view.measurement else {
-            panic!("synth views are full Stokes");
-        };
-        for (name, image) in [("s0", s0), ("s1", s1), ("s2", s2)] {
-            let path = dir.path().join(format!("{name}/{stem}.exr"));
-            std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-            write_exr(&path, &distorted(image)).unwrap();
-        }
-        let mask = distorted(&view.mask)
-            .data
-            .iter()
-            .map(|v| if *v > 0.5 { 1.0 } else { 0.0 })
-            .collect();
-        let path = dir.path().join(format!("masks/{stem}.png"));
+    let Measurement::Stokes { s0, s1, s2 } = &view.measurement else {
+        panic!("synth views are full Stokes");
+    };
+    for (path, image) in stokes.iter().zip([s0, s1, s2]) {
         std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-        write_png(
-            &path,
-            &Image {
-                data: mask,
-                ..view.mask.clone()
-            },
-            false,
-        )
-        .unwrap();
+        write_exr(path, &distorted(image)).unwrap();
     }
-    write_model(&model, &dir.path().join("sparse/0"), ModelFormat::Text).unwrap();
-    let capture = load(dir.path()).unwrap();
-    assert_eq!(capture.colmap.as_ref().unwrap().undistorted_views, 6);
+    let binary = distorted(&view.mask)
+        .data
+        .iter()
+        .map(|v| if *v > 0.5 { 1.0 } else { 0.0 })
+        .collect();
+    std::fs::create_dir_all(mask.parent().unwrap()).unwrap();
+    let image = Image {
+        data: binary,
+        ..view.mask.clone()
+    };
+    write_png(&mask, &image, false).unwrap();
+}
+
+/// Checks that `capture`'s views, loaded from images written through `LENS`, are `reference`'s
+/// pinhole views again: same cameras, S0 within interpolation error away from the silhouette
+/// (and much closer than the distorted S0 at `distorted_s0(frame)`), masks nearly equal.
+fn assert_undistorted(
+    capture: &Capture,
+    reference: &Capture,
+    distorted_s0: impl Fn(usize) -> PathBuf,
+) {
     let (mut error, mut before, mut total, mut mask_disagree, mut mask_pixels) =
         (0.0, 0.0, 0.0, 0, 0);
     for (ours, theirs) in capture.views.iter().zip(&reference.views) {
@@ -374,8 +363,7 @@ fn opencv_views_are_undistorted_to_their_pinhole_images() {
         else {
             panic!("Stokes views");
         };
-        let (raw, _) =
-            read_image(&dir.path().join(format!("s0/{:03}.exr", ours.frame_index))).unwrap();
+        let (raw, _) = read_image(&distorted_s0(ours.frame_index)).unwrap();
         for p in 0..a.num_pixels() {
             let (x, y) = (p % a.width, p / a.width);
             // Away from the silhouette, where both images are smooth.
@@ -398,11 +386,66 @@ fn opencv_views_are_undistorted_to_their_pinhole_images() {
     let (error, before) = (error / total, before / total);
     let disagree = mask_disagree as f64 / mask_pixels as f64;
     eprintln!(
-        "OPENCV undistortion: S0 error {error:.4} of mean S0 (distorted: {before:.4}); masks disagree on {disagree:.4} of the object"
+        "undistortion: S0 error {error:.4} of mean S0 (distorted: {before:.4}); masks disagree on {disagree:.4} of the object"
     );
     // The reference was interpolated once to make the lens's image and once more to undo it.
     assert!(error < 0.008 && before > 2.0 * error, "{error} {before}");
     assert!(disagree < 0.05, "{disagree}");
+}
+
+#[test]
+fn opencv_views_are_undistorted_to_their_pinhole_images() {
+    let (_synth_dir, reference) = synth_capture(6, 64);
+    let dir = tempfile::tempdir().unwrap();
+    let mut model = model_of(&named_cameras(&reference));
+    for camera in model.cameras.values_mut() {
+        camera.model = "OPENCV".into();
+        camera.params.extend([LENS.k1, LENS.k2, LENS.p1, LENS.p2]);
+    }
+    for view in &reference.views {
+        let stem = format!("{:03}", view.frame_index);
+        let stokes = ["s0", "s1", "s2"].map(|s| dir.path().join(format!("{s}/{stem}.exr")));
+        write_through_lens(view, stokes, dir.path().join(format!("masks/{stem}.png")));
+    }
+    write_model(&model, &dir.path().join("sparse/0"), ModelFormat::Text).unwrap();
+    let capture = load(dir.path()).unwrap();
+    assert_eq!(capture.colmap.as_ref().unwrap().undistorted_views, 6);
+    assert_undistorted(&capture, &reference, |frame| {
+        dir.path().join(format!("s0/{frame:03}.exr"))
+    });
+}
+
+/// The same lens given as nerfstudio's top-level `k1`, `k2`, `p1`, `p2` in `transforms.json`.
+#[test]
+fn transforms_json_lens_terms_are_undistorted_like_opencv_cameras() {
+    let (synth_dir, reference) = synth_capture(6, 64);
+    let json_path = synth_dir.path().join("transforms.json");
+    let mut document: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json_path).unwrap()).unwrap();
+    let frame_path = |frame: usize, key: &str| {
+        synth_dir
+            .path()
+            .join(document["frames"][frame][key].as_str().unwrap())
+    };
+    for view in &reference.views {
+        let k = view.frame_index;
+        let stokes = ["s0_path", "s1_path", "s2_path"].map(|key| frame_path(k, key));
+        write_through_lens(view, stokes, frame_path(k, "mask_path"));
+    }
+    let distorted_s0: Vec<PathBuf> = (0..reference.views.len())
+        .map(|k| frame_path(k, "s0_path"))
+        .collect();
+    for (key, value) in [
+        ("k1", LENS.k1),
+        ("k2", LENS.k2),
+        ("p1", LENS.p1),
+        ("p2", LENS.p2),
+    ] {
+        document[key] = serde_json::json!(value);
+    }
+    std::fs::write(&json_path, document.to_string()).unwrap();
+    let capture = load(synth_dir.path()).unwrap();
+    assert_undistorted(&capture, &reference, |frame| distorted_s0[frame].clone());
 }
 
 #[test]

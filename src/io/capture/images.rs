@@ -15,6 +15,9 @@ pub(crate) struct LoadedView {
     pub view: View,
     /// True when the frame has neither a mask file nor an alpha channel.
     pub whole_image_mask: bool,
+    /// The fraction of a raw frame's samples at the sensor's maximum (clipped highlights); 0 for
+    /// other frames.
+    pub clipped_fraction: f64,
 }
 
 /// Mask files store 8-bit values; > 127 is object.
@@ -103,6 +106,7 @@ pub(crate) fn load_view(spec: &FrameSpec, header: &Header) -> Result<LoadedView,
             ground_truth: spec.ground_truth.clone(),
         },
         whole_image_mask,
+        clipped_fraction: 0.0,
     })
 }
 

@@ -153,6 +153,10 @@ pub struct FrameSummary {
     pub dolp: Option<DolpStats>,
 }
 
+/// A raw frame with more than this fraction of its samples at the sensor's maximum gets a warning
+/// (a few hot pixels do not).
+const CLIPPED_WARNING_FRACTION: f64 = 1e-3;
+
 /// Loads a capture: `path` is a folder holding `transforms.json`, or a JSON file (e.g.
 /// `transforms_partial.json`); image paths are relative to the JSON file's folder. A folder
 /// without `transforms.json` but with a COLMAP model (`sparse/0/`) is read by [`colmap::load`].
@@ -227,11 +231,19 @@ pub(crate) fn load_document(
     };
     let mut views = Vec::with_capacity(loaded.len());
     let mut unmasked = Vec::new();
+    let mut clipped = Vec::new();
     for result in loaded {
         match result {
             Ok(loaded) => {
                 if loaded.whole_image_mask {
                     unmasked.push(loaded.view.frame_index.to_string());
+                }
+                if loaded.clipped_fraction > CLIPPED_WARNING_FRACTION {
+                    clipped.push(format!(
+                        "{} ({:.2} %)",
+                        loaded.view.frame_index,
+                        100.0 * loaded.clipped_fraction
+                    ));
                 }
                 views.push(loaded.view);
             }
@@ -259,6 +271,14 @@ pub(crate) fn load_document(
             "{} view(s) have no mask_path and no alpha channel; the whole image is treated as object (frames {})",
             unmasked.len(),
             unmasked.join(", ")
+        ));
+    }
+    if !clipped.is_empty() {
+        warnings.push(format!(
+            "{} raw frame(s) have samples at the sensor's maximum, where the four polarizer \
+             channels saturate and the Stokes estimate is biased: lower the exposure (frames {})",
+            clipped.len(),
+            clipped.join(", ")
         ));
     }
     for warning in &warnings {

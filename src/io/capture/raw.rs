@@ -492,6 +492,8 @@ pub(crate) fn load_view(
                 raw.bit_depth
             )));
         }
+        let clipped = counts.iter().filter(|&&c| c as f64 >= max).count();
+        let clipped_fraction = clipped as f64 / counts.len().max(1) as f64;
         let mosaic = Mosaic::from_counts(w, h, &counts, raw.bit_depth, raw.black_level)
             .map_err(|e| problem(format!("{shown}: {e}")))?;
         let polarizers = mosaic::demosaic(&mosaic, raw.sensor, raw.demosaic)
@@ -501,7 +503,7 @@ pub(crate) fn load_view(
             &polarizers.images,
             mosaic::channel_angles_image_y_up(y_down),
         );
-        Ok([s0.to_rgb(), s1.to_rgb(), s2.to_rgb()])
+        Ok(([s0.to_rgb(), s1.to_rgb(), s2.to_rgb()], clipped_fraction))
     });
     let stokes = stokes.map_err(|p| problems.push(p)).ok();
     let mask = spec
@@ -511,7 +513,7 @@ pub(crate) fn load_view(
         .transpose()
         .map_err(|p| problems.push(p))
         .ok();
-    let (Some([s0, s1, s2]), Some(mask)) = (stokes, mask) else {
+    let (Some(([s0, s1, s2], clipped_fraction)), Some(mask)) = (stokes, mask) else {
         return Err(problems);
     };
     let whole_image_mask = mask.is_none();
@@ -526,6 +528,7 @@ pub(crate) fn load_view(
             ground_truth: spec.ground_truth.clone(),
         },
         whole_image_mask,
+        clipped_fraction,
     })
 }
 

@@ -618,3 +618,34 @@ fn shared_captures_round_trip_through_simulated_sensors() {
         }
     }
 }
+
+/// Frames exposed so that highlights reach the sensor's maximum get a warning naming them; the
+/// same frames exposed within range get none.
+#[test]
+fn clipped_raw_frames_are_a_warning() {
+    let (_synth_dir, reference) = synth_capture(4, 32);
+    let full_scale = max_s0(&reference);
+    let within = SimulateOptions {
+        bit_depth: 12,
+        full_scale,
+        ..SimulateOptions::default()
+    };
+    let (_dir, loaded) = simulate(&reference, &within);
+    assert!(
+        !loaded.warnings.iter().any(|w| w.contains("maximum")),
+        "{:?}",
+        loaded.warnings
+    );
+    let overexposed = SimulateOptions {
+        full_scale: full_scale / 4.0,
+        ..within
+    };
+    let (_dir, loaded) = simulate(&reference, &overexposed);
+    let warning = loaded
+        .warnings
+        .iter()
+        .find(|w| w.contains("sensor's maximum"))
+        .unwrap_or_else(|| panic!("no clipping warning in {:?}", loaded.warnings));
+    assert!(warning.starts_with("4 raw frame(s)"), "{warning}");
+    assert!(warning.contains("frames 0 ("), "{warning}");
+}

@@ -15,7 +15,10 @@ use crate::pipeline::{CaptureInfo, Pipeline, PipelineError, RunOutcome};
 pub struct CorePipeline;
 
 fn load(capture_dir: &Path) -> Result<phygap::io::capture::Capture, PipelineError> {
-    phygap::io::capture::load(capture_dir).map_err(|e| PipelineError::InvalidCapture(e.to_string()))
+    phygap::io::capture::load(capture_dir).map_err(|e| PipelineError::InvalidCapture {
+        problems: e.problems().to_vec(),
+        message: e.to_string(),
+    })
 }
 
 /// The error of a core `stage` that failed while running.

@@ -6,11 +6,24 @@ use axum::response::{IntoResponse, Response};
 use serde::Serialize;
 use utoipa::ToSchema;
 
-/// An error answered to a client: HTTP status, stable machine-readable code, human message.
+/// An error answered to a client: HTTP status, stable machine-readable code, human message, and
+/// for a rejected capture each problem found.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ApiError {
     pub status: StatusCode,
     pub code: &'static str,
+    pub message: String,
+    pub problems: Vec<ProblemBody>,
+}
+
+/// One problem of a rejected capture: where (frame and key) and what.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, ToSchema)]
+pub struct ProblemBody {
+    /// `top level`, or the frame's index and main file, e.g. `frame 3 (raw/003.png)`.
+    pub frame: String,
+    /// The key in `transforms.json` (or `capture.json`, or the COLMAP record) at fault.
+    pub key: String,
+    /// What is wrong.
     pub message: String,
 }
 
@@ -28,6 +41,10 @@ pub struct ErrorDetail<'a> {
     code: &'a str,
     /// For people; may change between versions.
     message: &'a str,
+    /// Every problem of a rejected capture (`invalid_capture` only; absent otherwise).
+    #[serde(skip_serializing_if = "<[ProblemBody]>::is_empty")]
+    #[schema(required = false)]
+    problems: &'a [ProblemBody],
 }
 
 impl ApiError {
@@ -36,7 +53,13 @@ impl ApiError {
             status,
             code,
             message: message.into(),
+            problems: Vec::new(),
         }
+    }
+
+    /// This error with the problems of a rejected capture.
+    pub fn with_problems(self, problems: Vec<ProblemBody>) -> Self {
+        ApiError { problems, ..self }
     }
 
     pub fn bad_request(code: &'static str, message: impl Into<String>) -> Self {
@@ -90,15 +113,24 @@ impl std::error::Error for ApiError {}
 
 /// The JSON error body as bytes (also used by the panic handler and the auth layer).
 pub fn error_body(code: &str, message: &str) -> String {
+    detailed_error_body(code, message, &[])
+}
+
+fn detailed_error_body(code: &str, message: &str, problems: &[ProblemBody]) -> String {
     serde_json::to_string(&ErrorBody {
-        error: ErrorDetail { code, message },
+        error: ErrorDetail {
+            code,
+            message,
+            problems,
+        },
     })
     .unwrap_or_else(|_| r#"{"error":{"code":"internal","message":"unserializable error"}}"#.into())
 }
 
 impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
-        let mut response = (self.status, error_body(self.code, &self.message)).into_response();
+        let body = detailed_error_body(self.code, &self.message, &self.problems);
+        let mut response = (self.status, body).into_response();
         response.headers_mut().insert(
             header::CONTENT_TYPE,
             HeaderValue::from_static("application/json"),

@@ -34,9 +34,13 @@ pub enum RunOutcome {
 /// A failure of a pipeline stage.
 #[derive(Debug, Error)]
 pub enum PipelineError {
-    /// The capture breaks the capture format (the client's fault: answered with 422).
-    #[error("invalid capture: {0}")]
-    InvalidCapture(String),
+    /// The capture breaks the capture format (the client's fault: answered with 422), with every
+    /// problem found (empty when the capture could not be read at all).
+    #[error("invalid capture: {message}")]
+    InvalidCapture {
+        message: String,
+        problems: Vec<phygap::io::capture::Problem>,
+    },
     /// An input given to a job (environment map, cameras) is unusable.
     #[error("invalid input: {0}")]
     InvalidInput(String),

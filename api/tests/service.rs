@@ -450,9 +450,27 @@ async fn bad_uploads_are_rejected_and_leave_no_state() {
         assert_eq!(got_code, code, "{label}: {message}");
         assert!(message.contains(needle), "{label}: {message}");
         assert!(
-            !message.contains(&*dir.path().to_string_lossy()),
-            "{label}: the message shows a server path: {message}"
+            !response
+                .to_string()
+                .contains(&*dir.path().to_string_lossy()),
+            "{label}: the answer shows a server path: {response}"
         );
+        if label == "missing image" {
+            // Each problem is listed with its frame and key, as `phygap inspect` names it.
+            let problems = response["error"]["problems"].as_array().unwrap();
+            assert!(!problems.is_empty(), "{response}");
+            assert!(problems
+                .iter()
+                .all(|p| p["frame"].as_str().unwrap().starts_with("frame ")));
+            assert!(problems
+                .iter()
+                .any(|p| p["message"].as_str().unwrap().contains("missing file")));
+        } else {
+            assert!(
+                response["error"].get("problems").is_none(),
+                "{label}: {response}"
+            );
+        }
         assert_eq!(
             count_files(&dir.path().join("tmp")),
             0,

@@ -16,7 +16,7 @@ use utoipa::{IntoParams, ToSchema};
 
 use crate::archive::ArchiveError;
 use crate::auth::Caller;
-use crate::error::{ApiError, ErrorBody};
+use crate::error::{ApiError, ErrorBody, ProblemBody};
 use crate::openapi::Binary;
 use crate::pipeline::PipelineError;
 use crate::queue::new_id;
@@ -183,11 +183,20 @@ fn extract_and_file(
     let root = crate::archive::extract(archive, &extracted, &state.config.extract_limits)
         .map_err(archive_error)?;
     let info = state.pipeline.inspect(&root).map_err(|e| {
-        let message = match e {
-            PipelineError::InvalidCapture(m) => m,
-            other => other.to_string(),
+        let relative = |text: &str| relative_to_archive(text, &extracted);
+        let (message, problems) = match e {
+            PipelineError::InvalidCapture { message, problems } => (message, problems),
+            other => (other.to_string(), Vec::new()),
         };
-        ApiError::unprocessable("invalid_capture", relative_to_archive(&message, &extracted))
+        let problems = problems
+            .into_iter()
+            .map(|p| ProblemBody {
+                frame: relative(&p.frame),
+                key: p.key,
+                message: relative(&p.message),
+            })
+            .collect();
+        ApiError::unprocessable("invalid_capture", relative(&message)).with_problems(problems)
     })?;
     let dir = state.paths.capture_dir(id);
     std::fs::rename(&root, &dir).map_err(|e| ApiError::internal("filing the capture", e))?;

@@ -180,6 +180,18 @@ impl Spec {
     /// Checks an answer of `method template`: the document declares its status, the media type
     /// (or no body, when it declares none), and its JSON body validates against the declared
     /// schema.
+    /// Sends `method path` (a path of the operation `template`) as `client` and checks the answer.
+    async fn request(
+        &mut self,
+        client: &ApiClient,
+        method: Method,
+        template: &str,
+        path: &str,
+    ) -> Answer {
+        let response = client.send(method.clone(), path).await;
+        self.check(method, template, response).await
+    }
+
     async fn check(
         &mut self,
         method: Method,
@@ -257,10 +269,6 @@ impl Spec {
 }
 
 /// Sends `method path` with `client` and returns the answer.
-async fn send(client: &ApiClient, method: Method, path: &str) -> reqwest::Response {
-    client.send(method, path).await
-}
-
 /// The `data` of each event of a server-sent event stream, with its event name.
 fn sse_events(text: &str) -> Vec<(String, Value)> {
     text.split("\n\n")
@@ -298,52 +306,32 @@ async fn live_answers_match_the_declared_schemas() {
     assert_eq!(served.0, 200);
     assert_eq!(served.1, phygap_api::openapi::spec_json().unwrap());
     let mut spec = Spec::new(served.1);
-    let response = send(&admin, Method::GET, "/v1/openapi.json").await;
+    let response = admin.send(Method::GET, "/v1/openapi.json").await;
     spec.check(Method::GET, "/v1/openapi.json", response).await;
 
     // Service routes, and the token checks every protected route shares.
     let answer = spec
-        .check(
-            Method::GET,
-            "/healthz",
-            send(anonymous, Method::GET, "/healthz").await,
-        )
+        .request(anonymous, Method::GET, "/healthz", "/healthz")
         .await;
     assert_eq!(
         (answer.status, answer.json),
         (200, json!({ "status": "ok" }))
     );
     let answer = spec
-        .check(
-            Method::GET,
-            "/metrics",
-            send(anonymous, Method::GET, "/metrics").await,
-        )
+        .request(anonymous, Method::GET, "/metrics", "/metrics")
         .await;
     assert_eq!(answer.error(), (401, "unauthorized"));
     let answer = spec
-        .check(
-            Method::GET,
-            "/metrics",
-            send(&account, Method::GET, "/metrics").await,
-        )
+        .request(&account, Method::GET, "/metrics", "/metrics")
         .await;
     assert_eq!(answer.error(), (403, "forbidden"));
     let answer = spec
-        .check(
-            Method::GET,
-            "/metrics",
-            send(&admin, Method::GET, "/metrics").await,
-        )
+        .request(&admin, Method::GET, "/metrics", "/metrics")
         .await;
     assert_eq!(answer.status, 200);
     assert!(String::from_utf8(answer.body).unwrap().contains("phygap_"));
     let answer = spec
-        .check(
-            Method::GET,
-            "/v1/jobs",
-            send(anonymous, Method::GET, "/v1/jobs").await,
-        )
+        .request(anonymous, Method::GET, "/v1/jobs", "/v1/jobs")
         .await;
     assert_eq!(answer.status, 401);
 
@@ -385,10 +373,11 @@ async fn live_answers_match_the_declared_schemas() {
         assert_eq!(answer.error(), (status, code));
     }
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/captures/{id}",
-            send(&admin, Method::GET, &format!("/v1/captures/{capture_id}")).await,
+            &format!("/v1/captures/{capture_id}"),
         )
         .await;
     assert_eq!(
@@ -397,10 +386,11 @@ async fn live_answers_match_the_declared_schemas() {
     );
     // Another account's capture is not found.
     let answer = spec
-        .check(
+        .request(
+            &account,
             Method::GET,
             "/v1/captures/{id}",
-            send(&account, Method::GET, &format!("/v1/captures/{capture_id}")).await,
+            &format!("/v1/captures/{capture_id}"),
         )
         .await;
     assert_eq!(answer.status, 404);
@@ -493,28 +483,20 @@ async fn live_answers_match_the_declared_schemas() {
         .await;
     assert_eq!(answer.error(), (409, "capture_in_use"));
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}/material-mesh",
-            send(
-                &admin,
-                Method::GET,
-                &format!("/v1/jobs/{queued}/material-mesh"),
-            )
-            .await,
+            &format!("/v1/jobs/{queued}/material-mesh"),
         )
         .await;
     assert_eq!(answer.error(), (409, "model_not_ready"));
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}/ground-truth/{kind}/{view}",
-            send(
-                &admin,
-                Method::GET,
-                &format!("/v1/jobs/{queued}/ground-truth/s0/000.png"),
-            )
-            .await,
+            &format!("/v1/jobs/{queued}/ground-truth/s0/000.png"),
         )
         .await;
     assert_eq!(answer.error(), (409, "model_not_ready"));
@@ -542,10 +524,11 @@ async fn live_answers_match_the_declared_schemas() {
     // Its event stream ends with the job as it ended.
     admin.wait_state(&queued, "cancelled", LONG).await;
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}/events",
-            send(&admin, Method::GET, &format!("/v1/jobs/{queued}/events")).await,
+            &format!("/v1/jobs/{queued}/events"),
         )
         .await;
     let events = sse_events(&String::from_utf8(answer.body).unwrap());
@@ -572,10 +555,11 @@ async fn live_answers_match_the_declared_schemas() {
     // The trained job, its list, artifacts and viewer routes.
     admin.wait_succeeded(&trained).await;
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}",
-            send(&admin, Method::GET, &format!("/v1/jobs/{trained}")).await,
+            &format!("/v1/jobs/{trained}"),
         )
         .await;
     assert_eq!(
@@ -588,11 +572,7 @@ async fn live_answers_match_the_declared_schemas() {
         answer.json
     );
     let answer = spec
-        .check(
-            Method::GET,
-            "/v1/jobs",
-            send(&admin, Method::GET, "/v1/jobs?limit=5").await,
-        )
+        .request(&admin, Method::GET, "/v1/jobs", "/v1/jobs?limit=5")
         .await;
     let listed: Vec<&str> = answer.json["jobs"]
         .as_array()
@@ -602,32 +582,25 @@ async fn live_answers_match_the_declared_schemas() {
         .collect();
     assert_eq!(listed, [queued.as_str(), trained.as_str()]);
     let answer = spec
-        .check(
-            Method::GET,
-            "/v1/jobs",
-            send(&admin, Method::GET, "/v1/jobs?limit=many").await,
-        )
+        .request(&admin, Method::GET, "/v1/jobs", "/v1/jobs?limit=many")
         .await;
     assert_eq!(answer.error(), (400, "invalid_query"));
     let answer = spec
-        .check(
+        .request(
+            &account,
             Method::GET,
             "/v1/jobs/{id}",
-            send(&account, Method::GET, &format!("/v1/jobs/{trained}")).await,
+            &format!("/v1/jobs/{trained}"),
         )
         .await;
     assert_eq!(answer.status, 404);
 
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}/artifacts",
-            send(
-                &admin,
-                Method::GET,
-                &format!("/v1/jobs/{trained}/artifacts"),
-            )
-            .await,
+            &format!("/v1/jobs/{trained}/artifacts"),
         )
         .await;
     let artifacts = answer.json["artifacts"].as_array().unwrap().clone();
@@ -636,21 +609,18 @@ async fn live_answers_match_the_declared_schemas() {
         "{artifacts:?}"
     );
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}/artifacts",
-            send(&admin, Method::GET, "/v1/jobs/job_none/artifacts").await,
+            "/v1/jobs/job_none/artifacts",
         )
         .await;
     assert_eq!(answer.status, 404);
     let download = "/v1/jobs/{id}/artifacts/{name}";
     let metrics_path = format!("/v1/jobs/{trained}/artifacts/metrics.json");
     let answer = spec
-        .check(
-            Method::GET,
-            download,
-            send(&admin, Method::GET, &metrics_path).await,
-        )
+        .request(&admin, Method::GET, download, &metrics_path)
         .await;
     assert_eq!(answer.status, 200);
     assert!(serde_json::from_slice::<Value>(&answer.body).is_ok());
@@ -671,39 +641,25 @@ async fn live_answers_match_the_declared_schemas() {
         .await;
     assert_eq!(answer.status, 416);
     let missing = format!("/v1/jobs/{trained}/artifacts/nothing.bin");
-    let answer = spec
-        .check(
-            Method::GET,
-            download,
-            send(&admin, Method::GET, &missing).await,
-        )
-        .await;
+    let answer = spec.request(&admin, Method::GET, download, &missing).await;
     assert_eq!(answer.status, 404);
 
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}/material-mesh",
-            send(
-                &admin,
-                Method::GET,
-                &format!("/v1/jobs/{trained}/material-mesh"),
-            )
-            .await,
+            &format!("/v1/jobs/{trained}/material-mesh"),
         )
         .await;
     assert_eq!((answer.status, &answer.body[..3]), (200, &b"ply"[..]));
     let ground_truth = "/v1/jobs/{id}/ground-truth/{kind}/{view}";
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             ground_truth,
-            send(
-                &admin,
-                Method::GET,
-                &format!("/v1/jobs/{trained}/ground-truth/dolp/000.png"),
-            )
-            .await,
+            &format!("/v1/jobs/{trained}/ground-truth/dolp/000.png"),
         )
         .await;
     assert_eq!((answer.status, &answer.body[1..4]), (200, &b"PNG"[..]));
@@ -717,15 +673,11 @@ async fn live_answers_match_the_declared_schemas() {
         .clone();
     assert_eq!(kinds, json!(["s0", "dolp", "aolp"]));
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             ground_truth,
-            send(
-                &admin,
-                Method::GET,
-                &format!("/v1/jobs/{trained}/ground-truth/normal/000.png"),
-            )
-            .await,
+            &format!("/v1/jobs/{trained}/ground-truth/normal/000.png"),
         )
         .await;
     assert_eq!(answer.status, 404);
@@ -807,10 +759,11 @@ async fn live_answers_match_the_declared_schemas() {
     let relit = answer.json["id"].as_str().unwrap().to_string();
     admin.wait_succeeded(&relit).await;
     let answer = spec
-        .check(
+        .request(
+            &admin,
             Method::GET,
             "/v1/jobs/{id}",
-            send(&admin, Method::GET, &format!("/v1/jobs/{relit}")).await,
+            &format!("/v1/jobs/{relit}"),
         )
         .await;
     assert_eq!(
@@ -821,19 +774,11 @@ async fn live_answers_match_the_declared_schemas() {
     // Deletions: the cancelled job, then a capture no job uses.
     let job_path = format!("/v1/jobs/{queued}");
     let answer = spec
-        .check(
-            Method::DELETE,
-            "/v1/jobs/{id}",
-            send(&admin, Method::DELETE, &job_path).await,
-        )
+        .request(&admin, Method::DELETE, "/v1/jobs/{id}", &job_path)
         .await;
     assert_eq!(answer.status, 204);
     let answer = spec
-        .check(
-            Method::DELETE,
-            "/v1/jobs/{id}",
-            send(&admin, Method::DELETE, &job_path).await,
-        )
+        .request(&admin, Method::DELETE, "/v1/jobs/{id}", &job_path)
         .await;
     assert_eq!(answer.status, 404);
     let answer = spec

@@ -126,6 +126,30 @@ fn compare(
     }
 }
 
+/// [`compare`] of the same frames loaded in both modes, on the smooth regions a sensor's
+/// interpolation leaves (a wider margin for the colour sensor's Bayer pattern): (half, bilinear).
+fn compare_modes(
+    reference: &Capture,
+    half: &Capture,
+    bilinear: &Capture,
+    sensor: Sensor,
+    full_scale: f32,
+) -> (RoundTrip, RoundTrip) {
+    let colour = sensor.is_colour();
+    let margin = if colour { 4 } else { 2 };
+    (
+        compare(reference, half, Demosaic::Half, colour, full_scale, margin),
+        compare(
+            reference,
+            bilinear,
+            Demosaic::Bilinear,
+            colour,
+            full_scale,
+            margin,
+        ),
+    )
+}
+
 /// Asserts mean errors below `bound` and no heavy tail (99th percentile below 10 × the bound).
 fn assert_within(errors: &RoundTrip, bound: [f64; 3], what: &str) {
     for (k, bound) in bound.iter().enumerate() {
@@ -218,23 +242,7 @@ fn a_synthetic_capture_round_trips_through_simulated_sensors() {
         assert!((object(&half) * 4.0 / object(&reference) - 1.0).abs() < 0.1);
 
         let colour = sensor.is_colour();
-        let margin = if colour { 4 } else { 2 };
-        let h = compare(
-            &reference,
-            &half,
-            Demosaic::Half,
-            colour,
-            full_scale,
-            margin,
-        );
-        let b = compare(
-            &reference,
-            &bilinear,
-            Demosaic::Bilinear,
-            colour,
-            full_scale,
-            margin,
-        );
+        let (h, b) = compare_modes(&reference, &half, &bilinear, sensor, full_scale);
         eprintln!("synth {sensor:?} {bit_depth}-bit {file:?}: half {h:?}\n    bilinear {b:?}");
         // About 1.5 × what was measured (README): interpolation error, plus quantization.
         let (half_bound, bilinear_bound) = if colour {
@@ -584,23 +592,7 @@ fn shared_captures_round_trip_through_simulated_sensors() {
                 let (dir, bilinear) = simulate(&reference, &options);
                 let half = reload(dir.path(), Demosaic::Half);
                 let colour = sensor.is_colour();
-                let margin = if colour { 4 } else { 2 };
-                let h = compare(
-                    &reference,
-                    &half,
-                    Demosaic::Half,
-                    colour,
-                    full_scale,
-                    margin,
-                );
-                let b = compare(
-                    &reference,
-                    &bilinear,
-                    Demosaic::Bilinear,
-                    colour,
-                    full_scale,
-                    margin,
-                );
+                let (h, b) = compare_modes(&reference, &half, &bilinear, sensor, full_scale);
                 eprintln!(
                     "{scene} {sensor:?} {bit_depth}-bit (full scale {full_scale:.3}):\n    half {h:?}\n    bilinear {b:?}"
                 );

@@ -489,6 +489,72 @@ fn a_step_whose_entries_overflow_is_rerun_with_room() {
     }
 }
 
+/// Steps on the same buffers reuse the bind groups of the step before (none is created after the
+/// first step), a step after `load` (new surfel buffers) makes new ones and the stale ones are
+/// dropped, and a step through cached groups computes what one through fresh groups does.
+#[test]
+fn steps_reuse_their_bind_groups_and_drop_stale_ones() {
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let scene = scene(9);
+    let mut rng = ChaCha8Rng::seed_from_u64(10);
+    let target = target(&scene.camera, "full", &mut rng);
+    let plan = StepPlan::new(&target, Stage::Polar, &BTreeMap::new(), &scene.weights);
+    let step = DeviceStep {
+        view: 0,
+        camera: &scene.camera,
+        plan: &plan,
+        rates: [Some(1e-3); 7],
+    };
+    let photometric =
+        |r: &phygap::gpu::DeviceStepResult| plan.losses(&r.sums, &scene.weights, 1)["photometric"];
+
+    // Cached: three steps on the same buffers.
+    let mut cached = trainer(&gpu, &scene, &target);
+    cached.set_light(&scene.env).unwrap();
+    cached.step(&step).unwrap();
+    let first = cached.bind_counts();
+    let per_step = cached.cached_bind_groups();
+    assert!(first.created >= 20, "{first:?}");
+    assert_eq!(per_step as u64, first.created);
+    let second = cached.step(&step).unwrap();
+    cached.step(&step).unwrap();
+    let after = cached.bind_counts();
+    assert_eq!(after.created, first.created, "{after:?}");
+    assert_eq!(
+        after.reused,
+        first.reused + 2 * (first.created + first.reused)
+    );
+
+    // Fresh: the same first step, then the surfels loaded again (new buffers) before the second.
+    let (mut surfels, mut adam, mut densify) = (
+        Surfels::default(),
+        Adam::new(AdamConfig::default()),
+        DensifyStats::default(),
+    );
+    let mut fresh = trainer(&gpu, &scene, &target);
+    fresh.set_light(&scene.env).unwrap();
+    fresh.step(&step).unwrap();
+    fresh.sync(&mut surfels, &mut adam, &mut densify).unwrap();
+    fresh.load(&surfels, &adam, &densify).unwrap();
+    let reloaded = fresh.step(&step).unwrap();
+    let counts = fresh.bind_counts();
+    assert!(
+        counts.created > first.created && counts.created < 2 * first.created,
+        "the reload remade only the groups of the surfel buffers: {counts:?} after {first:?}"
+    );
+    assert_eq!(
+        fresh.cached_bind_groups(),
+        per_step,
+        "stale groups are dropped"
+    );
+    assert_eq!(reloaded.tile_entries, second.tile_entries);
+    let (a, b) = (photometric(&reloaded), photometric(&second));
+    // Float atomics sum in any order: the losses agree to f32 rounding.
+    assert!((a - b).abs() <= 1e-5 * b, "{a} vs {b}");
+}
+
 /// When the device cannot hold a step's buffers (here: a binding limit below the SSIM planes of
 /// a 112×112 view, above the light and the BRDF table), training continues with the gpu
 /// backend's host steps, which split images into bands and shade them in chunks, instead of
@@ -805,4 +871,58 @@ fn a_device_run_remeshes_gridmap_without_failures() {
     assert_eq!(failed.len(), 1, "{failed:?}");
     assert_eq!(failed[0].0, 110);
     assert_eq!(run(80), []);
+}
+
+/// `bench_train` on the device engine reports the host's side of each step (encode, finish,
+/// submit, wait: one of each per attempt), the device's peak buffer memory (at least the views'
+/// targets it holds) and the process's peak resident memory.
+#[test]
+fn the_training_benchmark_reports_host_phases_and_memory() {
+    use phygap::core::config::TrainConfig;
+    use phygap::pipeline::bench::{bench_train, BenchStage};
+    let Some(gpu) = gpu(GpuOptions::default()) else {
+        return;
+    };
+    let engine = phygap::pipeline::backend::Engine::Gpu(gpu);
+    let dir = tempfile::tempdir().unwrap();
+    let options = phygap::pipeline::synth::SynthOptions {
+        views: 6,
+        size: 32,
+        ..Default::default()
+    };
+    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
+    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
+    let config = TrainConfig {
+        iterations: 10,
+        initial_surfels: 400,
+        envmap_resolution: 8,
+        gridmap: false,
+        ..TrainConfig::default()
+    };
+    let timing = bench_train(&engine, &capture, &config, BenchStage::Geometry).unwrap();
+    let names: Vec<&str> = timing.host_phases.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["encode", "finish", "submit", "wait"]);
+    for phase in &timing.host_phases {
+        assert!(phase.calls >= 10, "{phase:?}");
+        assert_eq!(phase.calls, timing.host_phases[0].calls, "{phase:?}");
+        assert!(phase.total_ms > 0.0, "{phase:?}");
+    }
+    let train_views = capture
+        .views
+        .iter()
+        .filter(|v| v.split == phygap::io::capture::Split::Train)
+        .count() as u64;
+    // Each training view's target: ten f32 per pixel.
+    let targets = train_views * 32 * 32 * 10 * 4;
+    let device = timing
+        .device_peak_bytes
+        .expect("a device run measures its buffers");
+    assert!(
+        device >= targets && device < 1 << 30,
+        "{device} bytes on the device, {targets} of them targets"
+    );
+    if cfg!(target_os = "linux") {
+        let host = timing.host_peak_rss_bytes.expect("VmHWM on Linux");
+        assert!(host > 10 << 20, "{host} bytes resident");
+    }
 }

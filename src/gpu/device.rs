@@ -7,11 +7,13 @@
 //! Threading: work on one [`Device`] is serialized by [`Device::scoped`] (wgpu's error scopes are
 //! one stack per device, so two threads inside it at once would pop each other's scopes).
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Mutex, PoisonError};
+use std::time::Instant;
 
 use wgpu::util::DeviceExt;
 
-use super::profile::PassProfiler;
+use super::profile::{HostClock, PassProfiler};
 use super::shaders::{KernelSpec, Variant};
 use super::{GpuContext, GpuError};
 use crate::core::raster::StageTime;
@@ -34,6 +36,15 @@ impl Kernel {
     pub(super) fn pipeline(&self) -> &wgpu::ComputePipeline {
         &self.pipeline
     }
+
+    pub(super) fn layout(&self) -> &wgpu::BindGroupLayout {
+        &self.layout
+    }
+
+    /// The kernel's entry in the table of [`super::shaders`].
+    pub(super) fn spec(&self) -> &'static KernelSpec {
+        self.spec
+    }
 }
 
 /// An opened adapter with its limits, the kernel variant its features choose, the pass profiler
@@ -44,7 +55,19 @@ pub struct Device {
     /// The largest buffer a binding may hold: the device's limit, or less (to test splitting).
     binding_limit: u64,
     profiler: Option<PassProfiler>,
+    host_clock: HostClock,
+    /// The most buffer memory seen in use at a submission, in bytes.
+    peak_buffer_bytes: AtomicU64,
     exclusive: Mutex<()>,
+}
+
+/// Device memory held in buffers (wgpu's allocation counters: what the driver was asked for,
+/// after alignment; the driver's own overhead is not included).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DeviceMemory {
+    pub in_use_bytes: u64,
+    /// The most in use at any submission since the device was opened.
+    pub peak_bytes: u64,
 }
 
 impl Device {
@@ -68,6 +91,8 @@ impl Device {
         Device {
             binding_limit: max_binding_bytes.map_or(device_limit, |m| m.min(device_limit)),
             profiler,
+            host_clock: HostClock::default(),
+            peak_buffer_bytes: AtomicU64::new(0),
             ctx,
             variant,
             exclusive: Mutex::new(()),
@@ -323,9 +348,40 @@ impl Device {
     /// the profiler.
     pub(super) fn submit_and_read(
         &self,
-        mut encoder: wgpu::CommandEncoder,
+        encoder: wgpu::CommandEncoder,
         sources: &[(&wgpu::Buffer, u64)],
     ) -> Result<Vec<Vec<u8>>, GpuError> {
+        self.submit_and_read_with(encoder, sources, false)
+    }
+
+    /// [`Self::submit_and_read`] of a training step, whose host phases go to the
+    /// [`HostClock`] as "finish", "submit" and "wait" ([`Self::take_host_times`]).
+    pub(super) fn submit_step_and_read(
+        &self,
+        encoder: wgpu::CommandEncoder,
+        sources: &[(&wgpu::Buffer, u64)],
+    ) -> Result<Vec<Vec<u8>>, GpuError> {
+        self.submit_and_read_with(encoder, sources, true)
+    }
+
+    /// Records a phase of a training step on the host.
+    pub(super) fn record_host_time(&self, label: &'static str, since: Instant) {
+        self.host_clock.record(label, since.elapsed());
+    }
+
+    fn submit_and_read_with(
+        &self,
+        mut encoder: wgpu::CommandEncoder,
+        sources: &[(&wgpu::Buffer, u64)],
+        timed: bool,
+    ) -> Result<Vec<Vec<u8>>, GpuError> {
+        let mut clock = Instant::now();
+        let mut lap = |label: &'static str| {
+            if timed {
+                self.host_clock.record(label, clock.elapsed());
+                clock = Instant::now();
+            }
+        };
         let timestamps = self.profiler.as_ref().and_then(|p| p.resolve(&mut encoder));
         let staging: Vec<(wgpu::Buffer, u64)> = sources
             .iter()
@@ -344,7 +400,11 @@ impl Device {
                 (dst, bytes)
             })
             .collect();
-        self.queue().submit([encoder.finish()]);
+        let commands = encoder.finish();
+        lap("finish");
+        self.queue().submit([commands]);
+        lap("submit");
+        self.note_buffer_memory();
         let (tx, rx) = std::sync::mpsc::channel();
         for (i, (buf, _)) in staging.iter().enumerate() {
             let tx = tx.clone();
@@ -369,7 +429,32 @@ impl Device {
         if let (Some(profiler), Some(_)) = (&self.profiler, timestamps) {
             profiler.record(&data.pop().unwrap_or_default());
         }
+        lap("wait");
         Ok(data)
+    }
+
+    /// Raises the peak of buffer memory to what is in use now.
+    fn note_buffer_memory(&self) {
+        let in_use = self.buffer_memory().in_use_bytes;
+        self.peak_buffer_bytes.fetch_max(in_use, Ordering::Relaxed);
+    }
+
+    /// Buffer memory in use now and at its peak.
+    pub(super) fn buffer_memory(&self) -> DeviceMemory {
+        let counters = self.wgpu().get_internal_counters();
+        let in_use_bytes = counters.hal.buffer_memory.read().max(0) as u64;
+        DeviceMemory {
+            in_use_bytes,
+            peak_bytes: self
+                .peak_buffer_bytes
+                .load(Ordering::Relaxed)
+                .max(in_use_bytes),
+        }
+    }
+
+    /// Host time of the training steps' phases since the last call.
+    pub(super) fn take_host_times(&self) -> Vec<StageTime> {
+        self.host_clock.take()
     }
 
     /// Runs `f` alone on this device, inside out-of-memory and validation error scopes; a device
@@ -401,5 +486,37 @@ impl Device {
         self.profiler
             .as_ref()
             .map_or_else(Vec::new, PassProfiler::take)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::gpu::test_backend;
+
+    /// A buffer's bytes count as in use while it lives and stay in the peak after it is freed.
+    #[test]
+    fn buffer_memory_follows_allocations_and_keeps_the_peak() {
+        let Some(gpu) = test_backend() else { return };
+        let device = gpu.device();
+        let before = device.buffer_memory();
+        let bytes = 24 << 20;
+        let buffer = device
+            .storage("big", bytes, wgpu::BufferUsages::COPY_SRC)
+            .unwrap();
+        let encoder = device.wgpu().create_command_encoder(&Default::default());
+        device.submit_and_read(encoder, &[(&buffer, 4)]).unwrap();
+        let held = device.buffer_memory();
+        assert!(
+            held.in_use_bytes >= before.in_use_bytes + bytes,
+            "{held:?} after {before:?}"
+        );
+        drop(buffer);
+        device.wgpu().poll(wgpu::PollType::Wait).unwrap();
+        let after = device.buffer_memory();
+        assert!(
+            after.in_use_bytes + bytes <= held.in_use_bytes,
+            "{after:?} after {held:?}"
+        );
+        assert!(after.peak_bytes >= held.in_use_bytes, "{after:?}");
     }
 }

@@ -32,6 +32,7 @@
 //! ([`DeviceTrainer`]), `profile` (pass timings), `context` (adapters).
 
 mod band;
+mod bind_cache;
 mod context;
 mod device;
 mod layout;
@@ -45,12 +46,31 @@ mod shaders;
 mod sort;
 mod train;
 
+pub use bind_cache::BindCounts;
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};
+pub use device::DeviceMemory;
 pub use raster::{GpuBackend, GpuOptions};
 pub use shaders::{AtomicsMode, Walk};
 pub use train::{DeviceStep, DeviceStepResult, DeviceTrainer};
 
 use thiserror::Error;
+
+/// The gpu backend on any adapter (lavapipe in CI), or `None` with a notice outside CI, for the
+/// unit tests of the gpu modules.
+#[cfg(test)]
+pub(crate) fn test_backend() -> Option<GpuBackend> {
+    match GpuContext::new(AdapterRequirement::Any) {
+        Ok(ctx) => Some(GpuBackend::with_options(ctx, GpuOptions::default()).unwrap()),
+        Err(e) => {
+            assert!(
+                !crate::testing::running_in_ci(),
+                "CI=true but no adapter: {e}"
+            );
+            println!("skipping: no GPU adapter ({e})");
+            None
+        }
+    }
+}
 
 /// What to install when no adapter exists at all.
 pub const INSTALL_HINT: &str = "on Debian/Ubuntu install a Vulkan driver, e.g. the software one: \

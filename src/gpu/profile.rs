@@ -1,12 +1,16 @@
-//! Device time of each compute pass, from timestamp queries (`GpuOptions::profile`, where the
-//! adapter has `TIMESTAMP_QUERY`): `phygap bench raster --backend gpu --stages` prints them.
+//! Where a device run's time goes. [`PassProfiler`]: device time of each compute pass, from
+//! timestamp queries (`GpuOptions::profile`, where the adapter has `TIMESTAMP_QUERY`):
+//! `phygap bench raster --backend gpu --stages` prints them. [`HostClock`]: the host's side of a
+//! resident training step (encoding, finishing the command buffer, submitting, waiting for the
+//! device), always measured: `phygap bench train --backend gpu` prints it.
 //!
 //! Each pass gets a begin and an end timestamp in a query set; before a submission is read back
 //! the query set is resolved into a buffer that is read back with it, and the durations are added
 //! to per-label totals until [`PassProfiler::take`] drains them. Threading: the pending labels and
 //! totals sit behind a mutex (calls on the backend are serialized anyway).
 
-use std::sync::Mutex;
+use std::sync::{Mutex, PoisonError};
+use std::time::Duration;
 
 use crate::core::raster::StageTime;
 
@@ -25,8 +29,58 @@ pub(super) struct PassProfiler {
 struct State {
     /// Labels of the passes of the submission being encoded, in query order.
     pending: Vec<&'static str>,
-    /// (label, calls, total nanoseconds), in order of first appearance.
-    totals: Vec<(&'static str, usize, f64)>,
+    totals: Totals,
+}
+
+/// Calls and nanoseconds per label, in order of first appearance.
+#[derive(Default)]
+struct Totals(Vec<(&'static str, usize, f64)>);
+
+impl Totals {
+    fn add(&mut self, label: &'static str, ns: f64) {
+        match self.0.iter_mut().find(|(l, _, _)| *l == label) {
+            Some((_, calls, total)) => {
+                *calls += 1;
+                *total += ns;
+            }
+            None => self.0.push((label, 1, ns)),
+        }
+    }
+
+    /// The totals, which are reset.
+    fn take(&mut self) -> Vec<StageTime> {
+        std::mem::take(&mut self.0)
+            .into_iter()
+            .map(|(name, calls, ns)| StageTime {
+                name: name.to_string(),
+                calls,
+                total_ms: ns * 1e-6,
+            })
+            .collect()
+    }
+}
+
+/// Host time per labelled phase of the resident trainer's steps.
+#[derive(Default)]
+pub(super) struct HostClock {
+    totals: Mutex<Totals>,
+}
+
+impl HostClock {
+    pub(super) fn record(&self, label: &'static str, elapsed: Duration) {
+        self.totals
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .add(label, elapsed.as_secs_f64() * 1e9);
+    }
+
+    /// The totals since the last call, which are reset.
+    pub(super) fn take(&self) -> Vec<StageTime> {
+        self.totals
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .take()
+    }
 }
 
 impl PassProfiler {
@@ -53,9 +107,7 @@ impl PassProfiler {
     }
 
     fn state(&self) -> std::sync::MutexGuard<'_, State> {
-        self.state
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)
+        self.state.lock().unwrap_or_else(PoisonError::into_inner)
     }
 
     /// The timestamp writes of the next pass, labelled `label` (none once the set is full).
@@ -98,25 +150,12 @@ impl PassProfiler {
         let pending = std::mem::take(&mut state.pending);
         for (label, pair) in pending.iter().zip(ticks.chunks_exact(2)) {
             let ns = pair[1].saturating_sub(pair[0]) as f64 * self.period_ns;
-            match state.totals.iter_mut().find(|(l, _, _)| l == label) {
-                Some((_, calls, total)) => {
-                    *calls += 1;
-                    *total += ns;
-                }
-                None => state.totals.push((label, 1, ns)),
-            }
+            state.totals.add(label, ns);
         }
     }
 
     /// The totals since the last call, which are reset.
     pub(super) fn take(&self) -> Vec<StageTime> {
-        std::mem::take(&mut self.state().totals)
-            .into_iter()
-            .map(|(name, calls, ns)| StageTime {
-                name: name.to_string(),
-                calls,
-                total_ms: ns * 1e-6,
-            })
-            .collect()
+        self.state().totals.take()
     }
 }

@@ -37,7 +37,8 @@
 use tracing::info_span;
 
 use super::band::Band;
-use super::device::{Device, Kernel};
+use super::bind_cache::Binder;
+use super::device::{Device, DeviceMemory, Kernel};
 use super::params::{
     raw_surfels, ParamsGpu, ENTRY_BYTES, NUM_ACC, NUM_OUT, NUM_RAW_GRAD, PROJ_BYTES, TILE,
 };
@@ -209,6 +210,17 @@ impl GpuBackend {
     }
 
     /// The device and its helpers.
+    /// Buffer memory on the device now and at its peak since the backend was made.
+    pub fn buffer_memory(&self) -> DeviceMemory {
+        self.device.buffer_memory()
+    }
+
+    /// Host time of the resident trainer's step phases (encode, finish, submit, wait) since the
+    /// last call.
+    pub fn take_host_times(&self) -> Vec<StageTime> {
+        self.device.take_host_times()
+    }
+
     pub(super) fn device(&self) -> &Device {
         &self.device
     }
@@ -479,7 +491,7 @@ impl GpuBackend {
                 wgpu::BufferUsages::empty(),
             )?;
             let entries_buf = self.sort.encode(
-                &self.device,
+                Binder::Fresh(&self.device),
                 &mut encoder,
                 [entries_buf, sorted_alt_buf],
                 &SortInputs {

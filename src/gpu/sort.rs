@@ -11,6 +11,9 @@
 
 use bytemuck::{Pod, Zeroable};
 
+use std::sync::{Mutex, PoisonError};
+
+use super::bind_cache::Binder;
 use super::device::{Device, Kernel};
 use super::layout::wgsl_mirror;
 use super::shaders;
@@ -94,11 +97,13 @@ pub(super) fn varying_depth_bits(surfels: &Surfels, camera: &Camera, near: f64) 
     varying_bits(lo.to_bits(), hi.to_bits())
 }
 
-/// The sort's three kernels.
+/// The sort's three kernels, and the uniform buffer of the last sort's passes (a resident run
+/// sorts over the same bits every step, and reusing it keeps the step's bind groups the same).
 pub(super) struct RadixSort {
     count: Kernel,
     scan: Kernel,
     scatter: Kernel,
+    pass_params: Mutex<Option<(Vec<u8>, wgpu::Buffer)>>,
 }
 
 impl RadixSort {
@@ -108,6 +113,24 @@ impl RadixSort {
             count: device.kernel(&shaders::RADIX_COUNT),
             scan: device.kernel(&shaders::RADIX_SCAN),
             scatter: device.kernel(&shaders::RADIX_SCATTER),
+            pass_params: Mutex::new(None),
+        }
+    }
+
+    /// A uniform buffer holding `bytes`: the last one when it holds the same (a buffer is never
+    /// rewritten, so a sort still in flight keeps reading its own).
+    fn pass_buffer(&self, device: &Device, bytes: Vec<u8>) -> wgpu::Buffer {
+        let mut last = self
+            .pass_params
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner);
+        match &*last {
+            Some((held, buffer)) if *held == bytes => buffer.clone(),
+            _ => {
+                let buffer = device.uniform("radix passes", &bytes);
+                *last = Some((bytes, buffer.clone()));
+                buffer
+            }
         }
     }
 
@@ -117,11 +140,12 @@ impl RadixSort {
     /// ([`KeyBits`]); each reads its digit from its own aligned slice of a uniform buffer.
     pub(super) fn encode(
         &self,
-        device: &Device,
+        binder: Binder,
         encoder: &mut wgpu::CommandEncoder,
         buffers: [wgpu::Buffer; 2],
         inputs: &SortInputs,
     ) -> Result<wgpu::Buffer, GpuError> {
+        let device = binder.device();
         let [mut keys, mut other] = buffers;
         let grid = match inputs.dispatch {
             SortDispatch::Direct { total } if total < 2 => return Ok(keys),
@@ -151,7 +175,7 @@ impl RadixSort {
             let at = i * stride as usize;
             bytes[at..at + 16].copy_from_slice(bytemuck::bytes_of(p));
         }
-        let pass_buf = device.uniform("radix passes", &bytes);
+        let pass_buf = self.pass_buffer(device, bytes);
         let (hist, count) = (inputs.hist, inputs.count);
         let mut compute = device.begin_pass(encoder, "radix sort");
         for i in 0..passes.len() {
@@ -169,7 +193,7 @@ impl RadixSort {
                 }
                 (None, SortDispatch::Direct { .. }) => unreachable!("direct sorts have a grid"),
             };
-            let group = device.bind_resources(
+            let group = binder.bind_resources(
                 &self.count,
                 [
                     ("pass_", pass_params()),
@@ -181,11 +205,11 @@ impl RadixSort {
             compute.set_pipeline(self.count.pipeline());
             compute.set_bind_group(0, &group, &[]);
             dispatch_blocks(&mut compute);
-            let group = device.bind(&self.scan, &[("hist", hist), ("sort_count", count)]);
+            let group = binder.bind(&self.scan, &[("hist", hist), ("sort_count", count)]);
             compute.set_pipeline(self.scan.pipeline());
             compute.set_bind_group(0, &group, &[]);
             compute.dispatch_workgroups(1, 1, 1);
-            let group = device.bind_resources(
+            let group = binder.bind_resources(
                 &self.scatter,
                 [
                     ("pass_", pass_params()),
@@ -207,24 +231,9 @@ impl RadixSort {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gpu::{GpuBackend, GpuContext, GpuOptions};
+    use crate::gpu::{test_backend, GpuBackend};
     use glam::DVec3;
     use rand::{Rng, SeedableRng};
-
-    /// The gpu backend on any adapter (lavapipe in CI), or `None` with a notice outside CI.
-    fn backend() -> Option<GpuBackend> {
-        match GpuContext::new(crate::gpu::AdapterRequirement::Any) {
-            Ok(ctx) => Some(GpuBackend::with_options(ctx, GpuOptions::default()).unwrap()),
-            Err(e) => {
-                assert!(
-                    !crate::testing::running_in_ci(),
-                    "CI=true but no adapter: {e}"
-                );
-                println!("skipping: no GPU adapter ({e})");
-                None
-            }
-        }
-    }
 
     /// Sorts binning entries (tile, depth key, surfel, unused) on the device by (tile, depth)
     /// over the given varying bits.
@@ -252,7 +261,7 @@ mod tests {
         let sorted = gpu
             .sort()
             .encode(
-                device,
+                Binder::Fresh(device),
                 &mut encoder,
                 [keys, other],
                 &SortInputs {
@@ -273,7 +282,7 @@ mod tests {
     /// block of 2048 entries, with few and many varying bits.
     #[test]
     fn radix_sort_is_a_stable_sort_by_tile_then_depth() {
-        let Some(gpu) = backend() else { return };
+        let Some(gpu) = test_backend() else { return };
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         for (n, depth_bits, tiles) in [
             (1usize, 3u32, 1u32),

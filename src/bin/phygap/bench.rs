@@ -177,6 +177,33 @@ fn print_passes(passes: &[phygap::core::raster::StageTime]) {
     }
 }
 
+/// Peak device buffer memory (gpu backend) and host resident memory of a benchmark's run.
+fn print_memory(device_peak_bytes: Option<u64>, host_peak_rss_bytes: Option<u64>) {
+    let mib = |b: u64| b as f64 / (1024.0 * 1024.0);
+    if let Some(bytes) = device_peak_bytes {
+        println!("device buffers  {:.1} MiB at the peak", mib(bytes));
+    }
+    if let Some(bytes) = host_peak_rss_bytes {
+        println!("host memory     {:.1} MiB resident at the peak", mib(bytes));
+    }
+}
+
+/// Mean host milliseconds per device step of each phase (encode, finish, submit, wait).
+fn print_host_phases(phases: &[phygap::core::raster::StageTime]) {
+    if phases.is_empty() {
+        return;
+    }
+    println!("\nhost per device step (ms; attempts = steps + reruns):");
+    for p in phases {
+        println!(
+            "{:<8} {:>8} attempts {:>9.3}",
+            p.name,
+            p.calls,
+            p.total_ms / p.calls.max(1) as f64
+        );
+    }
+}
+
 /// The backend `choice` resolves to, timing each device pass when `stages` is asked for.
 fn bench_backend(choice: BackendChoice, stages: bool) -> Result<Engine> {
     let options = GpuOptions {
@@ -242,6 +269,8 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                     t.surfels.1,
                     t.startup_seconds
                 );
+                print_memory(t.device_peak_bytes, t.host_peak_rss_bytes);
+                print_host_phases(&t.host_phases);
                 if a.stages {
                     print_passes(&t.passes);
                 }
@@ -303,6 +332,7 @@ fn run_quality(a: &QualityBenchArgs) -> Result<()> {
         "wall time       {:.1} s training ({} steps), {:.1} s scoring",
         run.train_wall_seconds, run.iterations, run.score_wall_seconds
     );
+    print_memory(run.device_peak_bytes, run.host_peak_rss_bytes);
     println!("test PSNR along the run:");
     for r in &run.progress {
         println!(

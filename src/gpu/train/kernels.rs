@@ -231,25 +231,11 @@ impl AdamParamsGpu {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuOptions};
+    use crate::gpu::test_backend;
     use rand::{Rng, SeedableRng};
 
     /// A kernel, its bindings and its workgroup grid.
     type Stage<'a> = (&'a Kernel, Vec<(&'a str, &'a wgpu::Buffer)>, (u32, u32));
-
-    fn backend() -> Option<GpuBackend> {
-        match GpuContext::new(AdapterRequirement::Any) {
-            Ok(ctx) => Some(GpuBackend::with_options(ctx, GpuOptions::default()).unwrap()),
-            Err(e) => {
-                assert!(
-                    !crate::testing::running_in_ci(),
-                    "CI=true but no adapter: {e}"
-                );
-                println!("skipping: no GPU adapter ({e})");
-                None
-            }
-        }
-    }
 
     #[test]
     fn trainer_params_mirror_the_wgsl() {
@@ -264,7 +250,7 @@ mod tests {
     /// at sizes around the 1024-count block and over many blocks.
     #[test]
     fn device_scan_matches_the_host_prefix_sum() {
-        let Some(gpu) = backend() else { return };
+        let Some(gpu) = test_backend() else { return };
         let device = gpu.device();
         let kernels = TrainKernels::compile(device).unwrap();
         let max_groups = device.wgpu().limits().max_compute_workgroups_per_dimension;

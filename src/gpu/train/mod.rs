@@ -34,6 +34,7 @@ use std::sync::Arc;
 
 use tracing::info_span;
 
+use super::bind_cache::{BindCache, BindCounts};
 use super::device::Device;
 use super::light::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
 use super::params::{ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
@@ -117,6 +118,8 @@ pub struct DeviceTrainer<'g> {
     dispatch: wgpu::Buffer,
     scan_params: wgpu::Buffer,
     adam_params: wgpu::Buffer,
+    /// The bind groups of the last two steps' dispatches.
+    binds: BindCache,
     /// The device holds steps the host's state has not seen.
     host_stale: bool,
 }
@@ -191,6 +194,7 @@ impl<'g> DeviceTrainer<'g> {
             light: None,
             probes: None,
             prefilter: None,
+            binds: BindCache::default(),
             host_stale: false,
         })
     }
@@ -505,6 +509,18 @@ impl<'g> DeviceTrainer<'g> {
     pub fn set_entry_capacity(&mut self, capacity: u64) -> Result<(), GpuError> {
         self.entries = Some(EntryBuffers::new(self.device(), capacity.max(1))?);
         Ok(())
+    }
+
+    /// Bind groups the steps created and reused, for the tests of the cache.
+    #[doc(hidden)]
+    pub fn bind_counts(&self) -> BindCounts {
+        self.binds.counts()
+    }
+
+    /// Bind groups the cache holds now.
+    #[doc(hidden)]
+    pub fn cached_bind_groups(&self) -> usize {
+        self.binds.len()
     }
 
     /// The tile entries the buffer holds.

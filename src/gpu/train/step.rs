@@ -7,9 +7,12 @@
 //! Threading: encoding on the calling thread (one step at a time); the kernels' threading is in
 //! their WGSL files.
 
+use std::time::Instant;
+
 use super::buffers::{EntryBuffers, FrameBuffers, SurfelBuffers, TARGET_FLOATS};
 use super::kernels::{SCAN_BLOCK, STATUS_WORDS};
 use super::{DeviceStep, DeviceTrainer, LightState, DEPTH_BITS};
+use crate::gpu::bind_cache::Binder;
 use crate::gpu::device::{Device, Kernel};
 use crate::gpu::light::ProbeBuffers;
 use crate::gpu::params::TILE;
@@ -20,9 +23,11 @@ use crate::gpu::GpuError;
 /// Bindings of one dispatch: (WGSL name, buffer).
 type Bindings<'b> = [(&'static str, &'b wgpu::Buffer)];
 
-/// One step's command encoder and the dispatch shapes its passes use.
+/// One step's command encoder, where its bind groups come from, and the dispatch shapes its
+/// passes use.
 struct Passes<'a> {
     device: &'a Device,
+    binder: Binder<'a>,
     frame: &'a FrameBuffers,
     encoder: wgpu::CommandEncoder,
 }
@@ -35,7 +40,7 @@ impl Passes<'_> {
         bindings: &Bindings,
         grid: (u32, u32),
     ) {
-        let group = self.device.bind(kernel, bindings);
+        let group = self.binder.bind(kernel, bindings);
         let mut pass = self.device.begin_pass(&mut self.encoder, label);
         pass.set_pipeline(kernel.pipeline());
         pass.set_bind_group(0, &group, &[]);
@@ -65,7 +70,7 @@ impl Passes<'_> {
         bindings: &Bindings,
         items: u64,
     ) -> Result<(), GpuError> {
-        let group = self.device.bind(kernel, bindings);
+        let group = self.binder.bind(kernel, bindings);
         self.device
             .dispatch_1d(&mut self.encoder, label, kernel, &group, items)
     }
@@ -74,6 +79,7 @@ impl Passes<'_> {
 impl DeviceTrainer<'_> {
     /// Encodes, submits and reads back one attempt at a step: the step status.
     pub(super) fn run(&self, step: &DeviceStep) -> Result<Vec<u32>, GpuError> {
+        let start = Instant::now();
         let device = self.device();
         let (Some(s), Some(e), Some(f)) = (&self.surfels, &self.entries, &self.frame) else {
             return Err(GpuError::Device("the trainer's buffers are missing".into()));
@@ -81,6 +87,7 @@ impl DeviceTrainer<'_> {
         self.write_params(step, f, s.count as u32);
         let mut passes = Passes {
             device,
+            binder: Binder::Cached(device, &self.binds),
             frame: f,
             encoder: device.wgpu().create_command_encoder(&Default::default()),
         };
@@ -96,8 +103,10 @@ impl DeviceTrainer<'_> {
         self.encode_losses(&mut passes);
         self.encode_backward(&mut passes, s, &sorted, shading)?;
         self.encode_update(&mut passes, s, shading)?;
-        let data =
-            device.submit_and_read(passes.encoder, &[(&self.status, STATUS_WORDS as u64 * 4)])?;
+        self.binds.end_step();
+        device.record_host_time("encode", start);
+        let data = device
+            .submit_step_and_read(passes.encoder, &[(&self.status, STATUS_WORDS as u64 * 4)])?;
         Ok(bytemuck::pod_collect_to_vec(&data[0]))
     }
 
@@ -174,7 +183,7 @@ impl DeviceTrainer<'_> {
         )?;
         let tiles = f.width.div_ceil(TILE) * f.height.div_ceil(TILE);
         let sorted = self.gpu.sort().encode(
-            device,
+            passes.binder,
             &mut passes.encoder,
             e.entries.clone(),
             &SortInputs {
@@ -190,7 +199,7 @@ impl DeviceTrainer<'_> {
                 },
             },
         )?;
-        let group = device.bind(
+        let group = passes.binder.bind(
             &raster.tile_ranges,
             &[
                 ("entries", &sorted),

@@ -240,6 +240,24 @@ pub struct TrainTiming {
     /// Device time per pass over the whole run, where the backend measures it.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub passes: Vec<StageTime>,
+    /// Host time of the device steps' phases over the whole run (encode, finish, submit, wait;
+    /// gpu backend only).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub host_phases: Vec<StageTime>,
+    /// The most buffer memory the device held at a submission (gpu backend only).
+    #[serde(default)]
+    pub device_peak_bytes: Option<u64>,
+    /// The process's peak resident memory (`VmHWM`, Linux only).
+    #[serde(default)]
+    pub host_peak_rss_bytes: Option<u64>,
+}
+
+/// The process's peak resident set size, from `/proc/self/status` (`None` elsewhere).
+pub fn host_peak_rss_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
 }
 
 /// Trains `capture` for `iterations` steps held in `stage` (the schedule's densification,
@@ -273,6 +291,9 @@ pub fn bench_train(
     let mut description = String::new();
     let cancel = std::sync::atomic::AtomicBool::new(false);
     backend.take_stage_times();
+    if let Some(gpu) = backend.gpu() {
+        gpu.take_host_times();
+    }
     let outcome = crate::pipeline::train::train_on(
         backend,
         capture,
@@ -298,6 +319,11 @@ pub fn bench_train(
         },
     );
     let passes = backend.take_stage_times();
+    let host_phases = backend
+        .gpu()
+        .map(|g| g.take_host_times())
+        .unwrap_or_default();
+    let device_peak_bytes = backend.gpu().map(|g| g.buffer_memory().peak_bytes);
     // A scratch folder: failing to remove it loses nothing.
     let _ = std::fs::remove_dir_all(&dir);
     outcome?;
@@ -321,6 +347,9 @@ pub fn bench_train(
         startup_seconds: first.1,
         surfels: (first.2, last.2),
         passes,
+        host_phases,
+        device_peak_bytes,
+        host_peak_rss_bytes: host_peak_rss_bytes(),
     })
 }
 

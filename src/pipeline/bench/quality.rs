@@ -41,6 +41,12 @@ pub struct QualityRun {
     pub warnings: Vec<String>,
     /// Every metric of the final model (relit and mesh metrics where `truth` has them).
     pub metrics: EvalReport,
+    /// The most buffer memory the device held at a submission (gpu backend only).
+    #[serde(default)]
+    pub device_peak_bytes: Option<u64>,
+    /// The process's peak resident memory (`VmHWM`, Linux only).
+    #[serde(default)]
+    pub host_peak_rss_bytes: Option<u64>,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -74,31 +80,42 @@ pub fn bench_quality(
     let mut warnings = Vec::new();
     let mut elapsed = 0.0;
     let never = AtomicBool::new(false);
-    let outcome = train::train(&capture, model_dir, config, false, &never, &mut |event| {
-        match event {
-            TrainEvent::Started { backend: b, .. } => backend = b.clone(),
-            TrainEvent::Step {
-                elapsed_seconds, ..
-            } => elapsed = *elapsed_seconds,
-            TrainEvent::Evaluated {
-                iteration,
-                test_psnr,
-            } => progress.push(PsnrReading {
-                iteration: *iteration,
-                seconds: elapsed,
-                test_psnr: *test_psnr,
-            }),
-            TrainEvent::Warning { iteration, message } => {
-                warnings.push(format!("step {iteration}: {message}"));
+    config.validate().map_err(TrainError::from)?;
+    let engine = crate::pipeline::backend::select(config.backend).map_err(TrainError::from)?;
+    let outcome = train::train_on(
+        &engine,
+        &capture,
+        model_dir,
+        config,
+        false,
+        &never,
+        &mut |event| {
+            match event {
+                TrainEvent::Started { backend: b, .. } => backend = b.clone(),
+                TrainEvent::Step {
+                    elapsed_seconds, ..
+                } => elapsed = *elapsed_seconds,
+                TrainEvent::Evaluated {
+                    iteration,
+                    test_psnr,
+                } => progress.push(PsnrReading {
+                    iteration: *iteration,
+                    seconds: elapsed,
+                    test_psnr: *test_psnr,
+                }),
+                TrainEvent::Warning { iteration, message } => {
+                    warnings.push(format!("step {iteration}: {message}"));
+                }
+                _ => {}
             }
-            _ => {}
-        }
-        on_event(event);
-    })?;
+            on_event(event);
+        },
+    )?;
     if let TrainOutcome::Interrupted { iteration } = outcome {
         return Err(QualityError::Interrupted(iteration));
     }
     let train_wall_seconds = start.elapsed().as_secs_f64();
+    let device_peak_bytes = engine.gpu().map(|g| g.buffer_memory().peak_bytes);
     let model = Model::load(model_dir)?;
     let metrics = scorecard::score(&model, &capture, truth)?;
     Ok(QualityRun {
@@ -109,6 +126,8 @@ pub fn bench_quality(
         progress,
         warnings,
         metrics,
+        device_peak_bytes,
+        host_peak_rss_bytes: super::host_peak_rss_bytes(),
     })
 }
 

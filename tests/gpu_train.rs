@@ -268,6 +268,15 @@ fn trainer<'g>(gpu: &'g GpuBackend, scene: &'g Scene, target: &ViewTarget) -> De
     trainer
 }
 
+/// A capture rendered by `synth` into `dir/capture` and loaded.
+fn synth_capture(
+    dir: &std::path::Path,
+    options: phygap::pipeline::synth::SynthOptions,
+) -> phygap::io::capture::Capture {
+    phygap::pipeline::synth::synth(&dir.join("capture"), &options).unwrap();
+    phygap::io::capture::load(&dir.join("capture")).unwrap()
+}
+
 fn scene(seed: u64) -> Scene {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let camera = Camera::look_at(
@@ -572,13 +581,14 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
     };
     let gpu = phygap::pipeline::backend::Engine::Gpu(gpu);
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::pipeline::synth::SynthOptions {
-        views: 6,
-        size: 112,
-        ..Default::default()
-    };
-    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
-    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
+    let capture = synth_capture(
+        dir.path(),
+        phygap::pipeline::synth::SynthOptions {
+            views: 6,
+            size: 112,
+            ..Default::default()
+        },
+    );
     // The device step needs 112 · 112 · 15 f32 for the SSIM planes: more than the limit.
     assert!(112 * 112 * 15 * 4 > limit);
     let config = TrainConfig {
@@ -730,13 +740,14 @@ fn an_interrupted_device_run_resumes_from_its_checkpoint() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::pipeline::synth::SynthOptions {
-        views: 8,
-        size: 40,
-        ..Default::default()
-    };
-    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
-    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
+    let capture = synth_capture(
+        dir.path(),
+        phygap::pipeline::synth::SynthOptions {
+            views: 8,
+            size: 40,
+            ..Default::default()
+        },
+    );
     let config = TrainConfig {
         iterations: 60,
         backend: BackendChoice::Gpu,
@@ -819,14 +830,15 @@ fn a_device_run_remeshes_gridmap_without_failures() {
     };
     let gpu = phygap::pipeline::backend::Engine::Gpu(gpu);
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::pipeline::synth::SynthOptions {
-        shape: phygap::pipeline::synth::Shape::Torus,
-        views: 9,
-        size: 24,
-        ..Default::default()
-    };
-    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
-    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
+    let capture = synth_capture(
+        dir.path(),
+        phygap::pipeline::synth::SynthOptions {
+            shape: phygap::pipeline::synth::Shape::Torus,
+            views: 9,
+            size: 24,
+            ..Default::default()
+        },
+    );
     let run = |recovery: u32| {
         let config = TrainConfig {
             iterations: 200,
@@ -885,13 +897,14 @@ fn the_training_benchmark_reports_host_phases_and_memory() {
     };
     let engine = phygap::pipeline::backend::Engine::Gpu(gpu);
     let dir = tempfile::tempdir().unwrap();
-    let options = phygap::pipeline::synth::SynthOptions {
-        views: 6,
-        size: 32,
-        ..Default::default()
-    };
-    phygap::pipeline::synth::synth(&dir.path().join("capture"), &options).unwrap();
-    let capture = phygap::io::capture::load(&dir.path().join("capture")).unwrap();
+    let capture = synth_capture(
+        dir.path(),
+        phygap::pipeline::synth::SynthOptions {
+            views: 6,
+            size: 32,
+            ..Default::default()
+        },
+    );
     let config = TrainConfig {
         iterations: 10,
         initial_surfels: 400,

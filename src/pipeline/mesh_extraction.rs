@@ -4,8 +4,11 @@
 //! run marching cubes and keep the largest component. Used by `phygap mesh`, the export, the
 //! evaluation's Chamfer distance and GridMap (training and rendering).
 //!
+//! On a backend with its own fusion ([`Backend::fuse_depth`]: the gpu one) the depth maps are
+//! rendered and fused on the device and only the grid comes back; marching cubes runs on the host.
+//!
 //! Threading: views are rasterized one after the other (the backend parallelizes each); fusion and
-//! marching cubes are parallel inside [`crate::core::mesh`].
+//! marching cubes are parallel inside [`crate::core::mesh`] (or the fusion on the device).
 
 use std::path::{Path, PathBuf};
 
@@ -14,7 +17,8 @@ use thiserror::Error;
 
 use crate::core::camera::Camera;
 use crate::core::mesh::{
-    cameras_around_point, extract_mesh, DepthView, MeshError, TriangleMesh, TsdfParams,
+    cameras_around_point, fuse_tsdf, mesh_from_grid, DepthView, GridLayout, MeshError,
+    TriangleMesh, TsdfParams,
 };
 use crate::core::raster::{Backend, RasterError, RasterSettings};
 use crate::core::surfels::{sigmoid, Surfels};
@@ -106,7 +110,11 @@ pub fn orbit_cameras(surfels: &Surfels) -> Vec<Camera> {
 }
 
 /// Renders depth and opacity of `surfels` from every camera and extracts the surface at a TSDF
-/// resolution of `resolution` voxels along the longest side of [`surfel_bounds`].
+/// resolution of `resolution` voxels along the longest side of [`surfel_bounds`]. A backend that
+/// fuses on its own device ([`Backend::fuse_depth`], the gpu one) renders and fuses there and
+/// only the grid comes back; otherwise the views' depth maps are rendered with
+/// [`Backend::forward`] and fused on the host. Both fuse into the same [`GridLayout`] with the
+/// same [`TsdfParams::automatic`] (its depth limit depends on the cameras only).
 pub fn mesh_from_surfels(
     surfels: &Surfels,
     cameras: &[Camera],
@@ -120,22 +128,29 @@ pub fn mesh_from_surfels(
     if cameras.is_empty() {
         return Err(MeshingError::NoCameras);
     }
-    let mut maps = Vec::with_capacity(cameras.len());
-    for camera in cameras {
-        let g = backend.forward(surfels, camera, settings)?.gbuffers;
-        maps.push((g.depth, g.alpha));
-    }
-    let views: Vec<DepthView> = cameras
-        .iter()
-        .zip(&maps)
-        .map(|(camera, (depth, alpha))| DepthView {
-            camera,
-            depth,
-            alpha: Some(alpha),
-        })
-        .collect();
-    let params = TsdfParams::automatic(resolution, &views, bounds);
-    Ok(extract_mesh(&views, bounds, &params)?)
+    let params = TsdfParams::automatic(resolution, cameras, bounds);
+    let grid = GridLayout::new(bounds, &params)?;
+    let fused = match backend.fuse_depth(surfels, cameras, settings, &grid) {
+        Some(fused) => fused?,
+        None => {
+            let mut maps = Vec::with_capacity(cameras.len());
+            for camera in cameras {
+                let g = backend.forward(surfels, camera, settings)?.gbuffers;
+                maps.push((g.depth, g.alpha));
+            }
+            let views: Vec<DepthView> = cameras
+                .iter()
+                .zip(&maps)
+                .map(|(camera, (depth, alpha))| DepthView {
+                    camera,
+                    depth,
+                    alpha: Some(alpha),
+                })
+                .collect();
+            fuse_tsdf(&views, bounds, &params)?
+        }
+    };
+    Ok(mesh_from_grid(&fused)?)
 }
 
 /// The cameras a model's mesh is extracted from: its training cameras, else [`orbit_cameras`].

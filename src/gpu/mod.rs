@@ -20,16 +20,19 @@
 //! tile-entry count and two flags), and the state comes back only when the training loop needs
 //! it on the host. The training loop uses it whenever the run's backend is this one.
 //!
-//! Still on the host: the environment map's prefilter and its transpose (every
-//! `envmap_prefilter_interval` steps), GridMap's mesh extraction and probe rendering (every
-//! `gridmap_interval` / `mesh_interval` steps), densification and evaluation.
+//! GridMap's mesh is fused on the device too (`tsdf`, [`crate::core::raster::Backend::fuse_depth`]):
+//! the training views' depth is rendered and fused into a TSDF grid there, and only the grid
+//! comes back for marching cubes. Still on the host: the environment map's prefilter and its
+//! transpose (every `envmap_prefilter_interval` steps), marching cubes and GridMap's probe
+//! rendering (every `gridmap_interval` / `mesh_interval` steps), densification and evaluation.
 //!
 //! Modules: `shaders` (the table of kernels: what each is compiled from and binds), `device`
 //! (compiling, binding, dispatching, reading back), `layout` (the Rust mirrors of the WGSL
 //! structs), `params` (the rasterizer's parameters and buffer layouts), `band` (tile-row bands
 //! of large images), `sort` (the radix sort), `raster` ([`GpuBackend`]), `light` (lights laid
 //! out for the kernels), `shade` (PolarDR), `prefilter` (the environment prefilter), `train`
-//! ([`DeviceTrainer`]), `profile` (pass timings), `context` (adapters).
+//! ([`DeviceTrainer`]), `tsdf` (TSDF fusion of rendered depth), `profile` (pass timings),
+//! `context` (adapters).
 
 mod band;
 mod context;
@@ -44,6 +47,7 @@ mod shade;
 mod shaders;
 mod sort;
 mod train;
+mod tsdf;
 
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};
 pub use raster::{GpuBackend, GpuOptions};
@@ -82,6 +86,23 @@ pub enum GpuError {
     /// A device error (validation, out of memory, a failed readback), naming what was running.
     #[error("{0}")]
     Device(String),
+}
+
+/// The gpu backend on any adapter (lavapipe in CI) for the unit tests, or `None` after printing
+/// "skipping: no GPU adapter" where none exists outside CI (under `CI=true` that fails).
+#[cfg(test)]
+pub(crate) fn test_backend() -> Option<GpuBackend> {
+    match GpuContext::new(AdapterRequirement::Any) {
+        Ok(ctx) => Some(GpuBackend::new(ctx).expect("the gpu kernels compile")),
+        Err(e) => {
+            assert!(
+                !crate::testing::running_in_ci(),
+                "CI=true but no adapter: {e}"
+            );
+            println!("skipping: no GPU adapter ({e})");
+            None
+        }
+    }
 }
 
 impl From<GpuError> for crate::core::raster::RasterError {

@@ -215,6 +215,48 @@ mod tests {
         assert!((hi - (centre + DVec3::splat(0.8))).min_element() > 0.0);
     }
 
+    /// The gpu backend renders and fuses on the device (its `fuse_depth` answers), the cpu one
+    /// renders in f64 and fuses on the host; from the same surfels and cameras their meshes lie
+    /// within 0.1 % of a voxel of each other (symmetric Chamfer-L1) and both within the sphere
+    /// test's radial bound.
+    #[test]
+    fn gpu_and_cpu_backends_mesh_the_same_surfels_alike() {
+        let Some(gpu) = crate::gpu::test_backend() else {
+            return;
+        };
+        let centre = DVec3::new(0.2, -0.1, 0.3);
+        let surfels = sphere_surfels(centre, 0.8, 4000, DVec3::splat(0.5));
+        let cameras = orbit_cameras(&surfels);
+        let settings = RasterSettings::default();
+        let resolution = 48;
+        let bounds = surfel_bounds(&surfels).unwrap();
+        let grid =
+            GridLayout::new(bounds, &TsdfParams::automatic(resolution, &cameras, bounds)).unwrap();
+        assert!(gpu
+            .fuse_depth(&surfels, &cameras, &settings, &grid)
+            .is_some());
+        let device = mesh_from_surfels(&surfels, &cameras, &gpu, &settings, resolution).unwrap();
+        let cpu = crate::core::raster::cpu::CpuBackend;
+        let host = mesh_from_surfels(&surfels, &cameras, &cpu, &settings, resolution).unwrap();
+        let forward = crate::core::mesh::chamfer_l1_with(&device, &host, 20_000, 1).unwrap();
+        let backward = crate::core::mesh::chamfer_l1_with(&host, &device, 20_000, 2).unwrap();
+        println!(
+            "triangles: gpu {}, cpu {}; Chamfer {forward:.2e} / {backward:.2e}, voxel {:.2e}",
+            device.triangles.len(),
+            host.triangles.len(),
+            grid.voxel
+        );
+        assert!(forward < 1e-3 * grid.voxel && backward < 1e-3 * grid.voxel);
+        for mesh in [&device, &host] {
+            let worst = mesh
+                .vertices
+                .iter()
+                .map(|v| (DVec3::from_array(*v).distance(centre) - 0.8).abs())
+                .fold(0.0, f64::max);
+            assert!(worst < 0.06, "largest radial error {worst}");
+        }
+    }
+
     #[test]
     fn floaters_do_not_stretch_the_bounds_and_extensions_choose_the_format() {
         let mut surfels = sphere_surfels(DVec3::ZERO, 1.0, 2000, DVec3::splat(0.5));

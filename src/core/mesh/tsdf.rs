@@ -761,8 +761,120 @@ pub fn cameras_around_point(
         .collect()
 }
 
+/// Plain references for the fusion tests (here and the device's, `crate::gpu`).
+#[cfg(test)]
+pub(crate) mod reference {
+    use super::*;
+
+    /// Z-depth maps of a union of spheres (0 where every sphere is missed).
+    pub(crate) fn spheres_depth(cameras: &[Camera], spheres: &[(DVec3, f64)]) -> Vec<Vec<f64>> {
+        let per_sphere: Vec<Vec<Vec<f64>>> = spheres
+            .iter()
+            .map(|&(c, r)| sphere_depth_maps(cameras, c, r))
+            .collect();
+        (0..cameras.len())
+            .map(|v| {
+                (0..cameras[v].num_pixels())
+                    .map(|p| {
+                        per_sphere
+                            .iter()
+                            .map(|maps| maps[v][p])
+                            .filter(|&d| d > 0.0)
+                            .fold(0.0, |a: f64, d| if a == 0.0 { d } else { a.min(d) })
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Dense fusion written plainly from the rules in the module doc: every voxel, every view,
+    /// `Camera::project`, raw depth pixels.
+    pub(crate) fn dense_reference(
+        views: &[DepthView],
+        bounds: (DVec3, DVec3),
+        params: &TsdfParams,
+    ) -> ScalarGrid {
+        let extent = bounds.1 - bounds.0;
+        let voxel = extent.max_element() / params.resolution as f64;
+        let dims = [0, 1, 2].map(|a| (extent[a] / voxel).ceil() as usize + 2 * MARGIN_VOXELS);
+        let origin = bounds.0 - DVec3::splat((MARGIN_VOXELS as f64 - 0.5) * voxel);
+        let trunc = params.truncation_voxels * voxel;
+        let mut values = Vec::new();
+        let mut known = Vec::new();
+        for k in 0..dims[2] {
+            for j in 0..dims[1] {
+                for i in 0..dims[0] {
+                    let p = origin + voxel * DVec3::new(i as f64, j as f64, k as f64);
+                    let (mut sum, mut count) = (0.0, 0);
+                    for view in views {
+                        let cam = view.camera;
+                        let (w, h) = (cam.width as usize, cam.height as usize);
+                        let Some((u, v, z)) = cam.project(p) else {
+                            continue;
+                        };
+                        if !(u >= 0.0 && u < w as f64 && v >= 0.0 && v < h as f64) {
+                            continue;
+                        }
+                        let depth_at = |x: usize, y: usize| {
+                            let d = view.depth[y * w + x];
+                            let opaque = view.alpha.is_none_or(|a| a[y * w + x] >= 0.5);
+                            if opaque && d > 0.0 && d <= params.depth_max {
+                                d
+                            } else {
+                                0.0
+                            }
+                        };
+                        let (x, y) = ((u - 0.5).max(0.0), (v - 0.5).max(0.0));
+                        let (x0, y0) = (x.floor() as usize, y.floor() as usize);
+                        let (x1, y1) = ((x0 + 1).min(w - 1), (y0 + 1).min(h - 1));
+                        let d = [
+                            depth_at(x0, y0),
+                            depth_at(x1, y0),
+                            depth_at(x0, y1),
+                            depth_at(x1, y1),
+                        ];
+                        if d.iter().all(|&z| z == 0.0) {
+                            sum += 1.0;
+                            count += 1;
+                            continue;
+                        }
+                        let spread = d.iter().copied().fold(0.0, f64::max)
+                            - d.iter().copied().fold(f64::INFINITY, f64::min);
+                        if d.contains(&0.0) || spread > trunc {
+                            continue;
+                        }
+                        let d = d.map(|z| z as f32 as f64);
+                        let (fx, fy) = ((x - x0 as f64).min(1.0), (y - y0 as f64).min(1.0));
+                        let depth = (1.0 - fy) * ((1.0 - fx) * d[0] + fx * d[1])
+                            + fy * ((1.0 - fx) * d[2] + fx * d[3]);
+                        let sdf = depth - z;
+                        if sdf >= -trunc {
+                            sum += (sdf / trunc).min(1.0);
+                            count += 1;
+                        }
+                    }
+                    values.push(if count > 0 {
+                        (sum / count as f64) as f32
+                    } else {
+                        0.0
+                    });
+                    known.push(count > 0);
+                }
+            }
+        }
+        ScalarGrid {
+            dims,
+            origin,
+            spacing: voxel,
+            values,
+            known,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    use super::reference::{dense_reference, spheres_depth};
     use super::*;
     use std::collections::HashMap;
 
@@ -864,111 +976,6 @@ mod tests {
             fuse_tsdf(&[], bounds, &TsdfParams::new(8)),
             Err(MeshError::NoViews)
         ));
-    }
-
-    /// Z-depth maps of a union of spheres (0 where every sphere is missed).
-    fn spheres_depth(cameras: &[Camera], spheres: &[(DVec3, f64)]) -> Vec<Vec<f64>> {
-        let per_sphere: Vec<Vec<Vec<f64>>> = spheres
-            .iter()
-            .map(|&(c, r)| sphere_depth_maps(cameras, c, r))
-            .collect();
-        (0..cameras.len())
-            .map(|v| {
-                (0..cameras[v].num_pixels())
-                    .map(|p| {
-                        per_sphere
-                            .iter()
-                            .map(|maps| maps[v][p])
-                            .filter(|&d| d > 0.0)
-                            .fold(0.0, |a: f64, d| if a == 0.0 { d } else { a.min(d) })
-                    })
-                    .collect()
-            })
-            .collect()
-    }
-
-    /// Dense fusion written plainly from the rules in the module doc: every voxel, every view,
-    /// `Camera::project`, raw depth pixels.
-    fn dense_reference(
-        views: &[DepthView],
-        bounds: (DVec3, DVec3),
-        params: &TsdfParams,
-    ) -> ScalarGrid {
-        let extent = bounds.1 - bounds.0;
-        let voxel = extent.max_element() / params.resolution as f64;
-        let dims = [0, 1, 2].map(|a| (extent[a] / voxel).ceil() as usize + 2 * MARGIN_VOXELS);
-        let origin = bounds.0 - DVec3::splat((MARGIN_VOXELS as f64 - 0.5) * voxel);
-        let trunc = params.truncation_voxels * voxel;
-        let mut values = Vec::new();
-        let mut known = Vec::new();
-        for k in 0..dims[2] {
-            for j in 0..dims[1] {
-                for i in 0..dims[0] {
-                    let p = origin + voxel * DVec3::new(i as f64, j as f64, k as f64);
-                    let (mut sum, mut count) = (0.0, 0);
-                    for view in views {
-                        let cam = view.camera;
-                        let (w, h) = (cam.width as usize, cam.height as usize);
-                        let Some((u, v, z)) = cam.project(p) else {
-                            continue;
-                        };
-                        if !(u >= 0.0 && u < w as f64 && v >= 0.0 && v < h as f64) {
-                            continue;
-                        }
-                        let depth_at = |x: usize, y: usize| {
-                            let d = view.depth[y * w + x];
-                            let opaque = view.alpha.is_none_or(|a| a[y * w + x] >= 0.5);
-                            if opaque && d > 0.0 && d <= params.depth_max {
-                                d
-                            } else {
-                                0.0
-                            }
-                        };
-                        let (x, y) = ((u - 0.5).max(0.0), (v - 0.5).max(0.0));
-                        let (x0, y0) = (x.floor() as usize, y.floor() as usize);
-                        let (x1, y1) = ((x0 + 1).min(w - 1), (y0 + 1).min(h - 1));
-                        let d = [
-                            depth_at(x0, y0),
-                            depth_at(x1, y0),
-                            depth_at(x0, y1),
-                            depth_at(x1, y1),
-                        ];
-                        if d.iter().all(|&z| z == 0.0) {
-                            sum += 1.0;
-                            count += 1;
-                            continue;
-                        }
-                        let spread = d.iter().copied().fold(0.0, f64::max)
-                            - d.iter().copied().fold(f64::INFINITY, f64::min);
-                        if d.contains(&0.0) || spread > trunc {
-                            continue;
-                        }
-                        let d = d.map(|z| z as f32 as f64);
-                        let (fx, fy) = ((x - x0 as f64).min(1.0), (y - y0 as f64).min(1.0));
-                        let depth = (1.0 - fy) * ((1.0 - fx) * d[0] + fx * d[1])
-                            + fy * ((1.0 - fx) * d[2] + fx * d[3]);
-                        let sdf = depth - z;
-                        if sdf >= -trunc {
-                            sum += (sdf / trunc).min(1.0);
-                            count += 1;
-                        }
-                    }
-                    values.push(if count > 0 {
-                        (sum / count as f64) as f32
-                    } else {
-                        0.0
-                    });
-                    known.push(count > 0);
-                }
-            }
-        }
-        ScalarGrid {
-            dims,
-            origin,
-            spacing: voxel,
-            values,
-            known,
-        }
     }
 
     #[test]

@@ -358,7 +358,6 @@ mod tests {
                 .collect();
             let depth = fusion.depth_map(camera).unwrap();
             let mut encoder = device.wgpu().create_command_encoder(&Default::default());
-            let mut bands = Vec::new();
             for band in Band::split(camera.height, band_rows) {
                 let rows = band.rows_of(&gbuf, camera.height, camera.width as usize * NUM_OUT);
                 let buffer = device
@@ -367,7 +366,6 @@ mod tests {
                 fusion
                     .prepare_band(&mut encoder, camera, band, &buffer, &depth)
                     .unwrap();
-                bands.push(buffer);
             }
             fusion.add_view(&mut encoder, camera, &depth).unwrap();
             device.queue().submit([encoder.finish()]);

@@ -20,16 +20,19 @@
 //! tile-entry count and two flags), and the state comes back only when the training loop needs
 //! it on the host. The training loop uses it whenever the run's backend is this one.
 //!
-//! Still on the host: the environment map's prefilter and its transpose (every
-//! `envmap_prefilter_interval` steps), GridMap's mesh extraction and probe rendering (every
-//! `gridmap_interval` / `mesh_interval` steps), densification and evaluation.
+//! GridMap's mesh is fused on the device too (`tsdf`, [`crate::core::raster::Backend::fuse_depth`]):
+//! the training views' depth is rendered and fused into a TSDF grid there, and only the grid
+//! comes back for marching cubes. Still on the host: the environment map's prefilter and its
+//! transpose (every `envmap_prefilter_interval` steps), marching cubes and GridMap's probe
+//! rendering (every `gridmap_interval` / `mesh_interval` steps), densification and evaluation.
 //!
 //! Modules: `shaders` (the table of kernels: what each is compiled from and binds), `device`
 //! (compiling, binding, dispatching, reading back), `layout` (the Rust mirrors of the WGSL
 //! structs), `params` (the rasterizer's parameters and buffer layouts), `band` (tile-row bands
 //! of large images), `sort` (the radix sort), `raster` ([`GpuBackend`]), `light` (lights laid
 //! out for the kernels), `shade` (PolarDR), `prefilter` (the environment prefilter), `train`
-//! ([`DeviceTrainer`]), `profile` (pass timings), `context` (adapters).
+//! ([`DeviceTrainer`]), `tsdf` (TSDF fusion of rendered depth), `profile` (pass timings),
+//! `context` (adapters).
 
 mod band;
 mod bind_cache;
@@ -45,6 +48,7 @@ mod shade;
 mod shaders;
 mod sort;
 mod train;
+mod tsdf;
 
 pub use bind_cache::BindCounts;
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};

@@ -31,6 +31,10 @@
 //! (`super::train`) runs the same kernels without the host round trips: the scan on the device,
 //! the sort and the range kernels dispatched indirectly.
 //!
+//! The forward pass is also a building block: [`GpuBackend::rasterize_bands`] hands each band's
+//! encoded work to its caller, which reads the G-buffers back (`forward`) or consumes them on the
+//! device (the TSDF fusion, `super::tsdf`).
+//!
 //! Threading: calls on one [`GpuBackend`] are serialized (a mutex); the host-side conversions
 //! are single-threaded.
 
@@ -48,11 +52,13 @@ use super::sort::{
     varying_bits, varying_depth_bits, KeyBits, RadixSort, SortDispatch, SortInputs, RADIX_BITS,
     RADIX_BLOCK,
 };
+use super::tsdf::TsdfKernels;
 use super::{GpuContext, GpuError};
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
 use crate::core::envmap::EnvGrad;
 use crate::core::light::{LightKind, LightProbe};
+use crate::core::mesh::{GridLayout, ScalarGrid};
 use crate::core::raster::{
     begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
     GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
@@ -110,6 +116,7 @@ pub struct GpuBackend {
     kernels: Box<RasterKernels>,
     sort: Box<RadixSort>,
     shading: Box<ShadePipelines>,
+    tsdf: Box<TsdfKernels>,
 }
 
 /// What the forward pass keeps (on the device) for the backward pass.
@@ -125,26 +132,33 @@ struct Saved {
 
 /// The forward state of one band: its parameters, sorted entries, tile ranges and per-pixel
 /// buffers (G-buffers, final transmittance, contributor counts), all for the band's rows only.
-struct BandSaved {
-    band: Band,
+pub(super) struct BandSaved {
+    pub(super) band: Band,
     params: wgpu::Buffer,
     entries: wgpu::Buffer,
     ranges: wgpu::Buffer,
-    gbuf: wgpu::Buffer,
+    /// `NUM_OUT` values per pixel of the band's rows (α first, depth second).
+    pub(super) gbuf: wgpu::Buffer,
     final_t: wgpu::Buffer,
     contrib: wgpu::Buffer,
 }
 
+/// The surfels on the device for rasterizing views of them: their raw parameters, and room for
+/// their projection into one view at a time.
+pub(super) struct DeviceSurfels {
+    pub(super) count: u32,
+    raw: wgpu::Buffer,
+    proj: wgpu::Buffer,
+}
+
 /// What every band of one forward pass shares: the view, and the surfels on the device (raw and
 /// projected; the projection is the same for every band).
-struct Frame<'a> {
-    camera: &'a Camera,
-    settings: &'a RasterSettings,
-    surfels: u32,
+pub(super) struct Frame<'a> {
+    pub(super) camera: &'a Camera,
+    pub(super) settings: &'a RasterSettings,
+    pub(super) surfels: &'a DeviceSurfels,
     /// [`varying_depth_bits`] of the surfels.
-    depth_bits: u32,
-    raw: &'a wgpu::Buffer,
-    proj: &'a wgpu::Buffer,
+    pub(super) depth_bits: u32,
 }
 
 /// What the forward pass of one band brings back.
@@ -155,9 +169,19 @@ struct BandResult {
     tile_counts: Vec<u32>,
 }
 
-/// The forward pass of one band: done, or its entries exceed the binding limit.
+/// One band rasterized into `encoder`, not yet submitted: its G-buffers (in `saved`) and
+/// evaluation counts are on the device once the caller submits the encoder, with whatever it
+/// adds (a readback, or kernels that consume the G-buffers where they are).
+pub(super) struct EncodedBand {
+    pub(super) saved: BandSaved,
+    pub(super) evals: wgpu::Buffer,
+    pub(super) tile_counts: Vec<u32>,
+    pub(super) encoder: wgpu::CommandEncoder,
+}
+
+/// The forward pass of one band: encoded, or its entries exceed the binding limit.
 enum BandOutcome {
-    Done(Box<BandResult>),
+    Encoded(Box<EncodedBand>),
     TooManyEntries(u64),
 }
 
@@ -187,13 +211,20 @@ impl GpuBackend {
         };
         let variant = Variant { atomics, walk };
         let device = Device::new(ctx, variant, options.max_binding_bytes, options.profile);
-        let (kernels, sort) = device.compile_all(|d| (RasterKernels::new(d), RadixSort::new(d)))?;
+        let (kernels, sort, tsdf) = device.compile_all(|d| {
+            (
+                RasterKernels::new(d),
+                RadixSort::new(d),
+                TsdfKernels::new(d),
+            )
+        })?;
         let shading = ShadePipelines::compile(&device)?;
         Ok(GpuBackend {
             device: Box::new(device),
             kernels: Box::new(kernels),
             sort: Box::new(sort),
             shading: Box::new(shading),
+            tsdf: Box::new(tsdf),
         })
     }
 
@@ -240,6 +271,11 @@ impl GpuBackend {
         &self.shading
     }
 
+    /// The TSDF fusion kernels.
+    pub(super) fn tsdf(&self) -> &TsdfKernels {
+        &self.tsdf
+    }
+
     /// One workgroup per tile of `band`.
     fn dispatch_tiles(
         &self,
@@ -256,20 +292,33 @@ impl GpuBackend {
         pass.dispatch_workgroups(camera.width.div_ceil(TILE), band.tile_rows(), 1);
     }
 
-    fn forward_impl(
-        &self,
-        surfels: &Surfels,
-        camera: &Camera,
-        settings: &RasterSettings,
-    ) -> Result<Rasterized, RasterError> {
+    /// Uploads the surfels' raw parameters and makes room for their projection.
+    pub(super) fn upload(&self, surfels: &Surfels) -> Result<DeviceSurfels, RasterError> {
         let n = surfels.len();
-        let n32 = u32::try_from(n)
+        let count = u32::try_from(n)
             .map_err(|_| RasterError::Gpu(format!("{n} surfels exceed the u32 index range")))?;
-        let (w, h) = (camera.width as usize, camera.height as usize);
-        // Every buffer is checked as it is created; the backward pass's per-surfel sums are
-        // checked now so that a render the backward pass could not handle fails at once.
-        self.device
-            .check_size("gradient sums", n as u64 * NUM_ACC * 4)?;
+        let _span = info_span!("upload", surfels = n).entered();
+        let raw = self
+            .device
+            .storage_init("raw surfels", bytemuck::cast_slice(&raw_surfels(surfels)))?;
+        let proj = self.device.storage(
+            "projected surfels",
+            n as u64 * PROJ_BYTES,
+            wgpu::BufferUsages::empty(),
+        )?;
+        Ok(DeviceSurfels { count, raw, proj })
+    }
+
+    /// Rasterizes the view of `frame` band by band, top to bottom, and hands each band's encoded
+    /// work to `finish`, which submits it (with what it adds) before the next band starts. A band
+    /// whose tile entries exceed the binding limit is split in two; bands are sized so that their
+    /// G-buffers (and the backward pass's upstream gradient) fit it.
+    pub(super) fn rasterize_bands<T>(
+        &self,
+        frame: &Frame,
+        mut finish: impl FnMut(EncodedBand) -> Result<T, RasterError>,
+    ) -> Result<Vec<T>, RasterError> {
+        let camera = frame.camera;
         // The largest per-pixel buffers (G-buffers forward, upstream gradient backward) decide
         // how many tile rows a band may have.
         let tile_row_bytes = u64::from(camera.width) * u64::from(TILE) * NUM_OUT as u64 * 4;
@@ -282,32 +331,11 @@ impl GpuBackend {
             .into_iter()
             .rev()
             .collect();
-
-        let raw_buf = {
-            let _span = info_span!("upload", surfels = n).entered();
-            self.device
-                .storage_init("raw surfels", bytemuck::cast_slice(&raw_surfels(surfels)))?
-        };
-        let proj_buf = self.device.storage(
-            "projected surfels",
-            n as u64 * PROJ_BYTES,
-            wgpu::BufferUsages::empty(),
-        )?;
-
-        // Bands top to bottom; one whose entries exceed the limit is split in two.
-        let frame = Frame {
-            camera,
-            settings,
-            surfels: n32,
-            depth_bits: varying_depth_bits(surfels, camera, settings.near),
-            raw: &raw_buf,
-            proj: &proj_buf,
-        };
-        let mut done: Vec<BandResult> = Vec::new();
+        let mut done = Vec::new();
         while let Some(band) = pending.pop() {
             let _span = info_span!("band", first = band.first, end = band.end).entered();
-            match self.forward_band(&frame, band)? {
-                BandOutcome::Done(result) => done.push(*result),
+            match self.forward_band(frame, band)? {
+                BandOutcome::Encoded(encoded) => done.push(finish(*encoded)?),
                 BandOutcome::TooManyEntries(total) if band.tile_rows() == 1 => {
                     return Err(self
                         .device
@@ -321,6 +349,48 @@ impl GpuBackend {
                 }
             }
         }
+        Ok(done)
+    }
+
+    fn forward_impl(
+        &self,
+        surfels: &Surfels,
+        camera: &Camera,
+        settings: &RasterSettings,
+    ) -> Result<Rasterized, RasterError> {
+        let n = surfels.len();
+        let (w, h) = (camera.width as usize, camera.height as usize);
+        // Every buffer is checked as it is created; the backward pass's per-surfel sums are
+        // checked now so that a render the backward pass could not handle fails at once.
+        self.device
+            .check_size("gradient sums", n as u64 * NUM_ACC * 4)?;
+        let uploaded = self.upload(surfels)?;
+        let frame = Frame {
+            camera,
+            settings,
+            surfels: &uploaded,
+            depth_bits: varying_depth_bits(surfels, camera, settings.near),
+        };
+        let done = self.rasterize_bands(&frame, |encoded| {
+            let pixels =
+                u64::from(camera.width) * u64::from(encoded.saved.band.pixel_rows(camera.height));
+            let out = {
+                let _span = info_span!("submit_and_read").entered();
+                self.device.submit_and_read(
+                    encoded.encoder,
+                    &[
+                        (&encoded.saved.gbuf, pixels * NUM_OUT as u64 * 4),
+                        (&encoded.evals, pixels * 4),
+                    ],
+                )?
+            };
+            Ok(BandResult {
+                gbuf: bytemuck::pod_collect_to_vec(&out[0]),
+                evals: bytemuck::pod_collect_to_vec(&out[1]),
+                tile_counts: encoded.tile_counts,
+                saved: encoded.saved,
+            })
+        })?;
 
         let _span = info_span!("readback").entered();
         let mut gb = GBuffers::zeros(w, h);
@@ -355,6 +425,7 @@ impl GpuBackend {
             gb.depth_normal =
                 depth_normals(camera, &gb.depth, &gb.alpha, settings.normalize_alpha_min);
         }
+        let DeviceSurfels { raw, proj, .. } = uploaded;
         Ok(Rasterized {
             gbuffers: gb,
             stats: RasterStats {
@@ -366,23 +437,24 @@ impl GpuBackend {
                 num_surfels: n,
                 camera: *camera,
                 settings: *settings,
-                raw: raw_buf,
-                proj: proj_buf,
+                raw,
+                proj,
                 bands: done.into_iter().map(|r| r.saved).collect(),
             }),
         })
     }
 
     /// Projects the surfels for `band` (the projection is the same for every band; the tile
-    /// counts are the band's), bins and sorts the band's entries and rasterizes its tiles.
+    /// counts are the band's), then encodes the binning and sorting of the band's entries and
+    /// the rasterization of its tiles (not submitted).
     fn forward_band(&self, frame: &Frame, band: Band) -> Result<BandOutcome, RasterError> {
         let device = self.device.wgpu();
         let (camera, settings) = (frame.camera, frame.settings);
-        let (raw_buf, proj_buf) = (frame.raw, frame.proj);
-        let n = frame.surfels as usize;
+        let (raw_buf, proj_buf) = (&frame.surfels.raw, &frame.surfels.proj);
+        let n = frame.surfels.count as usize;
         let pixels = u64::from(camera.width) * u64::from(band.pixel_rows(camera.height));
         let tiles = camera.width.div_ceil(TILE) * band.tile_rows();
-        let params = ParamsGpu::new(camera, settings, frame.surfels, band);
+        let params = ParamsGpu::new(camera, settings, frame.surfels.count, band);
         let params_buf = self.device.uniform("params", bytemuck::bytes_of(&params));
 
         // Projection and the band's tile counts.
@@ -522,7 +594,7 @@ impl GpuBackend {
             )?;
             entries_buf
         };
-        let out = {
+        {
             let _span = info_span!("rasterize", entries = total).entered();
             let group = self.device.bind(
                 &self.kernels.rasterize,
@@ -545,18 +617,11 @@ impl GpuBackend {
                 camera,
                 band,
             );
-            self.device.submit_and_read(
-                encoder,
-                &[
-                    (&gbuf_buf, pixels * NUM_OUT as u64 * 4),
-                    (&evals_buf, pixels * 4),
-                ],
-            )?
-        };
-        Ok(BandOutcome::Done(Box::new(BandResult {
-            gbuf: bytemuck::pod_collect_to_vec(&out[0]),
-            evals: bytemuck::pod_collect_to_vec(&out[1]),
+        }
+        Ok(BandOutcome::Encoded(Box::new(EncodedBand {
+            evals: evals_buf,
             tile_counts: counts,
+            encoder,
             saved: BandSaved {
                 band,
                 params: params_buf,
@@ -732,6 +797,18 @@ impl Backend for GpuBackend {
         self.device.scoped("backward", || {
             self.backward_impl(saved, camera, settings, gb, upstream)
         })
+    }
+
+    /// Rendered and fused on the device (`super::tsdf`), unless the grid exceeds the binding
+    /// limit.
+    fn fuse_depth(
+        &self,
+        surfels: &Surfels,
+        cameras: &[Camera],
+        settings: &RasterSettings,
+        grid: &GridLayout,
+    ) -> Option<Result<ScalarGrid, RasterError>> {
+        self.fuse_depth_on_device(surfels, cameras, settings, grid)
     }
 
     fn take_stage_times(&self) -> Vec<StageTime> {

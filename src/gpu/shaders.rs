@@ -238,6 +238,7 @@ mod file {
         TRAIN_PARAMS = "train_params.wgsl";
         TRAIN_PIXELS = "train_pixels.wgsl";
         TRAIN_UPDATE = "train_update.wgsl";
+        TSDF_FUSE = "tsdf_fuse.wgsl";
         WALK_OWN = "walk_own.wgsl";
         WALK_SUBGROUP = "walk_subgroup.wgsl";
     }
@@ -633,6 +634,32 @@ kernel_table! {
             read_write(7, "step_status"),
             read(8, "light_step"),
             read_write(9, "light_pending"),
+        ]],
+    };
+
+    // TSDF fusion of rendered depth (`super::tsdf`).
+
+    /// One band of a view's G-buffers into the view's cleaned depth map.
+    PREPARE_DEPTH = KernelSpec {
+        name: "prepare_depth",
+        entry: "prepare_depth",
+        parts: &[file::COMMON, file::TSDF_FUSE],
+        bindings: &[&[
+            uniform(4, "depth_band"),
+            read(5, "band_gbuf"),
+            read_write(6, "clean_depth"),
+        ]],
+    };
+    /// One view's votes added into every voxel's sum and count.
+    FUSE_VIEW = KernelSpec {
+        name: "fuse_view",
+        entry: "fuse_view",
+        parts: &[file::COMMON, file::TSDF_FUSE],
+        bindings: &[&[
+            uniform(0, "fuse"),
+            read(1, "view_depth"),
+            read_write(2, "tsdf_sum"),
+            read_write(3, "tsdf_count"),
         ]],
     };
 

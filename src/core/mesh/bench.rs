@@ -37,7 +37,7 @@ pub fn time_extraction(
     let sphere = AnalyticSphere::new(0.9, views, 3.4, image_size);
     let depth_views = sphere.views(None);
     let bounds = (DVec3::splat(-1.0), DVec3::splat(1.0));
-    let params = TsdfParams::automatic(resolution, &depth_views, bounds);
+    let params = TsdfParams::automatic(resolution, &sphere.cameras, bounds);
     let start = Instant::now();
     let mesh = extract_mesh(&depth_views, bounds, &params)?;
     let seconds = start.elapsed().as_secs_f64();

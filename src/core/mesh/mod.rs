@@ -21,9 +21,11 @@ mod tsdf;
 
 pub use chamfer::{chamfer_l1, chamfer_l1_with, sample_surface, CHAMFER_SAMPLES};
 pub use marching_cubes::{marching_cubes, ScalarGrid};
+#[cfg(test)]
+pub(crate) use tsdf::reference as tsdf_reference;
 pub use tsdf::{
-    cameras_around, cameras_around_point, extract_mesh, fuse_tsdf, sphere_depth_maps, DepthView,
-    TsdfParams, MARGIN_VOXELS,
+    cameras_around, cameras_around_point, extract_mesh, fuse_tsdf, mesh_from_grid,
+    sphere_depth_maps, DepthView, GridLayout, TsdfParams, MARGIN_VOXELS,
 };
 
 /// Errors of mesh input/output, extraction and metrics.

@@ -61,12 +61,19 @@ impl TsdfParams {
     /// Defaults with the depth limit derived from the object: 2DGS truncates depth at twice the
     /// scene radius to drop far background; here any depth beyond the far side of the bounds'
     /// circumscribed sphere (camera distance to the centre + radius, worst view) is background.
-    pub fn automatic(resolution: usize, views: &[DepthView], bounds: (DVec3, DVec3)) -> Self {
+    /// It depends on the cameras' positions only, not on what they see, so a fusion that renders
+    /// its depth maps elsewhere (on a device, [`crate::core::raster::Backend::fuse_depth`]) gets
+    /// the same limit as the host's from the same cameras.
+    pub fn automatic<'a>(
+        resolution: usize,
+        cameras: impl IntoIterator<Item = &'a Camera>,
+        bounds: (DVec3, DVec3),
+    ) -> Self {
         let centre = 0.5 * (bounds.0 + bounds.1);
         let radius = 0.5 * (bounds.1 - bounds.0).length();
-        let farthest = views
-            .iter()
-            .map(|v| v.camera.origin().distance(centre))
+        let farthest = cameras
+            .into_iter()
+            .map(|camera| camera.origin().distance(centre))
             .fold(0.0, f64::max);
         TsdfParams {
             depth_max: farthest + radius,
@@ -175,7 +182,9 @@ impl PreparedView {
     /// receives a negative sdf from a view lies within `(d + 2·trunc)·0.71/f + 2·trunc·‖d_cam‖`
     /// of one of the four valid pixels it interpolates (depth spread ≤ trunc, half a pixel
     /// diagonal sideways), and its cell's other corners within √3 voxels of it.
-    fn mark_blocks(&self, grid: &GridLayout, trunc: f64, marked: &mut [bool]) {
+    fn mark_blocks(&self, grid: &GridLayout, marked: &mut [bool]) {
+        let trunc = grid.truncation;
+        let blocks = grid.blocks();
         let cam = &self.camera;
         let f_min = cam.fx.min(cam.fy);
         let dcam_max = [
@@ -223,7 +232,7 @@ impl PreparedView {
                 last = Some((bx, by, bz));
                 for bk in bz.0..=bz.1 {
                     for bj in by.0..=by.1 {
-                        let row = (bk * grid.blocks[1] + bj) * grid.blocks[0];
+                        let row = (bk * blocks[1] + bj) * blocks[0];
                         marked[row + bx.0..=row + bx.1].fill(true);
                     }
                 }
@@ -306,12 +315,86 @@ impl PreparedView {
     }
 }
 
-/// Voxel grid geometry: voxel centres at `origin + voxel · (i, j, k)`.
-struct GridLayout {
-    dims: [usize; 3],
-    blocks: [usize; 3],
-    origin: DVec3,
-    voxel: f64,
+/// The fusion grid over some bounds at some [`TsdfParams`]: voxel centres at
+/// `origin + voxel · (i, j, k)` for `(i, j, k) < dims` (the bounds plus [`MARGIN_VOXELS`] on every
+/// side), with the truncation distance and the depth limit in world units. Every fusion builds
+/// its grid from this one layout: the host's [`fuse_tsdf`] and a backend's own
+/// ([`crate::core::raster::Backend::fuse_depth`]), so both give the same dims, origin and spacing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridLayout {
+    /// Voxels along x, y and z (x fastest in the grid's arrays).
+    pub dims: [usize; 3],
+    /// Centre of voxel (0, 0, 0).
+    pub origin: DVec3,
+    /// Voxel edge (the grid's spacing).
+    pub voxel: f64,
+    /// SDF truncation distance: `truncation_voxels · voxel`. It also bounds the depth spread of
+    /// the four pixels that bilinear interpolation may mix.
+    pub truncation: f64,
+    /// Depths beyond this count as background (may be +∞).
+    pub depth_max: f64,
+}
+
+impl GridLayout {
+    /// The grid of `params` over `bounds`, after checking both: finite bounds with a positive
+    /// extent on every axis, a resolution in 2..=4096, a positive truncation and depth limit.
+    pub fn new(bounds: (DVec3, DVec3), params: &TsdfParams) -> Result<Self, MeshError> {
+        let (lo, hi) = bounds;
+        let extent = hi - lo;
+        if !(lo.is_finite() && hi.is_finite() && extent.min_element() > 0.0) {
+            return Err(MeshError::InvalidBounds { min: lo, max: hi });
+        }
+        if !(2..=4096).contains(&params.resolution) {
+            return Err(MeshError::InvalidParameter {
+                name: "resolution",
+                value: params.resolution as f64,
+                reason: "must be between 2 and 4096",
+            });
+        }
+        if !(params.truncation_voxels.is_finite() && params.truncation_voxels > 0.0) {
+            return Err(MeshError::InvalidParameter {
+                name: "truncation_voxels",
+                value: params.truncation_voxels,
+                reason: "must be positive",
+            });
+        }
+        if params.depth_max.is_nan() || params.depth_max <= 0.0 {
+            return Err(MeshError::InvalidParameter {
+                name: "depth_max",
+                value: params.depth_max,
+                reason: "must be positive",
+            });
+        }
+        let voxel = extent.max_element() / params.resolution as f64;
+        Ok(GridLayout {
+            dims: [0, 1, 2].map(|a| (extent[a] / voxel).ceil() as usize + 2 * MARGIN_VOXELS),
+            origin: lo - DVec3::splat((MARGIN_VOXELS as f64 - 0.5) * voxel),
+            voxel,
+            truncation: params.truncation_voxels * voxel,
+            depth_max: params.depth_max,
+        })
+    }
+
+    /// Voxels in the grid.
+    pub fn voxel_count(&self) -> usize {
+        self.dims.iter().product()
+    }
+
+    /// The fused grid with this layout: `values` and `known` per voxel, x fastest.
+    pub fn scalar_grid(&self, values: Vec<f32>, known: Vec<bool>) -> ScalarGrid {
+        ScalarGrid {
+            dims: self.dims,
+            origin: self.origin,
+            spacing: self.voxel,
+            values,
+            known,
+        }
+    }
+
+    /// Blocks of `BLOCK`³ voxels along each axis (the last ones may be partial).
+    fn blocks(&self) -> [usize; 3] {
+        self.dims.map(|d| d.div_ceil(BLOCK))
+    }
 }
 
 /// Running sums of one block, indexed x fastest with the block's own size.
@@ -483,54 +566,22 @@ pub fn fuse_tsdf(
     if views.is_empty() {
         return Err(MeshError::NoViews);
     }
-    let (lo, hi) = bounds;
-    let extent = hi - lo;
-    if !(lo.is_finite() && hi.is_finite() && extent.min_element() > 0.0) {
-        return Err(MeshError::InvalidBounds { min: lo, max: hi });
-    }
-    if !(2..=4096).contains(&params.resolution) {
-        return Err(MeshError::InvalidParameter {
-            name: "resolution",
-            value: params.resolution as f64,
-            reason: "must be between 2 and 4096",
-        });
-    }
-    if !(params.truncation_voxels.is_finite() && params.truncation_voxels > 0.0) {
-        return Err(MeshError::InvalidParameter {
-            name: "truncation_voxels",
-            value: params.truncation_voxels,
-            reason: "must be positive",
-        });
-    }
-    if params.depth_max.is_nan() || params.depth_max <= 0.0 {
-        return Err(MeshError::InvalidParameter {
-            name: "depth_max",
-            value: params.depth_max,
-            reason: "must be positive",
-        });
-    }
-    let voxel = extent.max_element() / params.resolution as f64;
-    let dims = [0, 1, 2].map(|a| (extent[a] / voxel).ceil() as usize + 2 * MARGIN_VOXELS);
-    let grid = GridLayout {
-        dims,
-        blocks: dims.map(|d| d.div_ceil(BLOCK)),
-        origin: lo - DVec3::splat((MARGIN_VOXELS as f64 - 0.5) * voxel),
-        voxel,
-    };
-    let trunc = params.truncation_voxels * voxel;
+    let grid = GridLayout::new(bounds, params)?;
+    let (dims, trunc) = (grid.dims, grid.truncation);
     let prepared = views
         .par_iter()
         .enumerate()
-        .map(|(i, v)| PreparedView::new(v, i, params.depth_max, trunc))
+        .map(|(i, v)| PreparedView::new(v, i, grid.depth_max, trunc))
         .collect::<Result<Vec<_>, _>>()?;
 
-    let block_count = grid.blocks.iter().product::<usize>();
+    let blocks = grid.blocks();
+    let block_count = blocks.iter().product::<usize>();
     let marked = prepared
         .par_iter()
         .fold(
             || vec![false; block_count],
             |mut marked, view| {
-                view.mark_blocks(&grid, trunc, &mut marked);
+                view.mark_blocks(&grid, &mut marked);
                 marked
             },
         )
@@ -543,7 +594,7 @@ pub fn fuse_tsdf(
         );
     let active: Vec<usize> = (0..block_count).filter(|&b| marked[b]).collect();
     tracing::debug!(active = active.len(), total = block_count, "tsdf blocks");
-    let [bx, by, _] = grid.blocks;
+    let [bx, by, _] = blocks;
     let fused: Vec<(usize, Vec<f32>)> = active
         .par_iter()
         .map(|&b| {
@@ -554,9 +605,9 @@ pub fn fuse_tsdf(
         })
         .collect();
 
-    let [nx, ny, nz] = dims;
-    let mut values = vec![0f32; nx * ny * nz];
-    let mut known = vec![false; nx * ny * nz];
+    let [nx, ny, _] = dims;
+    let mut values = vec![0f32; grid.voxel_count()];
+    let mut known = vec![false; grid.voxel_count()];
     for (b, block_values) in fused {
         let block = [b % bx, (b / bx) % by, b / (bx * by)];
         let start = block.map(|x| x * BLOCK);
@@ -576,26 +627,25 @@ pub fn fuse_tsdf(
             }
         }
     }
-    Ok(ScalarGrid {
-        dims,
-        origin: grid.origin,
-        spacing: voxel,
-        values,
-        known,
-    })
+    Ok(grid.scalar_grid(values, known))
 }
 
-/// Fuses the depth maps into a TSDF over `bounds`, runs marching cubes on its zero level set, keeps
-/// the largest connected component and computes area-weighted vertex normals pointing outward
-/// (towards positive TSDF).
+/// Fuses the depth maps into a TSDF over `bounds` ([`fuse_tsdf`]) and extracts its surface
+/// ([`mesh_from_grid`]).
 pub fn extract_mesh(
     views: &[DepthView],
     bounds: (DVec3, DVec3),
     params: &TsdfParams,
 ) -> Result<TriangleMesh, MeshError> {
     let _span = tracing::info_span!("extract_mesh").entered();
-    let grid = fuse_tsdf(views, bounds, params)?;
-    let mut mesh = marching_cubes(&grid);
+    mesh_from_grid(&fuse_tsdf(views, bounds, params)?)
+}
+
+/// The surface of a fused grid: marching cubes on its zero level set, the largest connected
+/// component, and area-weighted vertex normals pointing outward (towards positive TSDF).
+/// [`MeshError::NoSurface`] when the grid has no zero crossing.
+pub fn mesh_from_grid(grid: &ScalarGrid) -> Result<TriangleMesh, MeshError> {
+    let mut mesh = marching_cubes(grid);
     if mesh.triangles.is_empty() {
         return Err(MeshError::NoSurface);
     }
@@ -711,8 +761,120 @@ pub fn cameras_around_point(
         .collect()
 }
 
+/// Plain references for the fusion tests (here and the device's, `crate::gpu`).
+#[cfg(test)]
+pub(crate) mod reference {
+    use super::*;
+
+    /// Z-depth maps of a union of spheres (0 where every sphere is missed).
+    pub(crate) fn spheres_depth(cameras: &[Camera], spheres: &[(DVec3, f64)]) -> Vec<Vec<f64>> {
+        let per_sphere: Vec<Vec<Vec<f64>>> = spheres
+            .iter()
+            .map(|&(c, r)| sphere_depth_maps(cameras, c, r))
+            .collect();
+        (0..cameras.len())
+            .map(|v| {
+                (0..cameras[v].num_pixels())
+                    .map(|p| {
+                        per_sphere
+                            .iter()
+                            .map(|maps| maps[v][p])
+                            .filter(|&d| d > 0.0)
+                            .fold(0.0, |a: f64, d| if a == 0.0 { d } else { a.min(d) })
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Dense fusion written plainly from the rules in the module doc: every voxel, every view,
+    /// `Camera::project`, raw depth pixels.
+    pub(crate) fn dense_reference(
+        views: &[DepthView],
+        bounds: (DVec3, DVec3),
+        params: &TsdfParams,
+    ) -> ScalarGrid {
+        let extent = bounds.1 - bounds.0;
+        let voxel = extent.max_element() / params.resolution as f64;
+        let dims = [0, 1, 2].map(|a| (extent[a] / voxel).ceil() as usize + 2 * MARGIN_VOXELS);
+        let origin = bounds.0 - DVec3::splat((MARGIN_VOXELS as f64 - 0.5) * voxel);
+        let trunc = params.truncation_voxels * voxel;
+        let mut values = Vec::new();
+        let mut known = Vec::new();
+        for k in 0..dims[2] {
+            for j in 0..dims[1] {
+                for i in 0..dims[0] {
+                    let p = origin + voxel * DVec3::new(i as f64, j as f64, k as f64);
+                    let (mut sum, mut count) = (0.0, 0);
+                    for view in views {
+                        let cam = view.camera;
+                        let (w, h) = (cam.width as usize, cam.height as usize);
+                        let Some((u, v, z)) = cam.project(p) else {
+                            continue;
+                        };
+                        if !(u >= 0.0 && u < w as f64 && v >= 0.0 && v < h as f64) {
+                            continue;
+                        }
+                        let depth_at = |x: usize, y: usize| {
+                            let d = view.depth[y * w + x];
+                            let opaque = view.alpha.is_none_or(|a| a[y * w + x] >= 0.5);
+                            if opaque && d > 0.0 && d <= params.depth_max {
+                                d
+                            } else {
+                                0.0
+                            }
+                        };
+                        let (x, y) = ((u - 0.5).max(0.0), (v - 0.5).max(0.0));
+                        let (x0, y0) = (x.floor() as usize, y.floor() as usize);
+                        let (x1, y1) = ((x0 + 1).min(w - 1), (y0 + 1).min(h - 1));
+                        let d = [
+                            depth_at(x0, y0),
+                            depth_at(x1, y0),
+                            depth_at(x0, y1),
+                            depth_at(x1, y1),
+                        ];
+                        if d.iter().all(|&z| z == 0.0) {
+                            sum += 1.0;
+                            count += 1;
+                            continue;
+                        }
+                        let spread = d.iter().copied().fold(0.0, f64::max)
+                            - d.iter().copied().fold(f64::INFINITY, f64::min);
+                        if d.contains(&0.0) || spread > trunc {
+                            continue;
+                        }
+                        let d = d.map(|z| z as f32 as f64);
+                        let (fx, fy) = ((x - x0 as f64).min(1.0), (y - y0 as f64).min(1.0));
+                        let depth = (1.0 - fy) * ((1.0 - fx) * d[0] + fx * d[1])
+                            + fy * ((1.0 - fx) * d[2] + fx * d[3]);
+                        let sdf = depth - z;
+                        if sdf >= -trunc {
+                            sum += (sdf / trunc).min(1.0);
+                            count += 1;
+                        }
+                    }
+                    values.push(if count > 0 {
+                        (sum / count as f64) as f32
+                    } else {
+                        0.0
+                    });
+                    known.push(count > 0);
+                }
+            }
+        }
+        ScalarGrid {
+            dims,
+            origin,
+            spacing: voxel,
+            values,
+            known,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    use super::reference::{dense_reference, spheres_depth};
     use super::*;
     use std::collections::HashMap;
 
@@ -721,7 +883,7 @@ mod tests {
         let sphere = AnalyticSphere::new(0.8, 20, 3.0, 128);
         let views = sphere.views(None);
         let bounds = (DVec3::splat(-1.0), DVec3::splat(1.0));
-        let params = TsdfParams::automatic(64, &views, bounds);
+        let params = TsdfParams::automatic(64, &sphere.cameras, bounds);
         let mesh = extract_mesh(&views, bounds, &params).unwrap();
         let voxel = 2.0 / 64.0;
         let worst = sphere.worst_radial_error(&mesh);
@@ -816,111 +978,6 @@ mod tests {
         ));
     }
 
-    /// Z-depth maps of a union of spheres (0 where every sphere is missed).
-    fn spheres_depth(cameras: &[Camera], spheres: &[(DVec3, f64)]) -> Vec<Vec<f64>> {
-        let per_sphere: Vec<Vec<Vec<f64>>> = spheres
-            .iter()
-            .map(|&(c, r)| sphere_depth_maps(cameras, c, r))
-            .collect();
-        (0..cameras.len())
-            .map(|v| {
-                (0..cameras[v].num_pixels())
-                    .map(|p| {
-                        per_sphere
-                            .iter()
-                            .map(|maps| maps[v][p])
-                            .filter(|&d| d > 0.0)
-                            .fold(0.0, |a: f64, d| if a == 0.0 { d } else { a.min(d) })
-                    })
-                    .collect()
-            })
-            .collect()
-    }
-
-    /// Dense fusion written plainly from the rules in the module doc: every voxel, every view,
-    /// `Camera::project`, raw depth pixels.
-    fn dense_reference(
-        views: &[DepthView],
-        bounds: (DVec3, DVec3),
-        params: &TsdfParams,
-    ) -> ScalarGrid {
-        let extent = bounds.1 - bounds.0;
-        let voxel = extent.max_element() / params.resolution as f64;
-        let dims = [0, 1, 2].map(|a| (extent[a] / voxel).ceil() as usize + 2 * MARGIN_VOXELS);
-        let origin = bounds.0 - DVec3::splat((MARGIN_VOXELS as f64 - 0.5) * voxel);
-        let trunc = params.truncation_voxels * voxel;
-        let mut values = Vec::new();
-        let mut known = Vec::new();
-        for k in 0..dims[2] {
-            for j in 0..dims[1] {
-                for i in 0..dims[0] {
-                    let p = origin + voxel * DVec3::new(i as f64, j as f64, k as f64);
-                    let (mut sum, mut count) = (0.0, 0);
-                    for view in views {
-                        let cam = view.camera;
-                        let (w, h) = (cam.width as usize, cam.height as usize);
-                        let Some((u, v, z)) = cam.project(p) else {
-                            continue;
-                        };
-                        if !(u >= 0.0 && u < w as f64 && v >= 0.0 && v < h as f64) {
-                            continue;
-                        }
-                        let depth_at = |x: usize, y: usize| {
-                            let d = view.depth[y * w + x];
-                            let opaque = view.alpha.is_none_or(|a| a[y * w + x] >= 0.5);
-                            if opaque && d > 0.0 && d <= params.depth_max {
-                                d
-                            } else {
-                                0.0
-                            }
-                        };
-                        let (x, y) = ((u - 0.5).max(0.0), (v - 0.5).max(0.0));
-                        let (x0, y0) = (x.floor() as usize, y.floor() as usize);
-                        let (x1, y1) = ((x0 + 1).min(w - 1), (y0 + 1).min(h - 1));
-                        let d = [
-                            depth_at(x0, y0),
-                            depth_at(x1, y0),
-                            depth_at(x0, y1),
-                            depth_at(x1, y1),
-                        ];
-                        if d.iter().all(|&z| z == 0.0) {
-                            sum += 1.0;
-                            count += 1;
-                            continue;
-                        }
-                        let spread = d.iter().copied().fold(0.0, f64::max)
-                            - d.iter().copied().fold(f64::INFINITY, f64::min);
-                        if d.contains(&0.0) || spread > trunc {
-                            continue;
-                        }
-                        let d = d.map(|z| z as f32 as f64);
-                        let (fx, fy) = ((x - x0 as f64).min(1.0), (y - y0 as f64).min(1.0));
-                        let depth = (1.0 - fy) * ((1.0 - fx) * d[0] + fx * d[1])
-                            + fy * ((1.0 - fx) * d[2] + fx * d[3]);
-                        let sdf = depth - z;
-                        if sdf >= -trunc {
-                            sum += (sdf / trunc).min(1.0);
-                            count += 1;
-                        }
-                    }
-                    values.push(if count > 0 {
-                        (sum / count as f64) as f32
-                    } else {
-                        0.0
-                    });
-                    known.push(count > 0);
-                }
-            }
-        }
-        ScalarGrid {
-            dims,
-            origin,
-            spacing: voxel,
-            values,
-            known,
-        }
-    }
-
     #[test]
     fn sparse_fusion_matches_a_dense_reference() {
         // Two overlapping spheres (occlusion edges, a concave crease) and a small far one; some
@@ -947,7 +1004,7 @@ mod tests {
             })
             .collect();
         let bounds = (DVec3::new(-1.0, -0.8, -0.8), DVec3::new(1.0, 0.8, 1.0));
-        let params = TsdfParams::automatic(40, &views, bounds);
+        let params = TsdfParams::automatic(40, &cameras, bounds);
         let fast = fuse_tsdf(&views, bounds, &params).unwrap();
         let reference = dense_reference(&views, bounds, &params);
         assert_eq!(fast.dims, reference.dims);
@@ -1022,7 +1079,7 @@ mod tests {
         }
         let views = depth_views(&cameras, &depths, None);
         let bounds = (DVec3::splat(-1.1), DVec3::splat(1.1));
-        let params = TsdfParams::automatic(128, &views, bounds);
+        let params = TsdfParams::automatic(128, &cameras, bounds);
         let mesh = extract_mesh(&views, bounds, &params).unwrap();
         let gt = TriangleMesh::read_ply(&data.join("mesh.ply")).unwrap();
         let voxel = 2.2 / 128.0;

@@ -29,6 +29,7 @@ use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
 use crate::core::envmap::EnvGrad;
 use crate::core::light::LightProbe;
+use crate::core::mesh::{GridLayout, ScalarGrid};
 use crate::core::shading::{
     self, GBufferGrad, SavedShading, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
 };
@@ -280,6 +281,22 @@ pub trait Backend: Send + Sync {
         forward: &Rasterized,
         upstream: &GBufferGrads,
     ) -> Result<RasterGrads, RasterError>;
+    /// The TSDF of the depth and opacity of `surfels` seen from every camera, fused into `grid`
+    /// on the backend's own device, so the depth maps never leave it; `None` (the default) where
+    /// the backend has no such fusion, and the caller renders the views with [`Self::forward`]
+    /// and fuses them on the host ([`crate::core::mesh::fuse_tsdf`]). The fusion follows the
+    /// host's rules (`core::mesh::tsdf`) but is dense: every voxel some view observes is known,
+    /// where the host fuses only the blocks near the surface; marching cubes gives the same
+    /// surface from either.
+    fn fuse_depth(
+        &self,
+        _surfels: &Surfels,
+        _cameras: &[Camera],
+        _settings: &RasterSettings,
+        _grid: &GridLayout,
+    ) -> Option<Result<ScalarGrid, RasterError>> {
+        None
+    }
     /// Device time per stage since the last call, where the backend measures it (the gpu
     /// backend with [`crate::gpu::GpuOptions::profile`]); empty otherwise.
     fn take_stage_times(&self) -> Vec<StageTime> {

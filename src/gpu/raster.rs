@@ -161,6 +161,23 @@ pub(super) struct Frame<'a> {
     pub(super) depth_bits: u32,
 }
 
+impl<'a> Frame<'a> {
+    /// `uploaded` (the device's copy of `surfels`) seen from `camera`.
+    pub(super) fn new(
+        camera: &'a Camera,
+        settings: &'a RasterSettings,
+        surfels: &Surfels,
+        uploaded: &'a DeviceSurfels,
+    ) -> Self {
+        Frame {
+            camera,
+            settings,
+            surfels: uploaded,
+            depth_bits: varying_depth_bits(surfels, camera, settings.near),
+        }
+    }
+}
+
 /// What the forward pass of one band brings back.
 struct BandResult {
     saved: BandSaved,
@@ -365,12 +382,7 @@ impl GpuBackend {
         self.device
             .check_size("gradient sums", n as u64 * NUM_ACC * 4)?;
         let uploaded = self.upload(surfels)?;
-        let frame = Frame {
-            camera,
-            settings,
-            surfels: &uploaded,
-            depth_bits: varying_depth_bits(surfels, camera, settings.near),
-        };
+        let frame = Frame::new(camera, settings, surfels, &uploaded);
         let done = self.rasterize_bands(&frame, |encoded| {
             let pixels =
                 u64::from(camera.width) * u64::from(encoded.saved.band.pixel_rows(camera.height));

@@ -25,7 +25,6 @@ use super::layout::wgsl_mirror;
 use super::params::{NUM_OUT, TILE};
 use super::raster::{Frame, GpuBackend};
 use super::shaders;
-use super::sort::varying_depth_bits;
 use super::GpuError;
 use crate::core::camera::Camera;
 use crate::core::mesh::{GridLayout, ScalarGrid};
@@ -283,12 +282,7 @@ impl GpuBackend {
         for camera in cameras {
             let _span = info_span!("view").entered();
             let depth = fusion.depth_map(camera)?;
-            let frame = Frame {
-                camera,
-                settings,
-                surfels: &uploaded,
-                depth_bits: varying_depth_bits(surfels, camera, settings.near),
-            };
+            let frame = Frame::new(camera, settings, surfels, &uploaded);
             self.rasterize_bands(&frame, |mut encoded| {
                 let band = encoded.saved.band;
                 let gbuf = &encoded.saved.gbuf;
@@ -309,8 +303,8 @@ mod tests {
     use super::*;
     use crate::core::mesh::tsdf_reference::{dense_reference, spheres_depth};
     use crate::core::mesh::{
-        cameras_around, chamfer_l1_with, fuse_tsdf, marching_cubes, sphere_depth_maps, DepthView,
-        TriangleMesh, TsdfParams,
+        cameras_around, chamfer_l1_with, fuse_tsdf, marching_cubes, rendered_depth_views,
+        sphere_depth_maps, DepthView, TriangleMesh, TsdfParams,
     };
     use crate::gpu::layout::assert_mirrors;
 
@@ -556,16 +550,7 @@ mod tests {
                 (g.depth, g.alpha)
             })
             .collect();
-        let views: Vec<DepthView> = cameras
-            .iter()
-            .zip(&maps)
-            .map(|(camera, (depth, alpha))| DepthView {
-                camera,
-                depth,
-                alpha: Some(alpha),
-            })
-            .collect();
-        let host = fuse_tsdf(&views, bounds, &params).unwrap();
+        let host = fuse_tsdf(&rendered_depth_views(&cameras, &maps), bounds, &params).unwrap();
         let (mut fused, mut flags_differ, mut values_differ) = (0, 0, 0);
         for v in 0..host.known.len() {
             if host.known[v] {

@@ -17,7 +17,7 @@ use thiserror::Error;
 
 use crate::core::camera::Camera;
 use crate::core::mesh::{
-    cameras_around_point, fuse_tsdf, mesh_from_grid, DepthView, GridLayout, MeshError,
+    cameras_around_point, fuse_tsdf, mesh_from_grid, rendered_depth_views, GridLayout, MeshError,
     TriangleMesh, TsdfParams,
 };
 use crate::core::raster::{Backend, RasterError, RasterSettings};
@@ -138,16 +138,7 @@ pub fn mesh_from_surfels(
                 let g = backend.forward(surfels, camera, settings)?.gbuffers;
                 maps.push((g.depth, g.alpha));
             }
-            let views: Vec<DepthView> = cameras
-                .iter()
-                .zip(&maps)
-                .map(|(camera, (depth, alpha))| DepthView {
-                    camera,
-                    depth,
-                    alpha: Some(alpha),
-                })
-                .collect();
-            fuse_tsdf(&views, bounds, &params)?
+            fuse_tsdf(&rendered_depth_views(cameras, &maps), bounds, &params)?
         }
     };
     Ok(mesh_from_grid(&fused)?)

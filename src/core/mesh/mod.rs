@@ -25,7 +25,7 @@ pub use marching_cubes::{marching_cubes, ScalarGrid};
 pub(crate) use tsdf::reference as tsdf_reference;
 pub use tsdf::{
     cameras_around, cameras_around_point, extract_mesh, fuse_tsdf, mesh_from_grid,
-    sphere_depth_maps, DepthView, GridLayout, TsdfParams, MARGIN_VOXELS,
+    rendered_depth_views, sphere_depth_maps, DepthView, GridLayout, TsdfParams, MARGIN_VOXELS,
 };
 
 /// Errors of mesh input/output, extraction and metrics.

@@ -683,6 +683,22 @@ pub fn sphere_depth_maps(cameras: &[Camera], centre: DVec3, radius: f64) -> Vec<
         .collect()
 }
 
+/// One [`DepthView`] per camera with the rendered `(depth, alpha)` maps of the same index.
+pub fn rendered_depth_views<'a>(
+    cameras: &'a [Camera],
+    maps: &'a [(Vec<f64>, Vec<f64>)],
+) -> Vec<DepthView<'a>> {
+    cameras
+        .iter()
+        .zip(maps)
+        .map(|(camera, (depth, alpha))| DepthView {
+            camera,
+            depth,
+            alpha: Some(alpha),
+        })
+        .collect()
+}
+
 /// One [`DepthView`] per camera with the depth map of the same index, every view with `alpha`.
 pub(crate) fn depth_views<'a>(
     cameras: &'a [Camera],

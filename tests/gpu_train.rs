@@ -928,6 +928,7 @@ fn the_training_benchmark_reports_host_phases_and_memory() {
     // Each training view's target: ten f32 per pixel.
     let targets = train_views * 32 * 32 * 10 * 4;
     let device = timing
+        .memory
         .device_peak_bytes
         .expect("a device run measures its buffers");
     assert!(
@@ -935,7 +936,7 @@ fn the_training_benchmark_reports_host_phases_and_memory() {
         "{device} bytes on the device, {targets} of them targets"
     );
     if cfg!(target_os = "linux") {
-        let host = timing.host_peak_rss_bytes.expect("VmHWM on Linux");
+        let host = timing.memory.host_peak_rss_bytes.expect("VmHWM on Linux");
         assert!(host > 10 << 20, "{host} bytes resident");
     }
 }

@@ -257,7 +257,6 @@ impl GpuBackend {
         self.device.variant().walk
     }
 
-    /// The device and its helpers.
     /// Buffer memory on the device now and at its peak since the backend was made.
     pub fn buffer_memory(&self) -> DeviceMemory {
         self.device.buffer_memory()
@@ -269,6 +268,7 @@ impl GpuBackend {
         self.device.take_host_times()
     }
 
+    /// The device and its helpers.
     pub(super) fn device(&self) -> &Device {
         &self.device
     }

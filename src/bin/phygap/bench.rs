@@ -11,7 +11,7 @@ use std::path::PathBuf;
 use phygap::core::config::BackendChoice;
 use phygap::io::model::Model;
 use phygap::pipeline::bench::{
-    bench_gridmap, bench_quality, bench_raster, bench_train, BenchStage,
+    bench_gridmap, bench_quality, bench_raster, bench_train, BenchStage, MemoryPeaks,
 };
 
 #[derive(Args)]
@@ -178,12 +178,12 @@ fn print_passes(passes: &[phygap::core::raster::StageTime]) {
 }
 
 /// Peak device buffer memory (gpu backend) and host resident memory of a benchmark's run.
-fn print_memory(device_peak_bytes: Option<u64>, host_peak_rss_bytes: Option<u64>) {
+fn print_memory(memory: &MemoryPeaks) {
     let mib = |b: u64| b as f64 / (1024.0 * 1024.0);
-    if let Some(bytes) = device_peak_bytes {
+    if let Some(bytes) = memory.device_peak_bytes {
         println!("device buffers  {:.1} MiB at the peak", mib(bytes));
     }
-    if let Some(bytes) = host_peak_rss_bytes {
+    if let Some(bytes) = memory.host_peak_rss_bytes {
         println!("host memory     {:.1} MiB resident at the peak", mib(bytes));
     }
 }
@@ -269,7 +269,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                     t.surfels.1,
                     t.startup_seconds
                 );
-                print_memory(t.device_peak_bytes, t.host_peak_rss_bytes);
+                print_memory(&t.memory);
                 print_host_phases(&t.host_phases);
                 if a.stages {
                     print_passes(&t.passes);
@@ -332,7 +332,7 @@ fn run_quality(a: &QualityBenchArgs) -> Result<()> {
         "wall time       {:.1} s training ({} steps), {:.1} s scoring",
         run.train_wall_seconds, run.iterations, run.score_wall_seconds
     );
-    print_memory(run.device_peak_bytes, run.host_peak_rss_bytes);
+    print_memory(&run.memory);
     println!("test PSNR along the run:");
     for r in &run.progress {
         println!(

@@ -25,6 +25,7 @@ use crate::core::envmap::{EnvMapError, PreparedEnv};
 use crate::core::gridmap::{GridMap, GridMapError};
 use crate::core::raster::{Backend, RasterError, RasterSettings, StageTime};
 use crate::core::surfels::{logit, Surfels};
+use crate::gpu::GpuBackend;
 use crate::io::model::Model;
 use crate::pipeline::backend::Engine;
 use crate::pipeline::mesh_extraction::{self, MeshingError, GRIDMAP_MESH_RESOLUTION};
@@ -244,6 +245,13 @@ pub struct TrainTiming {
     /// gpu backend only).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub host_phases: Vec<StageTime>,
+    #[serde(flatten)]
+    pub memory: MemoryPeaks,
+}
+
+/// The most memory a benchmark's run held, on the device and on the host.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct MemoryPeaks {
     /// The most buffer memory the device held at a submission (gpu backend only).
     #[serde(default)]
     pub device_peak_bytes: Option<u64>,
@@ -252,8 +260,18 @@ pub struct TrainTiming {
     pub host_peak_rss_bytes: Option<u64>,
 }
 
+impl MemoryPeaks {
+    /// The peaks so far of `backend`'s device and of this process.
+    pub fn of(backend: &Engine) -> Self {
+        MemoryPeaks {
+            device_peak_bytes: backend.gpu().map(|g| g.buffer_memory().peak_bytes),
+            host_peak_rss_bytes: host_peak_rss_bytes(),
+        }
+    }
+}
+
 /// The process's peak resident set size, from `/proc/self/status` (`None` elsewhere).
-pub fn host_peak_rss_bytes() -> Option<u64> {
+fn host_peak_rss_bytes() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
@@ -291,7 +309,8 @@ pub fn bench_train(
     let mut description = String::new();
     let cancel = std::sync::atomic::AtomicBool::new(false);
     backend.take_stage_times();
-    if let Some(gpu) = backend.gpu() {
+    let gpu = backend.gpu();
+    if let Some(gpu) = gpu {
         gpu.take_host_times();
     }
     let outcome = crate::pipeline::train::train_on(
@@ -319,11 +338,8 @@ pub fn bench_train(
         },
     );
     let passes = backend.take_stage_times();
-    let host_phases = backend
-        .gpu()
-        .map(|g| g.take_host_times())
-        .unwrap_or_default();
-    let device_peak_bytes = backend.gpu().map(|g| g.buffer_memory().peak_bytes);
+    let host_phases = gpu.map(GpuBackend::take_host_times).unwrap_or_default();
+    let memory = MemoryPeaks::of(backend);
     // A scratch folder: failing to remove it loses nothing.
     let _ = std::fs::remove_dir_all(&dir);
     outcome?;
@@ -348,8 +364,7 @@ pub fn bench_train(
         surfels: (first.2, last.2),
         passes,
         host_phases,
-        device_peak_bytes,
-        host_peak_rss_bytes: host_peak_rss_bytes(),
+        memory,
     })
 }
 

@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 use crate::core::config::TrainConfig;
 use crate::core::events::TrainEvent;
 use crate::io::model::Model;
+use crate::pipeline::bench::MemoryPeaks;
 use crate::pipeline::evaluate::EvalReport;
 use crate::pipeline::scorecard::{self, GroundTruth, ScorecardError};
 use crate::pipeline::train::{self, TrainError, TrainOutcome};
@@ -41,12 +42,8 @@ pub struct QualityRun {
     pub warnings: Vec<String>,
     /// Every metric of the final model (relit and mesh metrics where `truth` has them).
     pub metrics: EvalReport,
-    /// The most buffer memory the device held at a submission (gpu backend only).
-    #[serde(default)]
-    pub device_peak_bytes: Option<u64>,
-    /// The process's peak resident memory (`VmHWM`, Linux only).
-    #[serde(default)]
-    pub host_peak_rss_bytes: Option<u64>,
+    #[serde(flatten)]
+    pub memory: MemoryPeaks,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -80,8 +77,7 @@ pub fn bench_quality(
     let mut warnings = Vec::new();
     let mut elapsed = 0.0;
     let never = AtomicBool::new(false);
-    config.validate().map_err(TrainError::from)?;
-    let engine = crate::pipeline::backend::select(config.backend).map_err(TrainError::from)?;
+    let engine = train::engine_for(config)?;
     let outcome = train::train_on(
         &engine,
         &capture,
@@ -115,7 +111,7 @@ pub fn bench_quality(
         return Err(QualityError::Interrupted(iteration));
     }
     let train_wall_seconds = start.elapsed().as_secs_f64();
-    let device_peak_bytes = engine.gpu().map(|g| g.buffer_memory().peak_bytes);
+    let memory = MemoryPeaks::of(&engine);
     let model = Model::load(model_dir)?;
     let metrics = scorecard::score(&model, &capture, truth)?;
     Ok(QualityRun {
@@ -126,8 +122,7 @@ pub fn bench_quality(
         progress,
         warnings,
         metrics,
-        device_peak_bytes,
-        host_peak_rss_bytes: super::host_peak_rss_bytes(),
+        memory,
     })
 }
 

@@ -246,11 +246,17 @@ pub fn train(
     cancel: &AtomicBool,
     on_event: &mut dyn FnMut(&TrainEvent),
 ) -> Result<TrainOutcome, TrainError> {
-    config.validate()?;
-    let backend = backend::select(config.backend)?;
+    let backend = engine_for(config)?;
     train_on(
         &backend, capture, model_dir, config, resume, cancel, on_event,
     )
+}
+
+/// The engine `config` asks for, once the config is known to be valid (so an invalid config is
+/// reported as such, not as a backend that failed to open).
+pub fn engine_for(config: &TrainConfig) -> Result<Engine, TrainError> {
+    config.validate()?;
+    Ok(backend::select(config.backend)?)
 }
 
 /// [`train`] on a backend the caller opened (`config.backend` is not consulted), so that it can

@@ -60,6 +60,11 @@ fn parse_switch(value: &str) -> Result<bool, String> {
     }
 }
 
+/// Most surfels a run may hold (`max_surfels`): 10 million take about 5 GB with their optimizer
+/// state, more than any capture needs (the knot's default budget is 58,500); a config asking for
+/// more is refused before anything is allocated.
+pub const MAX_SURFELS: u32 = 10_000_000;
+
 /// Every setting of a training run; also the training flags of the command line (each field a
 /// `--long-name` flag with the default as its default), so the CLI, the config file and the
 /// service's job `config` are one type.
@@ -305,6 +310,9 @@ impl TrainConfig {
         }
         if !(self.densify_from..=1.0).contains(&self.densify_until) {
             return bad("densify_until", "must be a fraction in [densify_from, 1]");
+        }
+        if self.max_surfels == 0 || self.max_surfels > MAX_SURFELS {
+            return bad("max_surfels", &format!("must be in 1..={MAX_SURFELS}"));
         }
         if self.initial_surfels == 0 || self.initial_surfels > self.max_surfels {
             return bad("initial_surfels", "must be in 1..=max_surfels");

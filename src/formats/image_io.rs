@@ -4,6 +4,11 @@
 //! Decoding never guesses colour spaces: it reports the file's [`ImageFormat`] so the caller decides
 //! (a capture's `color_space` key, CAPTURE_FORMAT.md §1). EXR channels are addressed by name
 //! (`R`, `G`, `B`, `A`, or `Y`), never by storage order.
+//!
+//! Nothing is allocated from a size a file declares before that size is checked: every read goes
+//! through [`read_image_within`], which reads the header first ([`read_header`]) and refuses a
+//! file over its [`ImageLimits`] before a pixel is decoded (an EXR header can declare a
+//! 100000 × 100000 window in a file of a few bytes).
 
 use std::path::{Path, PathBuf};
 
@@ -122,27 +127,161 @@ pub enum ImageError {
     ExrChannels { path: PathBuf, found: Vec<String> },
     #[error("{path}: cannot write image: {message}")]
     Encode { path: PathBuf, message: String },
+    #[error(
+        "{path}: the file declares {width}×{height} pixels ({samples} samples), over the limit of \
+         {max_pixels} pixels ({max_samples} samples)"
+    )]
+    TooLarge {
+        path: PathBuf,
+        width: usize,
+        height: usize,
+        samples: u64,
+        max_pixels: u64,
+        max_samples: u64,
+    },
 }
 
-/// Reads an image file; PNG/JPEG samples are scaled to [0, 1] but not linearized.
+/// The most an image file may declare before it is decoded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageLimits {
+    /// Most pixels (width × height) of the image, or of any one layer of an EXR file.
+    pub max_pixels: u64,
+}
+
+/// Samples per pixel a file may carry within its pixel limit: RGBA. An EXR file may spread them
+/// over several layers or name more channels, as long as all of them together stay within
+/// `max_pixels × MAX_SAMPLES_PER_PIXEL`.
+const MAX_SAMPLES_PER_PIXEL: u64 = 4;
+
+impl ImageLimits {
+    /// 2²⁸ pixels (16384 × 16384): more than any camera or environment map, small enough that
+    /// one image's decode (4 GiB of f32 RGBA at most) fits a worker.
+    pub const DEFAULT: ImageLimits = ImageLimits {
+        max_pixels: 1 << 28,
+    };
+
+    /// Limits admitting exactly `width × height` pixels (a file that must match a camera).
+    pub fn pixels(width: usize, height: usize) -> ImageLimits {
+        ImageLimits {
+            max_pixels: (width as u64).saturating_mul(height as u64),
+        }
+    }
+
+    fn max_samples(&self) -> u64 {
+        self.max_pixels.saturating_mul(MAX_SAMPLES_PER_PIXEL)
+    }
+}
+
+impl Default for ImageLimits {
+    fn default() -> Self {
+        ImageLimits::DEFAULT
+    }
+}
+
+/// What an image file's header declares, read without decoding any pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageHeader {
+    pub width: usize,
+    pub height: usize,
+    /// Every sample the file holds: width × height × channels, summed over an EXR file's layers.
+    pub samples: u64,
+}
+
+/// Reads an image file within [`ImageLimits::DEFAULT`]; PNG/JPEG samples are scaled to [0, 1]
+/// but not linearized.
 pub fn read_image(path: &Path) -> Result<(Image, ImageFormat), ImageError> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(|e| e.to_ascii_lowercase())
-        .unwrap_or_default();
+    read_image_within(path, &ImageLimits::DEFAULT)
+}
+
+/// The lower-case extension that picks the decoder, after checking the file exists.
+fn decoder_extension(path: &Path) -> Result<String, ImageError> {
     if !path.is_file() {
         return Err(ImageError::Io {
             path: path.to_owned(),
             source: std::io::Error::new(std::io::ErrorKind::NotFound, "no such file"),
         });
     }
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(|e| e.to_ascii_lowercase())
+        .unwrap_or_default();
     match ext.as_str() {
-        "exr" => read_exr(path).map(|i| (i, ImageFormat::Exr)),
-        "hdr" | "png" | "jpg" | "jpeg" => read_with_image_crate(path),
+        "exr" | "hdr" | "png" | "jpg" | "jpeg" => Ok(ext),
         _ => Err(ImageError::UnsupportedExtension {
             path: path.to_owned(),
         }),
+    }
+}
+
+/// Reads only the header of an image file: its size and sample count.
+pub fn read_header(path: &Path) -> Result<ImageHeader, ImageError> {
+    if decoder_extension(path)? == "exr" {
+        return exr_header(path);
+    }
+    let (width, height) = image::ImageReader::open(path)
+        .map_err(|source| ImageError::Io {
+            path: path.to_owned(),
+            source,
+        })?
+        .with_guessed_format()
+        .map_err(|source| ImageError::Io {
+            path: path.to_owned(),
+            source,
+        })?
+        .into_dimensions()
+        .map_err(|e| decode_error(path, e))?;
+    let (width, height) = (width as usize, height as usize);
+    Ok(ImageHeader {
+        width,
+        height,
+        samples: (width as u64 * height as u64).saturating_mul(MAX_SAMPLES_PER_PIXEL),
+    })
+}
+
+/// An EXR file's size: its largest layer, and every sample of every layer.
+fn exr_header(path: &Path) -> Result<ImageHeader, ImageError> {
+    let meta =
+        exr::meta::MetaData::read_from_file(path, false).map_err(|e| decode_error(path, e))?;
+    let largest = meta
+        .headers
+        .iter()
+        .map(|h| h.layer_size)
+        .max_by_key(|size| size.area())
+        .ok_or_else(|| decode_error(path, "no layers"))?;
+    let samples = meta.headers.iter().fold(0u64, |sum, h| {
+        let area = h.layer_size.area() as u64;
+        sum.saturating_add(area.saturating_mul(h.channels.list.len() as u64))
+    });
+    Ok(ImageHeader {
+        width: largest.width(),
+        height: largest.height(),
+        samples,
+    })
+}
+
+/// Reads an image file after checking its header against `limits`: a file declaring more pixels
+/// or samples is [`ImageError::TooLarge`], and nothing of its size is allocated.
+pub fn read_image_within(
+    path: &Path,
+    limits: &ImageLimits,
+) -> Result<(Image, ImageFormat), ImageError> {
+    let ext = decoder_extension(path)?;
+    let header = read_header(path)?;
+    let pixels = header.width as u64 * header.height as u64;
+    if pixels > limits.max_pixels || header.samples > limits.max_samples() {
+        return Err(ImageError::TooLarge {
+            path: path.to_owned(),
+            width: header.width,
+            height: header.height,
+            samples: header.samples,
+            max_pixels: limits.max_pixels,
+            max_samples: limits.max_samples(),
+        });
+    }
+    match ext.as_str() {
+        "exr" => read_exr(path).map(|i| (i, ImageFormat::Exr)),
+        _ => read_with_image_crate(path, limits),
     }
 }
 
@@ -154,7 +293,8 @@ fn decode_error(path: &Path, e: impl std::fmt::Display) -> ImageError {
 }
 
 /// Reads the first layer of an EXR file, picking channels by name: RGB(A) if present, else Y(A).
-pub fn read_exr(path: &Path) -> Result<self::Image, ImageError> {
+/// Callers check its header first ([`read_image_within`]).
+fn read_exr(path: &Path) -> Result<self::Image, ImageError> {
     use exr::prelude::*;
     let image = read()
         .no_deep_data()
@@ -201,9 +341,19 @@ pub fn read_exr(path: &Path) -> Result<self::Image, ImageError> {
     })
 }
 
-fn read_with_image_crate(path: &Path) -> Result<(Image, ImageFormat), ImageError> {
+fn read_with_image_crate(
+    path: &Path,
+    limits: &ImageLimits,
+) -> Result<(Image, ImageFormat), ImageError> {
     use image::DynamicImage as D;
-    let dynamic = image::open(path).map_err(|e| decode_error(path, e))?;
+    let mut reader = image::ImageReader::open(path)
+        .and_then(|r| r.with_guessed_format())
+        .map_err(|source| ImageError::Io {
+            path: path.to_owned(),
+            source,
+        })?;
+    reader.limits(decoder_limits(limits));
+    let dynamic = reader.decode().map_err(|e| decode_error(path, e))?;
     let (width, height) = (dynamic.width() as usize, dynamic.height() as usize);
     let format = match &dynamic {
         D::ImageRgb32F(_) | D::ImageRgba32F(_) => ImageFormat::Hdr,
@@ -234,6 +384,17 @@ fn read_with_image_crate(path: &Path) -> Result<(Image, ImageFormat), ImageError
         },
         format,
     ))
+}
+
+/// The image crate's limits for a decode within `limits`: the decoder's own buffer (up to 16-bit
+/// RGBA, 8 bytes a pixel) or 32-bit float RGBA (16 bytes a pixel, the HDR decoder's).
+pub fn decoder_limits(limits: &ImageLimits) -> image::Limits {
+    let side = u32::try_from(limits.max_pixels).unwrap_or(u32::MAX);
+    let mut decoder = image::Limits::default();
+    decoder.max_image_width = Some(side);
+    decoder.max_image_height = Some(side);
+    decoder.max_alloc = Some(limits.max_pixels.saturating_mul(16).max(1 << 20));
+    decoder
 }
 
 /// Writes an image as a float EXR with channels named R,G,B(,A) or Y(,A).
@@ -377,6 +538,78 @@ mod tests {
             read_image(&dir.path().join("missing.png")),
             Err(ImageError::Io { .. })
         ));
+    }
+
+    #[test]
+    fn files_declaring_more_than_the_limit_are_refused_before_decoding() {
+        use crate::testing::hostile::{exr_declaring, hdr_declaring, png_declaring};
+        let dir = tempfile::tempdir().unwrap();
+        let (w, h) = (100_000, 100_000);
+        for (name, bytes) in [
+            ("huge.exr", exr_declaring(w, h)),
+            ("huge.png", png_declaring(w, h)),
+            ("huge.hdr", hdr_declaring(w, h)),
+        ] {
+            let path = dir.path().join(name);
+            std::fs::write(&path, &bytes).unwrap();
+            assert!(bytes.len() < 4096, "{name}: {} bytes", bytes.len());
+            let header = read_header(&path).unwrap();
+            assert_eq!(
+                (header.width, header.height),
+                (w as usize, h as usize),
+                "{name}"
+            );
+            match read_image(&path) {
+                Err(ImageError::TooLarge {
+                    width,
+                    height,
+                    max_pixels,
+                    ..
+                }) => assert_eq!(
+                    (width, height, max_pixels),
+                    (w as usize, h as usize, ImageLimits::DEFAULT.max_pixels)
+                ),
+                other => panic!("{name}: {other:?}"),
+            }
+        }
+        // Within its limit the same header is decoded, and fails as the truncated file it is.
+        let path = dir.path().join("small.exr");
+        std::fs::write(&path, exr_declaring(64, 64)).unwrap();
+        assert!(matches!(read_image(&path), Err(ImageError::Decode { .. })));
+    }
+
+    #[test]
+    fn exact_limits_admit_that_size_and_no_more() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.png");
+        write_png(&path, &ramp(3).map_unit(), false).unwrap();
+        assert!(read_image_within(&path, &ImageLimits::pixels(5, 3)).is_ok());
+        let refused = read_image_within(&path, &ImageLimits::pixels(5, 2)).unwrap_err();
+        assert!(
+            matches!(
+                refused,
+                ImageError::TooLarge {
+                    width: 5,
+                    height: 3,
+                    max_pixels: 10,
+                    ..
+                }
+            ),
+            "{refused:?}"
+        );
+        // An EXR's samples count every channel: 5 × 3 RGBA is 60 samples.
+        let exr = dir.path().join("t.exr");
+        write_exr(&exr, &ramp(4)).unwrap();
+        let header = read_header(&exr).unwrap();
+        assert_eq!((header.width, header.height, header.samples), (5, 3, 60));
+    }
+
+    impl Image {
+        /// The samples mapped into [0, 1] (for 8-bit round trips).
+        fn map_unit(mut self) -> Image {
+            self.data.iter_mut().for_each(|v| *v = (*v + 0.5) / 4.0);
+            self
+        }
     }
 
     #[test]

@@ -463,7 +463,9 @@ fn read_body(
     } in declared
     {
         let mut properties = empty_values(&props, count, body_len);
-        for row in 0..count {
+        // Rows without properties hold no bytes: nothing to read, however many are declared.
+        let rows_to_read = if props.is_empty() { 0 } else { count };
+        for row in 0..rows_to_read {
             let mut take = |kind: ScalarType| {
                 values.next(kind).map_err(|message| PlyError::Body {
                     element: name.clone(),

@@ -1083,7 +1083,7 @@ mod tests {
                 DMat4::from_cols_array_2d(&[0, 1, 2, 3].map(|c| [0, 1, 2, 3].map(|r| rows[r][c])));
             cameras.push(Camera::new(intrinsics, c2w, CameraConvention::OpenGL));
             let path = data.join(frame["depth_path"].as_str().unwrap());
-            let image = crate::formats::image_io::read_exr(&path).unwrap();
+            let (image, _) = crate::formats::image_io::read_image(&path).unwrap();
             depths.push(
                 image
                     .data

@@ -86,6 +86,13 @@ pub enum CaptureError {
     /// The COLMAP model of a capture folder cannot be read (`colmap/`).
     #[error(transparent)]
     Colmap(#[from] super::colmap::ColmapError),
+    /// The capture declares more than its [`CaptureLimits`](super::CaptureLimits) allow; no
+    /// image was read.
+    #[error("capture {path} is too large: {}", .exceeded.message)]
+    TooLarge {
+        path: PathBuf,
+        exceeded: super::limits::LimitExceeded,
+    },
 }
 
 impl CaptureError {

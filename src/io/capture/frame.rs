@@ -482,6 +482,22 @@ fn parse_camera(
         ));
         return None;
     }
+    if width > MAX_IMAGE_SIDE || height > MAX_IMAGE_SIDE {
+        let key = if width > MAX_IMAGE_SIDE { "w" } else { "h" };
+        problems.push(fields.problem(
+            key,
+            format!("{width}×{height} pixels: an image side is at most {MAX_IMAGE_SIDE} pixels"),
+        ));
+        return None;
+    }
+    let (cx, cy) = (
+        cx.unwrap_or(width as f64 / 2.0),
+        cy.unwrap_or(height as f64 / 2.0),
+    );
+    if let Some((key, message)) = intrinsics_problem(width, height, [fx, fy, cx, cy]) {
+        problems.push(fields.problem(key, message));
+        return None;
+    }
     let c2w = matrix?;
     if !is_rigid(&c2w, RIGIDITY_TOLERANCE) {
         problems.push(fields.problem(
@@ -490,15 +506,82 @@ fn parse_camera(
         ));
         return None;
     }
+    if c2w.w_axis.truncate().abs().max_element() > MAX_CAMERA_DISTANCE {
+        problems.push(fields.problem(
+            "transform_matrix",
+            format!(
+                "the camera sits at {:?}, farther than {MAX_CAMERA_DISTANCE:e} units from the origin",
+                c2w.w_axis.truncate().to_array()
+            ),
+        ));
+        return None;
+    }
     let intrinsics = Intrinsics {
         width,
         height,
         fx,
         fy,
-        cx: cx.unwrap_or(width as f64 / 2.0),
-        cy: cy.unwrap_or(height as f64 / 2.0),
+        cx,
+        cy,
     };
     Some(Camera::new(intrinsics, c2w, convention))
+}
+
+/// Longest image side accepted (pixels).
+pub(crate) const MAX_IMAGE_SIDE: u32 = 1 << 16;
+
+/// Focal lengths per pixel of image side accepted: from a 171° field of view (0.04) to a
+/// 0.006° one (10⁴); outside, the numbers are a unit mistake (millimetres for pixels), not a lens.
+const FOCAL_PER_SIDE: std::ops::RangeInclusive<f64> = 0.04..=1.0e4;
+
+/// Farthest a camera may sit from the origin, in world units.
+const MAX_CAMERA_DISTANCE: f64 = 1.0e6;
+
+/// What is wrong with a camera's intrinsics `[fx, fy, cx, cy]` for a `width × height` image, if
+/// anything: focal lengths the image size allows, and a principal point within one image width
+/// (height) of the image.
+pub(crate) fn intrinsics_problem(
+    width: u32,
+    height: u32,
+    [fx, fy, cx, cy]: [f64; 4],
+) -> Option<(&'static str, String)> {
+    let (w, h) = (f64::from(width), f64::from(height));
+    for (key, focal, side) in [("fl_x", fx, w), ("fl_y", fy, h)] {
+        if !FOCAL_PER_SIDE.contains(&(focal / side)) {
+            return Some((
+                key,
+                format!(
+                    "focal length {} pixels for an image side of {side}: it must lie between \
+                     {} and {} pixels (a field of view between 171° and 0.006°)",
+                    readable(focal),
+                    FOCAL_PER_SIDE.start() * side,
+                    FOCAL_PER_SIDE.end() * side
+                ),
+            ));
+        }
+    }
+    for (key, centre, side) in [("cx", cx, w), ("cy", cy, h)] {
+        if !(-side..=2.0 * side).contains(&centre) {
+            return Some((
+                key,
+                format!(
+                    "principal point {key} = {} lies more than an image side ({side}) outside \
+                     the image",
+                    readable(centre)
+                ),
+            ));
+        }
+    }
+    None
+}
+
+/// A number as people read it: plain, or in scientific notation when very large or small.
+fn readable(value: f64) -> String {
+    if value != 0.0 && !(1e-3..1e6).contains(&value.abs()) {
+        format!("{value:e}")
+    } else {
+        format!("{value}")
+    }
 }
 
 fn parse_source(

@@ -4,7 +4,9 @@
 //!
 //! Called once per frame from a rayon parallel iterator; each call is independent.
 
-use crate::formats::image_io::{read_image, srgb_to_linear, Image, ImageError, ImageFormat};
+use crate::formats::image_io::{
+    read_header, read_image_within, srgb_to_linear, Image, ImageError, ImageFormat, ImageLimits,
+};
 
 use super::error::Problem;
 use super::frame::{ColorSpace, FrameSpec, Header, KeyedPath, Source, StokesConvention};
@@ -150,20 +152,10 @@ fn read_checked(
 ) -> Result<Image, Problem> {
     let problem = |message: String| Problem::new(spec.name.clone(), file.key, message);
     let shown = file.relative.display();
-    let (mut image, format) = read_image(&file.path).map_err(|e| {
-        problem(match e {
-            ImageError::Io { source, .. } if source.kind() == std::io::ErrorKind::NotFound => {
-                format!("missing file {shown}")
-            }
-            other => other.to_string(),
-        })
-    })?;
-    if (image.width, image.height) != (width, height) {
-        return Err(problem(format!(
-            "{shown} is {}×{} pixels but w×h is {width}×{height}",
-            image.width, image.height
-        )));
-    }
+    let (mut image, format) = read_sized(file, &[(width, height)], |w, h| {
+        format!("{shown} is {w}×{h} pixels but w×h is {width}×{height}")
+    })
+    .map_err(problem)?;
     if !allowed_channels.contains(&image.channels) {
         return Err(problem(format!(
             "{shown} has {} channel(s); expected {what} ({allowed_channels:?} channels)",
@@ -192,4 +184,29 @@ fn read_checked(
         }
     }
     Ok(image)
+}
+
+/// Reads `file` once its header shows one of `sizes` (width, height); a file of another size is
+/// the problem `mismatch` names, decided before any of its pixels is decoded. The message says
+/// what is wrong with the file (a missing file is `missing file NAME`).
+pub(super) fn read_sized(
+    file: &KeyedPath,
+    sizes: &[(usize, usize)],
+    mismatch: impl FnOnce(usize, usize) -> String,
+) -> Result<(Image, ImageFormat), String> {
+    let describe = |e: ImageError| match e {
+        ImageError::Io { source, .. } if source.kind() == std::io::ErrorKind::NotFound => {
+            format!("missing file {}", file.relative.display())
+        }
+        other => other.to_string(),
+    };
+    let header = read_header(&file.path).map_err(describe)?;
+    if !sizes.contains(&(header.width, header.height)) {
+        return Err(mismatch(header.width, header.height));
+    }
+    read_image_within(
+        &file.path,
+        &ImageLimits::pixels(header.width, header.height),
+    )
+    .map_err(describe)
 }

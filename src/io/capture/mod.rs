@@ -15,6 +15,7 @@ mod hull;
 mod images;
 mod json;
 mod lens;
+mod limits;
 pub mod mosaic;
 mod raw;
 pub mod simulate;
@@ -40,6 +41,7 @@ pub use colmap::{ColmapError, ColmapReport, SparsePoint};
 pub use dolp::DolpStats;
 pub use error::{CaptureError, Problem};
 pub use hull::{Bounds, VisualHull};
+pub use limits::{CaptureLimits, LimitExceeded};
 pub use raw::RawReport;
 
 /// Training or held-out view.
@@ -157,12 +159,19 @@ pub struct FrameSummary {
 /// (a few hot pixels do not).
 const CLIPPED_WARNING_FRACTION: f64 = 1e-3;
 
-/// Loads a capture: `path` is a folder holding `transforms.json`, or a JSON file (e.g.
-/// `transforms_partial.json`); image paths are relative to the JSON file's folder. A folder
-/// without `transforms.json` but with a COLMAP model (`sparse/0/`) is read by [`colmap::load`].
+/// Loads a capture within [`CaptureLimits::DEFAULT`]: `path` is a folder holding
+/// `transforms.json`, or a JSON file (e.g. `transforms_partial.json`); image paths are relative
+/// to the JSON file's folder. A folder without `transforms.json` but with a COLMAP model
+/// (`sparse/0/`) is read by [`colmap::load`].
 pub fn load(path: &Path) -> Result<Capture, CaptureError> {
+    load_within(path, &CaptureLimits::DEFAULT)
+}
+
+/// [`load`] with the given limits: a capture declaring more views, pixels or decoded bytes is
+/// [`CaptureError::TooLarge`] before any image is read.
+pub fn load_within(path: &Path, limits: &CaptureLimits) -> Result<Capture, CaptureError> {
     if let Some(model) = colmap::find_model(path) {
-        return colmap::load(path, &model);
+        return colmap::load(path, &model, limits);
     }
     let json_path = transforms_path(path);
     let _span = tracing::info_span!("load_capture", path = %json_path.display()).entered();
@@ -173,7 +182,7 @@ pub fn load(path: &Path) -> Result<Capture, CaptureError> {
         .unwrap_or(Path::new("."));
     let root = folder.canonicalize().unwrap_or_else(|_| folder.to_owned());
     let (distortions, lens_problems) = lens::frame_distortions(&document);
-    let mut capture = load_document(&json_path, root, &document, lens_problems)?;
+    let mut capture = load_document(&json_path, root, &document, lens_problems, limits)?;
     lens::undistort_views(&mut capture, &distortions);
     Ok(capture)
 }
@@ -185,6 +194,7 @@ pub(crate) fn load_document(
     root: PathBuf,
     document: &serde_json::Value,
     earlier: Vec<Problem>,
+    limits: &CaptureLimits,
 ) -> Result<Capture, CaptureError> {
     let frame::Parsed {
         header,
@@ -192,6 +202,12 @@ pub(crate) fn load_document(
         mut problems,
     } = frame::parse(&root, document);
     problems.splice(0..0, earlier);
+    limits
+        .check_frames(&frames)
+        .map_err(|exceeded| CaptureError::TooLarge {
+            path: json_path.to_owned(),
+            exceeded,
+        })?;
 
     if let Some(first) = frames.first() {
         let size = (first.camera.width, first.camera.height);
@@ -304,12 +320,25 @@ pub fn transforms_path(path: &Path) -> PathBuf {
     }
 }
 
+/// Largest transforms JSON file read (a 2,000-frame capture's is about 2 MB).
+const MAX_DOCUMENT_BYTES: u64 = 64 << 20;
+
 /// Reads and parses a transforms JSON file (NaN/Infinity tolerated, reported later per key).
 fn read_document(json_path: &Path) -> Result<serde_json::Value, CaptureError> {
-    let text = std::fs::read_to_string(json_path).map_err(|e| CaptureError::Read {
+    let read_error = |message: String| CaptureError::Read {
         path: json_path.to_owned(),
-        message: e.to_string(),
-    })?;
+        message,
+    };
+    let length = std::fs::metadata(json_path)
+        .map_err(|e| read_error(e.to_string()))?
+        .len();
+    if length > MAX_DOCUMENT_BYTES {
+        return Err(read_error(format!(
+            "{length} bytes, over the limit of {} MiB for a transforms file",
+            MAX_DOCUMENT_BYTES >> 20
+        )));
+    }
+    let text = std::fs::read_to_string(json_path).map_err(|e| read_error(e.to_string()))?;
     json::parse_lenient(&text).map_err(|e| CaptureError::Json {
         path: json_path.to_owned(),
         line: e.line(),
@@ -321,21 +350,43 @@ fn read_document(json_path: &Path) -> Result<serde_json::Value, CaptureError> {
 /// Reads only the cameras of a transforms file (a capture folder or a JSON file): one
 /// `(frame name, camera)` per frame, in order. Image keys are not needed and not checked. A
 /// COLMAP capture folder gives one `(image name, camera)` per image, sorted by name.
+///
+/// The cameras are checked against [`CaptureLimits::DEFAULT`]'s views and pixels per view (what
+/// a render from them allocates), before anything is rendered.
 pub fn load_cameras(path: &Path) -> Result<Vec<(String, Camera)>, CaptureError> {
-    if let Some(model) = colmap::find_model(path) {
-        return colmap::load_cameras(&model);
-    }
+    load_cameras_within(path, &CaptureLimits::DEFAULT)
+}
+
+/// [`load_cameras`] within `limits` (their views and pixels per view).
+pub fn load_cameras_within(
+    path: &Path,
+    limits: &CaptureLimits,
+) -> Result<Vec<(String, Camera)>, CaptureError> {
     let json_path = transforms_path(path);
-    let document = read_document(&json_path)?;
-    let (cameras, problems) = frame::parse_cameras(&document);
-    if problems.is_empty() {
-        Ok(cameras)
-    } else {
-        Err(CaptureError::Invalid {
+    let cameras = match colmap::find_model(path) {
+        Some(model) => colmap::load_cameras(&model)?,
+        None => {
+            let document = read_document(&json_path)?;
+            let (cameras, problems) = frame::parse_cameras(&document);
+            if !problems.is_empty() {
+                return Err(CaptureError::Invalid {
+                    path: json_path,
+                    problems,
+                });
+            }
+            cameras
+        }
+    };
+    let sizes = cameras
+        .iter()
+        .map(|(_, c)| (u64::from(c.width), u64::from(c.height)));
+    limits
+        .check(cameras.len(), sizes, std::iter::empty())
+        .map_err(|exceeded| CaptureError::TooLarge {
             path: json_path,
-            problems,
-        })
-    }
+            exceeded,
+        })?;
+    Ok(cameras)
 }
 
 /// A transforms document holding only cameras (OpenGL convention), readable by
@@ -356,6 +407,26 @@ pub fn cameras_to_json(cameras: &[(String, Camera)]) -> serde_json::Value {
 }
 
 impl Capture {
+    /// Checks what training needs beyond a valid capture: a test view, which measures the model
+    /// and is what its renders show (a capture whose frames all say `"split": "train"` has none).
+    pub fn check_trainable(&self) -> Result<(), CaptureError> {
+        if self.test_views().next().is_some() {
+            return Ok(());
+        }
+        Err(CaptureError::Invalid {
+            path: transforms_path(&self.root),
+            problems: vec![Problem::new(
+                frame::TOP_LEVEL,
+                "split",
+                format!(
+                    "none of the {} frames is a test view: give at least one frame \
+                     \"split\": \"test\", or leave out every `split` to hold out every 8th frame",
+                    self.views.len()
+                ),
+            )],
+        })
+    }
+
     pub fn train_views(&self) -> impl Iterator<Item = &View> {
         self.views.iter().filter(|v| v.split == Split::Train)
     }

@@ -19,7 +19,7 @@ use super::json::Fields;
 use super::mosaic::{self, Demosaic, Mosaic, Sensor};
 use super::{Measurement, View};
 use crate::core::camera::Camera;
-use crate::formats::image_io::{read_image, Image};
+use crate::formats::image_io::{decoder_limits, Image, ImageLimits};
 
 /// Keys of a `raw` object (`file` only per frame).
 const RAW_KEYS: [&str; 6] = [
@@ -412,23 +412,32 @@ fn read_counts(
         .path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("raw"));
+    let (w, h) = (
+        raw.given_size.0.map_or(raw.sensor_size.0, |v| v as usize),
+        raw.given_size.1.map_or(raw.sensor_size.1, |v| v as usize),
+    );
     if is_bytes {
-        let bytes = std::fs::read(&raw.file.path)
-            .map_err(|e| problem(format!("{shown}: cannot read file: {e}")))?;
-        let (w, h) = (
-            raw.given_size.0.map_or(raw.sensor_size.0, |v| v as usize),
-            raw.given_size.1.map_or(raw.sensor_size.1, |v| v as usize),
-        );
         let per_sample = if raw.bit_depth <= 8 { 1 } else { 2 };
-        let expected = w * h * per_sample;
-        if bytes.len() != expected {
-            return Err(problem(format!(
-                "{shown} holds {} bytes but {w}×{h} samples of {} bits ({per_sample} byte{}{}) need {expected}",
-                bytes.len(),
+        let expected = (w as u64) * (h as u64) * per_sample as u64;
+        let wrong_size = |found: u64| {
+            problem(format!(
+                "{shown} holds {found} bytes but {w}×{h} samples of {} bits ({per_sample} byte{}{}) need {expected}",
                 raw.bit_depth,
                 if per_sample == 1 { "" } else { "s" },
                 if per_sample == 2 { ", little-endian" } else { "" },
-            )));
+            ))
+        };
+        // The file's length is checked before it is read: it is the size the frame declares.
+        let length = std::fs::metadata(&raw.file.path)
+            .map_err(|e| problem(format!("{shown}: cannot read file: {e}")))?
+            .len();
+        if length != expected {
+            return Err(wrong_size(length));
+        }
+        let bytes = std::fs::read(&raw.file.path)
+            .map_err(|e| problem(format!("{shown}: cannot read file: {e}")))?;
+        if bytes.len() as u64 != expected {
+            return Err(wrong_size(bytes.len() as u64));
         }
         let counts = if per_sample == 1 {
             bytes.iter().map(|&b| b as u16).collect()
@@ -440,9 +449,23 @@ fn read_counts(
         };
         return Ok((w, h, counts, 8 * per_sample as u32));
     }
-    let decoded = image::ImageReader::open(&raw.file.path)
-        .and_then(|r| r.with_guessed_format())
-        .map_err(|e| problem(format!("{shown}: cannot read file: {e}")))?
+    let open = || {
+        image::ImageReader::open(&raw.file.path)
+            .and_then(|r| r.with_guessed_format())
+            .map_err(|e| problem(format!("{shown}: cannot read file: {e}")))
+    };
+    // The header's size is checked against the sensor's before anything is decoded.
+    let (file_w, file_h) = open()?
+        .into_dimensions()
+        .map_err(|e| problem(format!("{shown}: corrupt or unreadable image: {e}")))?;
+    let (file_w, file_h) = (file_w as usize, file_h as usize);
+    if (file_w, file_h) != raw.sensor_size {
+        // No samples: the caller's first check names the size mismatch.
+        return Ok((file_w, file_h, Vec::new(), 16));
+    }
+    let mut reader = open()?;
+    reader.limits(decoder_limits(&ImageLimits::pixels(file_w, file_h)));
+    let decoded = reader
         .decode()
         .map_err(|e| problem(format!("{shown}: corrupt or unreadable image: {e}")))?;
     let (w, h) = (decoded.width() as usize, decoded.height() as usize);
@@ -542,16 +565,13 @@ fn read_mask(
 ) -> Result<Image, Problem> {
     let problem = |message: String| Problem::new(spec.name.clone(), file.key, message);
     let shown = file.relative.display();
-    let (image, _) = read_image(&file.path).map_err(|e| {
-        problem(match e {
-            crate::formats::image_io::ImageError::Io { source, .. }
-                if source.kind() == std::io::ErrorKind::NotFound =>
-            {
-                format!("missing file {shown}")
-            }
-            other => other.to_string(),
-        })
-    })?;
+    let (image, _) = super::images::read_sized(file, &[(out_w, out_h), raw.sensor_size], |w, h| {
+        format!(
+            "{shown} is {w}×{h} pixels but the view is {out_w}×{out_h} (the sensor {}×{})",
+            raw.sensor_size.0, raw.sensor_size.1
+        )
+    })
+    .map_err(problem)?;
     if !(1..=2).contains(&image.channels) {
         return Err(problem(format!(
             "{shown} has {} channel(s); expected a single-channel (grey) mask ([1, 2] channels)",

@@ -275,11 +275,15 @@ fn partial_and_rgb_views_with_srgb_alpha_masks_and_missing_masks() {
         "b.png",
         &pattern(0, 0, 3).channel(0).to_rgb().map_for_test(),
     );
-    let frames: Vec<Value> = (0..4)
+    let frames: Vec<Value> = (0..5)
         .map(|i| {
             let mut f = json!({ "transform_matrix": ring_camera(i).1, "split": "train" });
             match i {
                 0 => f["file_path"] = json!("a.png"),
+                4 => {
+                    f["file_path"] = json!("a.png");
+                    f["split"] = json!("test");
+                }
                 1 => {
                     f["file_path"] = json!("a.png");
                     f["polarizer_group"] = json!("cam1");
@@ -678,4 +682,118 @@ fn a_json_file_inside_a_folder_is_loaded_relative_to_that_folder() {
     let capture = load(&sub).unwrap();
     assert_eq!(capture.views.len(), 3);
     assert_eq!(capture.root, fx.dir.path().canonicalize().unwrap());
+}
+
+#[test]
+fn a_capture_without_test_views_loads_but_is_not_trainable() {
+    let (fx, mut doc) = Fixture::stokes(3);
+    assert!(fx.load(&doc).unwrap().check_trainable().is_ok());
+    for i in 0..3 {
+        doc["frames"][i]["split"] = json!("train");
+    }
+    let capture = fx.load(&doc).unwrap();
+    assert_names(
+        &capture.check_trainable().unwrap_err().to_string(),
+        &[
+            "top level",
+            "`split`",
+            "none of the 3 frames is a test view",
+        ],
+    );
+}
+
+#[test]
+fn captures_over_their_limits_are_refused_before_any_image_is_read() {
+    let too_large = |result: Result<Capture, CaptureError>| match result {
+        Err(CaptureError::TooLarge { exceeded, .. }) => exceeded,
+        Err(other) => panic!("expected TooLarge, got {other}"),
+        Ok(_) => panic!("expected TooLarge, the capture loaded"),
+    };
+    // 8,000 frames naming the files of three.
+    let (fx, mut doc) = Fixture::stokes(3);
+    let frames = doc["frames"].as_array().unwrap().clone();
+    doc["frames"] = json!((0..8000).map(|i| frames[i % 3].clone()).collect::<Vec<_>>());
+    let exceeded = too_large(fx.load(&doc));
+    assert_eq!(
+        (exceeded.limit, exceeded.needed, exceeded.allowed),
+        ("max_views", 8000, 2000)
+    );
+    // One size declared far beyond the 8×6 files: refused on the declaration, not on the files.
+    let (fx, mut doc) = Fixture::stokes(3);
+    doc["w"] = json!(60_000);
+    doc["h"] = json!(60_000);
+    doc["fl_x"] = json!(60_000.0);
+    doc["fl_y"] = json!(60_000.0);
+    let exceeded = too_large(fx.load(&doc));
+    assert_eq!(exceeded.limit, "max_pixels_per_view");
+    assert!(
+        exceeded.message.contains("60000×60000"),
+        "{}",
+        exceeded.message
+    );
+    // The decoded bytes of all views together, under an operator's lower budget.
+    let (fx, doc) = Fixture::stokes(3);
+    std::fs::write(fx.dir.path().join("transforms.json"), doc.to_string()).unwrap();
+    let view_bytes = CaptureLimits::decoded_bytes(1, W as u64, H as u64);
+    let limits = CaptureLimits {
+        max_decoded_bytes: 3 * view_bytes - 1,
+        ..CaptureLimits::DEFAULT
+    };
+    let exceeded = too_large(load_within(fx.dir.path(), &limits));
+    assert_eq!(
+        (exceeded.limit, exceeded.needed),
+        ("max_decoded_bytes", 3 * view_bytes)
+    );
+    assert!(load_within(
+        fx.dir.path(),
+        &CaptureLimits {
+            max_decoded_bytes: 3 * view_bytes,
+            ..limits
+        }
+    )
+    .is_ok());
+}
+
+#[test]
+fn an_image_file_larger_than_its_frame_is_refused_from_its_header() {
+    use crate::testing::hostile::exr_declaring;
+    let (fx, doc) = Fixture::stokes(3);
+    std::fs::write(fx.path("s1/001.exr"), exr_declaring(100_000, 100_000)).unwrap();
+    assert_names(
+        &fx.error(&doc),
+        &[
+            "frame 1",
+            "`s1_path`",
+            "s1/001.exr is 100000×100000 pixels but w×h is 8×6",
+        ],
+    );
+}
+
+#[test]
+fn implausible_intrinsics_and_poses_are_named() {
+    let (fx, doc) = Fixture::stokes(3);
+    let with = |key: &str, value: Value| {
+        let mut doc = doc.clone();
+        doc[key] = value;
+        doc
+    };
+    assert_names(
+        &fx.error(&with("fl_x", json!(1e308))),
+        &["`fl_x`", "focal length 1e308", "field of view"],
+    );
+    assert_names(&fx.error(&with("fl_y", json!(0.01))), &["`fl_y`"]);
+    assert_names(
+        &fx.error(&with("cx", json!(-100.0))),
+        &["`cx`", "outside the image"],
+    );
+    assert_names(
+        &fx.error(&with("w", json!(100_000))),
+        &["`w`", "at most 65536 pixels"],
+    );
+    let mut far = doc.clone();
+    far["frames"][1]["transform_matrix"][0][3] = json!(1e300);
+    assert_names(
+        &fx.error(&far),
+        &["frame 1", "`transform_matrix`", "farther than"],
+    );
 }

@@ -113,6 +113,8 @@ pub enum TrainError {
         path: PathBuf,
         source: std::io::Error,
     },
+    #[error(transparent)]
+    Capture(#[from] crate::io::capture::CaptureError),
 }
 
 /// Stage of iteration `it` (0-based).
@@ -271,6 +273,7 @@ pub fn train_on(
     on_event: &mut dyn FnMut(&TrainEvent),
 ) -> Result<TrainOutcome, TrainError> {
     config.validate()?;
+    capture.check_trainable()?;
     let _span = tracing::info_span!("train", iterations = config.iterations).entered();
     std::fs::create_dir_all(model_dir).map_err(|source| TrainError::Io {
         path: model_dir.to_owned(),

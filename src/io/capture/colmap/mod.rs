@@ -143,9 +143,24 @@ fn intrinsics(camera: &ColmapCamera) -> Result<([f64; 4], Option<Distortion>), S
             p.len()
         ));
     }
+    let side_limit = u64::from(super::frame::MAX_IMAGE_SIDE);
+    if camera.width == 0 || camera.height == 0 || camera.width.max(camera.height) > side_limit {
+        return Err(format!(
+            "a {}×{} camera: image sides must be 1 to {side_limit} pixels",
+            camera.width, camera.height
+        ));
+    }
+    let intrinsics = |k: [f64; 4]| match super::frame::intrinsics_problem(
+        camera.width as u32,
+        camera.height as u32,
+        k,
+    ) {
+        Some((key, message)) => Err(format!("{key}: {message}")),
+        None => Ok(k),
+    };
     match camera.model.as_str() {
-        "SIMPLE_PINHOLE" => Ok(([p[0], p[0], p[1], p[2]], None)),
-        "PINHOLE" => Ok(([p[0], p[1], p[2], p[3]], None)),
+        "SIMPLE_PINHOLE" => Ok((intrinsics([p[0], p[0], p[1], p[2]])?, None)),
+        "PINHOLE" => Ok((intrinsics([p[0], p[1], p[2], p[3]])?, None)),
         "OPENCV" => {
             let d = Distortion {
                 k1: p[4],
@@ -153,7 +168,10 @@ fn intrinsics(camera: &ColmapCamera) -> Result<([f64; 4], Option<Distortion>), S
                 p1: p[6],
                 p2: p[7],
             };
-            Ok(([p[0], p[1], p[2], p[3]], (!d.is_identity()).then_some(d)))
+            Ok((
+                intrinsics([p[0], p[1], p[2], p[3]])?,
+                (!d.is_identity()).then_some(d),
+            ))
         }
         other => Err(format!(
             "camera model {other} is not supported (PINHOLE, SIMPLE_PINHOLE and OPENCV are); \
@@ -279,8 +297,12 @@ fn read_settings(
     Ok(settings)
 }
 
-/// Loads a COLMAP capture folder (`root`) whose model is at `location`.
-pub fn load(root: &Path, location: &ModelLocation) -> Result<Capture, CaptureError> {
+/// Loads a COLMAP capture folder (`root`) whose model is at `location`, within `limits`.
+pub fn load(
+    root: &Path,
+    location: &ModelLocation,
+    limits: &super::CaptureLimits,
+) -> Result<Capture, CaptureError> {
     let _span = tracing::info_span!("load_colmap", model = %location.dir.display()).entered();
     let model = model::read_model(&location.dir, location.format)?;
     let root = root.canonicalize().unwrap_or_else(|_| root.to_owned());
@@ -340,8 +362,13 @@ pub fn load(root: &Path, location: &ModelLocation) -> Result<Capture, CaptureErr
     }
     document.insert("camera_convention".into(), json!("OpenCV"));
     document.insert("frames".into(), Value::Array(frames));
-    let mut capture =
-        super::load_document(&location.dir, root, &Value::Object(document), problems)?;
+    let mut capture = super::load_document(
+        &location.dir,
+        root,
+        &Value::Object(document),
+        problems,
+        limits,
+    )?;
 
     super::lens::undistort_views(&mut capture, &distortions);
     capture.points = model

@@ -1,6 +1,8 @@
 //! Fixtures shared by the tests and benchmarks: the shared ground-truth captures' folder, random
-//! upstream gradients for the rasterizer's backward pass, and surfel spheres (one, or two beside
-//! each other for GridMap).
+//! upstream gradients for the rasterizer's backward pass, surfel spheres (one, or two beside
+//! each other for GridMap), and [`hostile`] files that declare more than they hold.
+
+pub mod hostile;
 
 use std::path::{Path, PathBuf};
 

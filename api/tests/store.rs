@@ -123,7 +123,15 @@ async fn only_the_owner_can_heartbeat_and_finish(s: &dyn Store) {
     // Finished: no more heartbeats or finishes, even by the former owner.
     assert!(s.heartbeat("job_a", "w1", &progress, 3000).await.is_err());
     assert!(s
-        .finish("job_a", "w1", &Finish::Failed("late".into()), 60)
+        .finish(
+            "job_a",
+            "w1",
+            &Finish::Failed {
+                code: "training_failed",
+                message: "late".into()
+            },
+            60
+        )
         .await
         .is_err());
 }
@@ -170,7 +178,49 @@ async fn expired_leases_are_requeued_then_abandoned(s: &dyn Store) {
     }
     let job = s.job("job_a").await.unwrap().unwrap();
     assert_eq!((job.state, job.finished_at), (JobState::Failed, Some(301)));
+    assert_eq!(job.error_code.as_deref(), Some("abandoned"));
     assert!(job.error.unwrap().contains("abandoned"));
+}
+
+async fn a_process_that_dies_the_same_way_twice_fails_the_job(s: &dyn Store) {
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    let died = |reason: &'static str| Finish::Died {
+        reason,
+        message: format!("the job's process died: {reason}"),
+    };
+    let mut deaths = Vec::new();
+    for (attempt, reason) in [(1, "out_of_memory"), (2, "time_limit"), (3, "time_limit")] {
+        let job = s.claim("w", 10 * attempt, 1000).await.unwrap().unwrap();
+        assert_eq!(job.attempts, attempt as u32);
+        s.finish("job_a", "w", &died(reason), 10 * attempt + 5)
+            .await
+            .unwrap();
+        let job = s.job("job_a").await.unwrap().unwrap();
+        deaths.push((job.state, job.last_death, job.error_code, job.finished_at));
+    }
+    let death = |reason: &str| Some(reason.to_owned());
+    assert_eq!(
+        deaths,
+        [
+            // A first death requeues, remembering how it died.
+            (JobState::Queued, death("out_of_memory"), None, None),
+            // Another way of dying is another first.
+            (JobState::Queued, death("time_limit"), None, None),
+            // The same way twice in a row fails the job with that reason.
+            (
+                JobState::Failed,
+                death("time_limit"),
+                death("time_limit"),
+                Some(35)
+            ),
+        ]
+    );
+    let job = s.job("job_a").await.unwrap().unwrap();
+    assert_eq!(
+        job.error.as_deref(),
+        Some("the job's process died: time_limit")
+    );
+    assert!(s.claim("w", 50, 1000).await.unwrap().is_none());
 }
 
 async fn an_expired_job_with_a_cancel_request_ends_cancelled(s: &dyn Store) {
@@ -210,6 +260,48 @@ async fn idempotency_key_returns_the_same_job_or_conflicts(s: &dyn Store) {
     assert!(new_d);
     assert_eq!(d.id, "job_d");
     assert_eq!(s.list_jobs(10, None).await.unwrap().len(), 2);
+}
+
+async fn idempotency_keys_are_per_account(s: &dyn Store) {
+    let of = |id: &str, account: Option<&str>| NewJob {
+        account: account.map(str::to_owned),
+        ..new_job(id, 1)
+    };
+    // The admin's key `bob/k7` and bob's `k7` are different keys (they once collided).
+    let (admin, _) = s
+        .submit(&of("job_admin", None), Some(("bob/k7", "h")))
+        .await
+        .unwrap();
+    let (bob, new_bob) = s
+        .submit(&of("job_bob", Some("bob")), Some(("k7", "h")))
+        .await
+        .unwrap();
+    let (alice, new_alice) = s
+        .submit(&of("job_alice", Some("alice")), Some(("k7", "h")))
+        .await
+        .unwrap();
+    assert!(new_bob && new_alice);
+    assert_eq!(
+        (admin.id.as_str(), bob.id.as_str(), alice.id.as_str()),
+        ("job_admin", "job_bob", "job_alice")
+    );
+    let (again, new) = s
+        .submit(&of("job_bob2", Some("bob")), Some(("k7", "h")))
+        .await
+        .unwrap();
+    assert_eq!((again.id.as_str(), new), ("job_bob", false));
+    match s
+        .submit(&of("job_bob3", Some("bob")), Some(("k7", "other")))
+        .await
+    {
+        Err(e @ StoreError::IdempotencyConflict(_)) => {
+            assert_eq!(
+                e.to_string(),
+                "Idempotency-Key `k7` was already used for a different request"
+            )
+        }
+        other => panic!("{other:?}"),
+    }
 }
 
 async fn concurrent_submits_with_one_key_create_one_job(s: Arc<dyn Store>) {
@@ -346,15 +438,18 @@ where
     a_requeued_job_keeps_its_progress_and_is_claimed_again(fresh().await.as_ref()).await;
     expired_leases_are_requeued_then_abandoned(fresh().await.as_ref()).await;
     an_expired_job_with_a_cancel_request_ends_cancelled(fresh().await.as_ref()).await;
+    a_process_that_dies_the_same_way_twice_fails_the_job(fresh().await.as_ref()).await;
     idempotency_key_returns_the_same_job_or_conflicts(fresh().await.as_ref()).await;
+    idempotency_keys_are_per_account(fresh().await.as_ref()).await;
     concurrent_submits_with_one_key_create_one_job(fresh().await).await;
     cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;
     accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use(fresh().await.as_ref())
         .await;
 }
 
-/// A database file written before records had accounts opens, keeps its rows, and gains the
-/// column.
+/// A database file written by the first release (no accounts, failure codes or per-account
+/// keys; keys prefixed with the account in `idempotency_key`) opens, keeps its rows, and gains
+/// the columns; its keys move to their accounts.
 #[tokio::test]
 async fn an_older_sqlite_file_is_upgraded_in_place() {
     let dir = tempfile::tempdir().unwrap();
@@ -365,13 +460,46 @@ async fn an_older_sqlite_file_is_upgraded_in_place() {
             "CREATE TABLE captures (id TEXT PRIMARY KEY, views INTEGER NOT NULL,
                 kinds TEXT NOT NULL, warnings TEXT NOT NULL, size_bytes INTEGER NOT NULL,
                 created_at INTEGER NOT NULL);
-             INSERT INTO captures VALUES ('cap_old', 2, '[]', '[]', 5, 1);",
+             INSERT INTO captures VALUES ('cap_old', 2, '[]', '[]', 5, 1);
+             CREATE TABLE jobs (id TEXT PRIMARY KEY, capture_id TEXT NOT NULL,
+                spec TEXT NOT NULL, state TEXT NOT NULL, progress TEXT NOT NULL, error TEXT,
+                created_at INTEGER NOT NULL, started_at INTEGER, finished_at INTEGER,
+                attempts INTEGER NOT NULL DEFAULT 0,
+                cancel_requested INTEGER NOT NULL DEFAULT 0, owner TEXT, lease_until INTEGER,
+                idempotency_key TEXT UNIQUE, request_hash TEXT, account TEXT);",
         )
         .unwrap();
+        let spec = serde_json::to_string(&new_job("x", 0).spec).unwrap();
+        let progress = serde_json::to_string(&Progress::default()).unwrap();
+        for (id, key, account) in [
+            ("job_old", "bob/k7", Some("bob")),
+            ("job_admin", "k7", None),
+        ] {
+            conn.execute(
+                "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
+                                   idempotency_key, request_hash, account)
+                 VALUES (?1, 'cap_old', ?2, 'succeeded', ?3, 1, ?4, 'h', ?5)",
+                rusqlite::params![id, spec, progress, key, account],
+            )
+            .unwrap();
+        }
     }
     let store = SqliteStore::open(&path).unwrap();
     let old = store.capture("cap_old").await.unwrap().unwrap();
     assert_eq!((old.views, old.account), (2, None));
+    let job = store.job("job_old").await.unwrap().unwrap();
+    assert_eq!((job.error_code, job.last_death), (None, None));
+    let retry = NewJob {
+        account: Some("bob".into()),
+        ..new_job("job_new", 2)
+    };
+    let (again, new) = store.submit(&retry, Some(("k7", "h"))).await.unwrap();
+    assert_eq!((again.id.as_str(), new), ("job_old", false));
+    let (admin, new) = store
+        .submit(&new_job("job_new", 2), Some(("k7", "h")))
+        .await
+        .unwrap();
+    assert_eq!((admin.id.as_str(), new), ("job_admin", false));
     drop(store);
     SqliteStore::open(&path).unwrap();
 }
@@ -442,7 +570,7 @@ async fn replicas_starting_together_migrate_the_schema_once() {
         start.await.unwrap().unwrap();
     }
     let versions = admin_query(&url, "SELECT count(*) FROM schema_migrations").await;
-    assert_eq!(versions, [2]);
+    assert_eq!(versions, [3]);
     // A database from a newer build is refused, not silently used.
     admin_query(
         &url,

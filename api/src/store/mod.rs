@@ -44,7 +44,7 @@ pub enum StoreError {
     },
     #[error("job `{0}` is no longer owned by this worker (its lease expired and was taken over)")]
     LeaseLost(String),
-    #[error("idempotency key `{0}` was already used for a different request")]
+    #[error("Idempotency-Key `{0}` was already used for a different request")]
     IdempotencyConflict(String),
     #[error("the store's lock was poisoned by a panic")]
     Poisoned,
@@ -162,6 +162,11 @@ pub struct JobRecord {
     pub state: JobState,
     pub progress: Progress,
     pub error: Option<String>,
+    /// Why it failed, as a stable name (`out_of_memory`, `time_limit`, `training_failed`, …).
+    pub error_code: Option<String>,
+    /// How its latest attempt's process died, when it did (`out_of_memory`, …): an attempt that
+    /// dies the same way again fails the job instead of requeueing it.
+    pub last_death: Option<String>,
     /// Unix milliseconds.
     pub created_at: i64,
     pub started_at: Option<i64>,
@@ -188,10 +193,20 @@ pub struct NewJob {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Finish {
     Succeeded,
-    Failed(String),
+    /// The job failed: a stable `code` and a message for people.
+    Failed {
+        code: &'static str,
+        message: String,
+    },
     Cancelled,
     /// Back to the queue (graceful shutdown): the next claim resumes from the checkpoint.
     Requeue,
+    /// The job's process died (`reason`: `out_of_memory`, `time_limit`, `killed`, `crashed`):
+    /// back to the queue, or failed with that code when its previous attempt died the same way.
+    Died {
+        reason: &'static str,
+        message: String,
+    },
 }
 
 /// Result of deleting a capture or a job.
@@ -220,8 +235,9 @@ pub trait Store: Send + Sync + 'static {
     /// Deletes the capture's record unless a queued or running job uses it (checked atomically).
     async fn delete_capture(&self, id: &str) -> Result<DeleteOutcome, StoreError>;
     /// Enqueues `job`. With an idempotency key (and the hash of the request it came with), a key
-    /// seen before returns the job it created then (`false`: not new), or
-    /// [`StoreError::IdempotencyConflict`] if the request differed.
+    /// the same account used before returns the job it created then (`false`: not new), or
+    /// [`StoreError::IdempotencyConflict`] if the request differed. Keys are per account: equal
+    /// keys of different accounts (or of the admin) are different keys.
     async fn submit(
         &self,
         job: &NewJob,
@@ -295,6 +311,8 @@ pub(crate) struct RawJob {
     pub attempts: u32,
     pub cancel_requested: bool,
     pub account: Option<String>,
+    pub error_code: Option<String>,
+    pub last_death: Option<String>,
 }
 
 impl RawJob {
@@ -311,6 +329,8 @@ impl RawJob {
             state,
             progress,
             error: self.error,
+            error_code: self.error_code,
+            last_death: self.last_death,
             created_at: self.created_at,
             started_at: self.started_at,
             finished_at: self.finished_at,
@@ -356,6 +376,50 @@ impl RawCapture {
 /// Message of a job failed because its workers kept dying.
 pub(crate) fn abandoned_message(max_attempts: u32) -> String {
     format!("abandoned: the worker running it died {max_attempts} times (lease expired)")
+}
+
+/// The `error_code` of a job failed because its workers kept dying.
+pub(crate) const ABANDONED: &str = "abandoned";
+
+/// The columns [`Finish`] writes: state, error, error code, finished (whether `finished_at` is
+/// set), and for a death its reason. A death is resolved in SQL against the stored `last_death`.
+pub(crate) struct FinishColumns<'a> {
+    pub state: &'static str,
+    pub error: Option<&'a str>,
+    pub error_code: Option<&'a str>,
+    pub finished: bool,
+    pub death: Option<&'a str>,
+}
+
+impl Finish {
+    pub(crate) fn columns(&self) -> FinishColumns<'_> {
+        let plain = |state, finished| FinishColumns {
+            state,
+            error: None,
+            error_code: None,
+            finished,
+            death: None,
+        };
+        match self {
+            Finish::Succeeded => plain("succeeded", true),
+            Finish::Cancelled => plain("cancelled", true),
+            Finish::Requeue => plain("queued", false),
+            Finish::Failed { code, message } => FinishColumns {
+                state: "failed",
+                error: Some(message),
+                error_code: Some(code),
+                finished: true,
+                death: None,
+            },
+            Finish::Died { reason, message } => FinishColumns {
+                state: "queued",
+                error: Some(message),
+                error_code: Some(reason),
+                finished: false,
+                death: Some(reason),
+            },
+        }
+    }
 }
 
 /// Current time in unix milliseconds.

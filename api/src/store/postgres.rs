@@ -14,7 +14,7 @@ use tokio_postgres::{NoTls, Row};
 
 use super::{
     abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, NewJob,
-    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError,
+    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, ABANDONED,
 };
 
 /// The schema's versions, oldest first; each runs once, in a transaction.
@@ -27,6 +27,10 @@ const MIGRATIONS: &[(i32, &str)] = &[
         2,
         include_str!("../../migrations/postgres/0002_accounts.sql"),
     ),
+    (
+        3,
+        include_str!("../../migrations/postgres/0003_failures_and_request_keys.sql"),
+    ),
 ];
 
 /// Key of the advisory lock that serializes migrations ("phygap" in ASCII).
@@ -38,7 +42,8 @@ const POOL_SIZE: usize = 16;
 const POOL_TIMEOUT: Duration = Duration::from_secs(5);
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
-                           finished_at, attempts, cancel_requested, account";
+                           finished_at, attempts, cancel_requested, account, error_code, \
+                           last_death";
 
 /// The PostgreSQL store.
 pub struct PostgresStore {
@@ -83,6 +88,8 @@ fn raw_job(row: &Row) -> Result<RawJob, StoreError> {
         attempts: row.try_get::<_, i32>(9)?.max(0) as u32,
         cancel_requested: row.try_get(10)?,
         account: row.try_get(11)?,
+        error_code: row.try_get(12)?,
+        last_death: row.try_get(13)?,
     })
 }
 
@@ -288,9 +295,10 @@ impl Store for PostgresStore {
             .query_opt(
                 &format!(
                     "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                       idempotency_key, request_hash, account)
+                                       request_key, request_hash, account)
                      VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7, $8)
-                     ON CONFLICT (idempotency_key) DO NOTHING
+                     ON CONFLICT ((COALESCE(account, '')), request_key)
+                         WHERE request_key IS NOT NULL DO NOTHING
                      RETURNING {JOB_COLUMNS}"
                 ),
                 &[
@@ -317,11 +325,14 @@ impl Store for PostgresStore {
         };
         let row = client
             .query_one(
-                &format!("SELECT {JOB_COLUMNS}, request_hash FROM jobs WHERE idempotency_key = $1"),
-                &[&key],
+                &format!(
+                    "SELECT {JOB_COLUMNS}, request_hash FROM jobs
+                     WHERE request_key = $1 AND account IS NOT DISTINCT FROM $2"
+                ),
+                &[&key, &job.account],
             )
             .await?;
-        let stored_hash: Option<String> = row.try_get(12)?;
+        let stored_hash: Option<String> = row.try_get(14)?;
         if stored_hash.as_deref() != Some(hash) {
             return Err(StoreError::IdempotencyConflict(key.to_owned()));
         }
@@ -463,19 +474,37 @@ impl Store for PostgresStore {
         finish: &Finish,
         now: i64,
     ) -> Result<(), StoreError> {
-        let (state, error, finished_at) = match finish {
-            Finish::Succeeded => ("succeeded", None, Some(now)),
-            Finish::Failed(message) => ("failed", Some(message.as_str()), Some(now)),
-            Finish::Cancelled => ("cancelled", None, Some(now)),
-            Finish::Requeue => ("queued", None, None),
-        };
+        let columns = finish.columns();
+        let finished_at = columns.finished.then_some(now);
         let client = self.pool.get().await?;
+        // A death fails the job when its previous attempt died the same way, else requeues it
+        // and remembers how it died; other endings are written as they are.
         let changed = client
             .execute(
-                "UPDATE jobs SET state = $1, error = $2, finished_at = $3, owner = NULL,
-                        lease_until = NULL
-                 WHERE id = $4 AND owner = $5 AND state = 'running'",
-                &[&state, &error, &finished_at, &id, &owner],
+                "UPDATE jobs SET
+                    state = CASE WHEN $5::TEXT IS NULL THEN $1::TEXT
+                                 WHEN last_death IS NOT DISTINCT FROM $5 THEN 'failed'
+                                 ELSE 'queued' END,
+                    error = CASE WHEN $5::TEXT IS NULL OR last_death IS NOT DISTINCT FROM $5
+                                 THEN $2::TEXT ELSE error END,
+                    error_code = CASE WHEN $5::TEXT IS NULL OR last_death IS NOT DISTINCT FROM $5
+                                      THEN $3::TEXT ELSE error_code END,
+                    finished_at = CASE WHEN $5::TEXT IS NULL THEN $4::BIGINT
+                                       WHEN last_death IS NOT DISTINCT FROM $5 THEN $6::BIGINT
+                                       ELSE NULL END,
+                    last_death = COALESCE($5, last_death),
+                    owner = NULL, lease_until = NULL
+                 WHERE id = $7 AND owner = $8 AND state = 'running'",
+                &[
+                    &columns.state,
+                    &columns.error,
+                    &columns.error_code,
+                    &finished_at,
+                    &columns.death,
+                    &now,
+                    &id,
+                    &owner,
+                ],
             )
             .await?;
         if changed == 0 {
@@ -513,12 +542,19 @@ impl Store for PostgresStore {
                         ELSE 'queued' END,
                     error = CASE WHEN NOT cancel_requested AND attempts >= $2 THEN $3
                                  ELSE error END,
+                    error_code = CASE WHEN NOT cancel_requested AND attempts >= $2 THEN $4
+                                      ELSE error_code END,
                     finished_at = CASE WHEN cancel_requested OR attempts >= $2 THEN $1
                                        ELSE finished_at END,
                     owner = NULL, lease_until = NULL
                  WHERE state = 'running' AND lease_until < $1
                  RETURNING id",
-                &[&now, &max_attempts, &abandoned_message(max_attempts as u32)],
+                &[
+                    &now,
+                    &max_attempts,
+                    &abandoned_message(max_attempts as u32),
+                    &ABANDONED,
+                ],
             )
             .await?;
         Ok(rows

@@ -8,7 +8,7 @@ use rusqlite::{params, Connection, OptionalExtension, Row};
 
 use super::{
     abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, NewJob,
-    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError,
+    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, ABANDONED,
 };
 
 /// The embedded SQLite store.
@@ -40,7 +40,6 @@ CREATE TABLE IF NOT EXISTS jobs (
     cancel_requested INTEGER NOT NULL DEFAULT 0,
     owner TEXT,
     lease_until INTEGER,
-    idempotency_key TEXT UNIQUE,
     request_hash TEXT,
     account TEXT
 );
@@ -49,10 +48,45 @@ CREATE INDEX IF NOT EXISTS jobs_by_capture ON jobs(capture_id, state);
 ";
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
-                           finished_at, attempts, cancel_requested, account";
+                           finished_at, attempts, cancel_requested, account, error_code, \
+                           last_death";
 
 /// Columns added after the first release, added to older files when they are opened.
-const ADDED_COLUMNS: &[(&str, &str)] = &[("captures", "account TEXT"), ("jobs", "account TEXT")];
+/// `request_key` is the client's Idempotency-Key, unique per account (the first release kept
+/// keys in `idempotency_key`, prefixed with the account's name, which two accounts could collide
+/// on; that column is no longer written).
+const ADDED_COLUMNS: &[(&str, &str)] = &[
+    ("captures", "account TEXT"),
+    ("jobs", "account TEXT"),
+    ("jobs", "error_code TEXT"),
+    ("jobs", "last_death TEXT"),
+    ("jobs", "request_key TEXT"),
+];
+
+/// Moves keys of files written by the first release into `request_key`, dropping the
+/// `account/` prefix they were stored with.
+const MIGRATE_LEGACY_KEYS: &str = "
+UPDATE jobs SET request_key = CASE
+        WHEN account IS NOT NULL AND substr(idempotency_key, 1, length(account) + 1) = account || '/'
+        THEN substr(idempotency_key, length(account) + 2)
+        ELSE idempotency_key END,
+    idempotency_key = NULL
+WHERE idempotency_key IS NOT NULL;
+";
+
+/// Keys are unique per account (the admin's, without an account, is one more scope).
+const REQUEST_KEY_INDEX: &str = "
+CREATE UNIQUE INDEX IF NOT EXISTS jobs_by_request_key
+    ON jobs (COALESCE(account, ''), request_key) WHERE request_key IS NOT NULL;
+";
+
+fn has_column(conn: &Connection, table: &str, column: &str) -> rusqlite::Result<bool> {
+    conn.query_row(
+        &format!("SELECT count(*) > 0 FROM pragma_table_info('{table}') WHERE name = ?1"),
+        params![column],
+        |r| r.get(0),
+    )
+}
 
 fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
     Ok(RawJob {
@@ -68,6 +102,8 @@ fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
         attempts: row.get(9)?,
         cancel_requested: row.get(10)?,
         account: row.get(11)?,
+        error_code: row.get(12)?,
+        last_death: row.get(13)?,
     })
 }
 
@@ -81,15 +117,14 @@ impl SqliteStore {
         conn.execute_batch(SCHEMA)?;
         for (table, column) in ADDED_COLUMNS {
             let name = column.split_whitespace().next().unwrap_or(column);
-            let present: bool = conn.query_row(
-                &format!("SELECT count(*) > 0 FROM pragma_table_info('{table}') WHERE name = ?1"),
-                params![name],
-                |r| r.get(0),
-            )?;
-            if !present {
+            if !has_column(&conn, table, name)? {
                 conn.execute_batch(&format!("ALTER TABLE {table} ADD COLUMN {column}"))?;
             }
         }
+        if has_column(&conn, "jobs", "idempotency_key")? {
+            conn.execute_batch(MIGRATE_LEGACY_KEYS)?;
+        }
+        conn.execute_batch(REQUEST_KEY_INDEX)?;
         Ok(SqliteStore {
             conn: Mutex::new(conn),
         })
@@ -211,8 +246,8 @@ impl Store for SqliteStore {
             if let Some((key, hash)) = idempotency {
                 let existing: Option<(String, Option<String>)> = tx
                     .query_row(
-                        "SELECT id, request_hash FROM jobs WHERE idempotency_key = ?1",
-                        params![key],
+                        "SELECT id, request_hash FROM jobs WHERE request_key = ?1 AND account IS ?2",
+                        params![key, job.account],
                         |r| Ok((r.get(0)?, r.get(1)?)),
                     )
                     .optional()?;
@@ -232,7 +267,7 @@ impl Store for SqliteStore {
             };
             tx.execute(
                 "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                   idempotency_key, request_hash, account)
+                                   request_key, request_hash, account)
                  VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7, ?8)",
                 params![
                     job.id,
@@ -379,18 +414,33 @@ impl Store for SqliteStore {
         finish: &Finish,
         now: i64,
     ) -> Result<(), StoreError> {
-        let (state, error, finished_at) = match finish {
-            Finish::Succeeded => ("succeeded", None, Some(now)),
-            Finish::Failed(message) => ("failed", Some(message.as_str()), Some(now)),
-            Finish::Cancelled => ("cancelled", None, Some(now)),
-            Finish::Requeue => ("queued", None, None),
-        };
+        let columns = finish.columns();
+        let finished_at = columns.finished.then_some(now);
         self.with(|c| {
+            // A death fails the job when its previous attempt died the same way, else requeues
+            // it and remembers how it died; other endings are written as they are.
             let changed = c.execute(
-                "UPDATE jobs SET state = ?1, error = ?2, finished_at = ?3, owner = NULL,
-                        lease_until = NULL
-                 WHERE id = ?4 AND owner = ?5 AND state = 'running'",
-                params![state, error, finished_at, id, owner],
+                "UPDATE jobs SET
+                    state = CASE WHEN ?5 IS NULL THEN ?1
+                                 WHEN last_death IS ?5 THEN 'failed' ELSE 'queued' END,
+                    error = CASE WHEN ?5 IS NULL OR last_death IS ?5 THEN ?2 ELSE error END,
+                    error_code = CASE WHEN ?5 IS NULL OR last_death IS ?5 THEN ?3
+                                      ELSE error_code END,
+                    finished_at = CASE WHEN ?5 IS NULL THEN ?4
+                                       WHEN last_death IS ?5 THEN ?6 ELSE NULL END,
+                    last_death = COALESCE(?5, last_death),
+                    owner = NULL, lease_until = NULL
+                 WHERE id = ?7 AND owner = ?8 AND state = 'running'",
+                params![
+                    columns.state,
+                    columns.error,
+                    columns.error_code,
+                    finished_at,
+                    columns.death,
+                    now,
+                    id,
+                    owner
+                ],
             )?;
             if changed == 0 {
                 return Err(StoreError::LeaseLost(id.to_owned()));
@@ -434,15 +484,18 @@ impl Store for SqliteStore {
                             ELSE 'queued' END,
                         error = CASE WHEN cancel_requested = 0 AND attempts >= ?2 THEN ?3
                                      ELSE error END,
+                        error_code = CASE WHEN cancel_requested = 0 AND attempts >= ?2 THEN ?4
+                                          ELSE error_code END,
                         finished_at = CASE WHEN cancel_requested = 1 OR attempts >= ?2 THEN ?1
                                            ELSE finished_at END,
                         owner = NULL, lease_until = NULL
                      WHERE state = 'running' AND lease_until < ?1
                      RETURNING id",
                 )?;
-                let rows = stmt.query_map(params![now, max_attempts, failed_message], |r| {
-                    r.get::<_, String>(0)
-                })?;
+                let rows = stmt
+                    .query_map(params![now, max_attempts, failed_message, ABANDONED], |r| {
+                        r.get::<_, String>(0)
+                    })?;
                 for row in rows {
                     ids.push(row?);
                 }

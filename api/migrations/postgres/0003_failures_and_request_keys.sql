@@ -1,0 +1,16 @@
+-- Why a job failed as a stable name (out_of_memory, time_limit, training_failed, …), and how its
+-- latest attempt's process died (an attempt that dies the same way again fails the job).
+ALTER TABLE jobs ADD COLUMN error_code TEXT;
+ALTER TABLE jobs ADD COLUMN last_death TEXT;
+-- Idempotency keys per account: the client's key as sent, unique within its account (the admin's
+-- records, without an account, are one more scope). Keys were stored prefixed with the account's
+-- name in `idempotency_key`, on which an admin's key `bob/k7` and bob's `k7` collided.
+ALTER TABLE jobs ADD COLUMN request_key TEXT;
+UPDATE jobs SET request_key = CASE
+        WHEN account IS NOT NULL AND left(idempotency_key, length(account) + 1) = account || '/'
+        THEN substr(idempotency_key, length(account) + 2)
+        ELSE idempotency_key END
+WHERE idempotency_key IS NOT NULL;
+ALTER TABLE jobs DROP COLUMN idempotency_key;
+CREATE UNIQUE INDEX jobs_by_request_key ON jobs (COALESCE(account, ''), request_key)
+    WHERE request_key IS NOT NULL;

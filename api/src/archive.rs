@@ -61,6 +61,9 @@ pub enum ArchiveFormat {
 
 const RATIO_GRACE_BYTES: u64 = 1 << 20;
 
+/// Longest file or folder name in an entry's path (what Linux file systems store).
+const MAX_NAME_BYTES: usize = 255;
+
 /// Recognizes the format from the first 512 bytes.
 pub fn sniff(head: &[u8]) -> Result<ArchiveFormat, ArchiveError> {
     if head.starts_with(b"PK\x03\x04") || head.starts_with(b"PK\x05\x06") {
@@ -104,6 +107,12 @@ fn safe_relative_path(name: &str) -> Result<Option<PathBuf>, ArchiveError> {
                 return Err(unsafe_entry("absolute path (drive letter)"))
             }
             "__MACOSX" if i == 0 => return Ok(None),
+            s if s.len() > MAX_NAME_BYTES => {
+                return Err(unsafe_entry(&format!(
+                    "a file or folder name of {} bytes (at most {MAX_NAME_BYTES})",
+                    s.len()
+                )))
+            }
             s => {
                 depth += 1;
                 path.push(s);
@@ -382,7 +391,16 @@ mod tests {
         );
         assert_eq!(safe_relative_path("__MACOSX/._a").unwrap(), None);
         assert_eq!(safe_relative_path("./").unwrap(), None);
-        for bad in ["../x", "a/../../x", "/etc/passwd", "C:/x", "a\\..\\x"] {
+        let long_name = format!("capture/{}.exr", "n".repeat(300));
+        assert!(safe_relative_path(&format!("a/{}", "n".repeat(255))).is_ok());
+        for bad in [
+            "../x",
+            "a/../../x",
+            "/etc/passwd",
+            "C:/x",
+            "a\\..\\x",
+            &long_name,
+        ] {
             assert!(
                 matches!(safe_relative_path(bad), Err(ArchiveError::Unsafe { .. })),
                 "{bad}"

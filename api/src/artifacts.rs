@@ -7,6 +7,7 @@
 use std::io::{Seek, SeekFrom};
 use std::path::{Path, PathBuf};
 use std::pin::Pin;
+use std::time::SystemTime;
 
 use serde::Serialize;
 use thiserror::Error;
@@ -47,6 +48,26 @@ pub struct ArtifactInfo {
     pub content_type: &'static str,
 }
 
+/// An artifact as a download sees it: its listing, and what validates a cached copy.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ArtifactStat {
+    pub info: ArtifactInfo,
+    /// When it was stored.
+    pub modified: SystemTime,
+    /// A strong entity tag, quoted (`"…"`): a new file under the same name gets another.
+    pub etag: String,
+}
+
+impl ArtifactStat {
+    /// The tag of a file of `size` bytes stored at `modified`, for stores without their own.
+    fn tag_of(size: u64, modified: SystemTime) -> String {
+        let nanos = modified
+            .duration_since(SystemTime::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos());
+        format!("\"{size:x}-{nanos:x}\"")
+    }
+}
+
 /// A byte stream of (part of) an artifact.
 pub type ArtifactReader = Pin<Box<dyn AsyncRead + Send>>;
 
@@ -62,8 +83,8 @@ pub trait ArtifactStore: Send + Sync + 'static {
     ) -> Result<Vec<ArtifactInfo>, ArtifactError>;
     /// The job's artifacts, sorted by name (empty if it has none).
     async fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError>;
-    /// One artifact's description, `None` if absent.
-    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError>;
+    /// One artifact's description and validators, `None` if absent.
+    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactStat>, ArtifactError>;
     /// `len` bytes of the artifact from byte `start` (the caller checked the range against `stat`).
     async fn open_range(
         &self,
@@ -215,18 +236,25 @@ impl ArtifactStore for FsArtifacts {
         Ok(infos)
     }
 
-    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError> {
+    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactStat>, ArtifactError> {
         let path = match self.path(job_id, name) {
             Ok(path) => path,
             Err(ArtifactError::BadName(_)) => return Ok(None),
             Err(e) => return Err(e),
         };
         match std::fs::metadata(&path) {
-            Ok(meta) if meta.is_file() => Ok(Some(ArtifactInfo {
-                name: name.to_owned(),
-                size: meta.len(),
-                content_type: content_type(name),
-            })),
+            Ok(meta) if meta.is_file() => {
+                let modified = meta.modified().unwrap_or(SystemTime::UNIX_EPOCH);
+                Ok(Some(ArtifactStat {
+                    info: ArtifactInfo {
+                        name: name.to_owned(),
+                        size: meta.len(),
+                        content_type: content_type(name),
+                    },
+                    etag: ArtifactStat::tag_of(meta.len(), modified),
+                    modified,
+                }))
+            }
             Ok(_) => Ok(None),
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
             Err(e) => Err(io_err(&path)(e)),
@@ -306,15 +334,27 @@ impl ArtifactStore for BucketArtifacts {
             .collect())
     }
 
-    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactInfo>, ArtifactError> {
+    async fn stat(&self, job_id: &str, name: &str) -> Result<Option<ArtifactStat>, ArtifactError> {
         if !valid_name(name) {
             return Ok(None);
         }
         let key = format!("{}/{name}", Self::folder(job_id)?);
-        Ok(self.bucket.size(&key).await?.map(|size| ArtifactInfo {
-            name: name.to_owned(),
-            size,
-            content_type: content_type(name),
+        Ok(self.bucket.head(&key).await?.map(|meta| {
+            let modified = SystemTime::from(meta.last_modified);
+            ArtifactStat {
+                etag: match meta.e_tag {
+                    // The store's tag, quoted as HTTP wants it (S3's already are).
+                    Some(tag) if tag.starts_with('"') => tag,
+                    Some(tag) => format!("\"{tag}\""),
+                    None => ArtifactStat::tag_of(meta.size, modified),
+                },
+                info: ArtifactInfo {
+                    name: name.to_owned(),
+                    size: meta.size,
+                    content_type: content_type(name),
+                },
+                modified,
+            }
         }))
     }
 
@@ -391,7 +431,17 @@ mod tests {
             .unwrap();
         assert_eq!(part, b"3456");
         let stat = store.stat("job_1", "metrics.json").await.unwrap().unwrap();
-        assert_eq!((stat.size, stat.content_type), (12, "application/json"));
+        assert_eq!(
+            (stat.info.size, stat.info.content_type),
+            (12, "application/json")
+        );
+        assert!(
+            stat.etag.len() > 2 && stat.etag.starts_with('"') && stat.etag.ends_with('"'),
+            "{}",
+            stat.etag
+        );
+        let again = store.stat("job_1", "metrics.json").await.unwrap().unwrap();
+        assert_eq!(again.etag, stat.etag, "a stored file keeps its tag");
         assert!(store.stat("job_1", "nope.json").await.unwrap().is_none());
         assert!(store
             .stat("job_1", "../job_1/metrics.json")

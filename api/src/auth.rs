@@ -69,8 +69,12 @@ pub enum TokensFileError {
     Line { line: usize, problem: String },
 }
 
+/// Fewest characters of any token, the admin's and the accounts'.
+pub const MIN_TOKEN_CHARS: usize = 16;
+
 /// Reads a tokens file: one `ACCOUNT TOKEN` pair a line (account names of `[A-Za-z0-9._-]`,
-/// tokens of at least 16 characters, each once); blank lines and `#` comments are skipped.
+/// tokens of at least [`MIN_TOKEN_CHARS`] characters, each once); blank lines and `#` comments
+/// are skipped.
 pub fn read_tokens_file(path: &Path) -> Result<Vec<AccountToken>, TokensFileError> {
     let text = std::fs::read_to_string(path).map_err(|source| TokensFileError::Io {
         path: path.to_owned(),
@@ -98,8 +102,10 @@ fn parse_tokens(text: &str) -> Result<Vec<AccountToken>, TokensFileError> {
         if account.len() > 64 || !account.chars().all(valid_name) {
             return Err(bad("account names are 1 to 64 of A-Z a-z 0-9 . _ -"));
         }
-        if token.len() < 16 {
-            return Err(bad("tokens need at least 16 characters"));
+        if token.chars().count() < MIN_TOKEN_CHARS {
+            return Err(bad(&format!(
+                "tokens need at least {MIN_TOKEN_CHARS} characters"
+            )));
         }
         if tokens
             .iter()
@@ -133,6 +139,16 @@ fn caller_of(token: &str, admin: Option<&str>, accounts: &[AccountToken]) -> Opt
     }
 }
 
+/// The token of an `Authorization` value using the Bearer scheme, whose name is
+/// case-insensitive (RFC 9110 §11.1).
+fn bearer_token(value: &str) -> Option<&str> {
+    let (scheme, token) = value.trim().split_once([' ', '\t'])?;
+    scheme
+        .eq_ignore_ascii_case("bearer")
+        .then(|| token.trim())
+        .filter(|t| !t.is_empty())
+}
+
 /// Resolves the request's bearer token to a [`Caller`] (stored as a request extension); 401 when
 /// the service has tokens and the request carries none of them.
 pub async fn require_token(
@@ -149,8 +165,7 @@ pub async fn require_token(
         .headers()
         .get(header::AUTHORIZATION)
         .and_then(|v| v.to_str().ok())
-        .and_then(|v| v.strip_prefix("Bearer "))
-        .map(str::trim);
+        .and_then(bearer_token);
     match given.map(|token| caller_of(token, admin, accounts)) {
         Some(Some(caller)) => {
             request.extensions_mut().insert(caller);
@@ -211,6 +226,16 @@ mod tests {
                 Err(TokensFileError::Line { line: got, .. }) => assert_eq!(got, line, "{text}"),
                 other => panic!("{text}: {other:?}"),
             }
+        }
+    }
+
+    #[test]
+    fn the_bearer_scheme_is_case_insensitive() {
+        for value in ["Bearer t0k", "bearer t0k", "BEARER  t0k ", "Bearer\tt0k"] {
+            assert_eq!(bearer_token(value), Some("t0k"), "{value:?}");
+        }
+        for value in ["Basic dXNlcjpwYXNz", "Bearer", "Bearer   ", "Bearert0k"] {
+            assert_eq!(bearer_token(value), None, "{value:?}");
         }
     }
 

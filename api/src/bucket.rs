@@ -149,8 +149,13 @@ impl Bucket {
 
     /// The size of one object, `None` where there is none.
     pub async fn size(&self, path: &str) -> Result<Option<u64>, BucketError> {
+        Ok(self.head(path).await?.map(|meta| meta.size))
+    }
+
+    /// One object's size, modification time and entity tag, `None` where there is none.
+    pub async fn head(&self, path: &str) -> Result<Option<object_store::ObjectMeta>, BucketError> {
         match self.store.head(&self.key(path)?).await {
-            Ok(meta) => Ok(Some(meta.size)),
+            Ok(meta) => Ok(Some(meta)),
             Err(object_store::Error::NotFound { .. }) => Ok(None),
             Err(e) => Err(e.into()),
         }

@@ -13,6 +13,7 @@ use crate::artifacts::ArtifactInfo;
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
 use crate::openapi::Binary;
+use crate::routes::conditional::Validators;
 use crate::routes::jobs::{load_job, JobPath};
 use crate::AppState;
 
@@ -35,15 +36,25 @@ pub struct ArtifactPath {
     name: String,
 }
 
-/// The header a download reads (by hand, from the request's header map).
+/// The headers a download reads (by hand, from the request's header map).
 #[derive(IntoParams)]
 #[into_params(parameter_in = Header)]
-#[allow(dead_code)] // Only its parameter's schema is used.
-pub struct RangeHeader {
+#[allow(dead_code)] // Only its parameters' schemas are used.
+pub struct DownloadHeaders {
     /// One byte range: bytes=A-B, bytes=A-, bytes=-N (others are ignored: the whole file is
     /// sent).
     #[param(rename = "Range", value_type = String, required = false)]
     range: Option<String>,
+    /// Send the range only if the file is still this one (its ETag, or its Last-Modified
+    /// date); otherwise the whole file (200).
+    #[param(rename = "If-Range", value_type = String, required = false)]
+    if_range: Option<String>,
+    /// ETags of copies the client holds (or `*`): 304 when one is this file.
+    #[param(rename = "If-None-Match", value_type = String, required = false)]
+    if_none_match: Option<String>,
+    /// Without If-None-Match: 304 when the file is not newer than this HTTP date.
+    #[param(rename = "If-Modified-Since", value_type = String, required = false)]
+    if_modified_since: Option<String>,
 }
 
 /// `GET /v1/jobs/{id}/artifacts`.
@@ -130,11 +141,14 @@ fn header_value(text: &str) -> Result<HeaderValue, ApiError> {
     operation_id = "download_artifact",
     summary = "Download an artifact",
     description = "The file with its own content type (the `content_type` of its listing), \
-        whole or one byte range.",
-    params(ArtifactPath, RangeHeader),
+        whole or one byte range, with a strong ETag, Last-Modified and `Cache-Control: private, \
+        no-cache`; a client's current copy gets 304.",
+    params(ArtifactPath, DownloadHeaders),
     responses(
         (status = OK, description = "The file", body = Binary, content_type = "*/*"),
         (status = PARTIAL_CONTENT, description = "The requested range", body = Binary, content_type = "*/*"),
+        (status = NOT_MODIFIED, description = "The client's copy (If-None-Match, \
+            If-Modified-Since) is this file"),
         (status = NOT_FOUND, description = "No such job the token may see, or no such artifact \
             (not_found)", body = ErrorBody),
         (status = RANGE_NOT_SATISFIABLE, description = "The range starts past the end \
@@ -148,15 +162,29 @@ pub async fn download(
     headers: HeaderMap,
 ) -> Result<Response, ApiError> {
     load_job(&state, &caller, &id).await?;
-    let info = state
+    let stat = state
         .artifacts
         .stat(&id, &name)
         .await?
         .ok_or_else(|| ApiError::not_found("artifact", &name))?;
-    let range = parse_range(
-        headers.get(header::RANGE).and_then(|v| v.to_str().ok()),
-        info.size,
-    );
+    let info = &stat.info;
+    let validators = Validators {
+        etag: stat.etag.clone(),
+        modified: stat.modified,
+    };
+    if validators.not_modified(&headers) {
+        let mut response = StatusCode::NOT_MODIFIED.into_response();
+        caching_headers(response.headers_mut(), &validators)?;
+        return Ok(response);
+    }
+    let range = match validators.range_applies(&headers) {
+        true => parse_range(
+            headers.get(header::RANGE).and_then(|v| v.to_str().ok()),
+            info.size,
+        ),
+        // The client's partial copy is of another file: it gets this one whole.
+        false => ByteRange::Full,
+    };
     let (status, start, len) = match range {
         ByteRange::Full => (StatusCode::OK, 0, info.size),
         ByteRange::Partial { start, end } => (StatusCode::PARTIAL_CONTENT, start, end - start + 1),
@@ -189,6 +217,7 @@ pub async fn download(
         header::CONTENT_DISPOSITION,
         header_value(&format!("attachment; filename=\"{file_name}\""))?,
     );
+    caching_headers(h, &validators)?;
     if status == StatusCode::PARTIAL_CONTENT {
         h.insert(
             header::CONTENT_RANGE,
@@ -196,6 +225,22 @@ pub async fn download(
         );
     }
     Ok(response)
+}
+
+/// `ETag`, `Last-Modified`, and a `Cache-Control` that lets a browser keep the file but ask
+/// again each time (the answer is a 304 while it is the same file; it needs the token, so only
+/// the client's own cache may hold it).
+fn caching_headers(h: &mut HeaderMap, validators: &Validators) -> Result<(), ApiError> {
+    h.insert(header::ETAG, header_value(&validators.etag)?);
+    h.insert(
+        header::LAST_MODIFIED,
+        header_value(&validators.last_modified())?,
+    );
+    h.insert(
+        header::CACHE_CONTROL,
+        HeaderValue::from_static("private, no-cache"),
+    );
+    Ok(())
 }
 
 #[cfg(test)]

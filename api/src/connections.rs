@@ -1,0 +1,118 @@
+//! The HTTP/1.1 listener, with the limits a public server needs: at most
+//! [`HttpLimits::max_connections`] connections at once (past it, new ones wait in the kernel's
+//! backlog until one closes), a connection that sends no complete request head within
+//! [`HttpLimits::header_timeout`] is closed (whether it trickles a header a byte at a time or sits
+//! idle between requests), and request bodies must keep up a minimum rate ([`crate::slow_body`]).
+//! Oversized request lines and headers are answered by [`crate::error::oversized_requests`] in the
+//! JSON error shape; hyper's own buffer (well above those limits) only meets requests that are
+//! not HTTP at all, which it answers with a bare 400 and a closed connection.
+//!
+//! Threading: one tokio task accepts; each connection is served by a task of its own.
+
+use std::sync::Arc;
+use std::time::Duration;
+
+use hyper_util::rt::{TokioIo, TokioTimer};
+use hyper_util::server::graceful::GracefulShutdown;
+use hyper_util::service::TowerToHyperService;
+use tokio::net::TcpListener;
+use tokio::sync::Semaphore;
+use tokio_util::sync::CancellationToken;
+
+/// Bounds on connections and requests (`--max-connections`, `--header-timeout-seconds`, …).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HttpLimits {
+    /// Connections served at once.
+    pub max_connections: usize,
+    /// Longest wait for a complete request head, also between requests of a kept-alive
+    /// connection.
+    pub header_timeout: Duration,
+    /// A request body must bring at least this many bytes in every `body_window`.
+    pub min_body_bytes: u64,
+    /// See `min_body_bytes`.
+    pub body_window: Duration,
+    /// Longest request target (path and query), bytes (414 above).
+    pub max_uri_bytes: usize,
+    /// Most bytes of header names and values together (431 above).
+    pub max_header_bytes: usize,
+    /// Most header fields (431 above).
+    pub max_headers: usize,
+}
+
+impl HttpLimits {
+    /// 512 connections; 15 s for a request head; bodies at 8 KiB per 10 s at least; 8 KiB
+    /// targets; 32 KiB and 100 header fields.
+    pub const DEFAULT: HttpLimits = HttpLimits {
+        max_connections: 512,
+        header_timeout: Duration::from_secs(15),
+        min_body_bytes: 8 << 10,
+        body_window: Duration::from_secs(10),
+        max_uri_bytes: 8 << 10,
+        max_header_bytes: 32 << 10,
+        max_headers: 100,
+    };
+}
+
+impl Default for HttpLimits {
+    fn default() -> Self {
+        HttpLimits::DEFAULT
+    }
+}
+
+/// hyper's read buffer: room for the largest head [`HttpLimits`] admits, several times over, so
+/// that the service, not hyper, answers an oversized one.
+const HYPER_BUFFER_BYTES: usize = 256 << 10;
+
+/// hyper's own cap on header fields (ours, [`HttpLimits::max_headers`], is checked below it).
+const HYPER_MAX_HEADERS: usize = 1000;
+
+/// How long to pause accepting after the process ran out of file descriptors.
+const ACCEPT_BACKOFF: Duration = Duration::from_millis(100);
+
+/// Serves `app` on `listener` until `stop` is cancelled; then stops accepting and waits for the
+/// open connections' requests to finish.
+pub async fn serve(
+    listener: TcpListener,
+    app: axum::Router,
+    limits: HttpLimits,
+    stop: CancellationToken,
+) {
+    let slots = Arc::new(Semaphore::new(limits.max_connections.max(1)));
+    let graceful = GracefulShutdown::new();
+    let mut http = hyper::server::conn::http1::Builder::new();
+    http.timer(TokioTimer::new())
+        .header_read_timeout(limits.header_timeout)
+        .max_buf_size(HYPER_BUFFER_BYTES)
+        .max_headers(HYPER_MAX_HEADERS);
+    loop {
+        let slot = tokio::select! {
+            slot = slots.clone().acquire_owned() => match slot {
+                Ok(slot) => slot,
+                Err(_) => break,
+            },
+            _ = stop.cancelled() => break,
+        };
+        let stream = tokio::select! {
+            accepted = listener.accept() => match accepted {
+                Ok((stream, _)) => stream,
+                Err(e) => {
+                    // EMFILE and the like: wait for descriptors to free up, keep serving.
+                    tracing::warn!(error = %e, "accepting a connection failed");
+                    tokio::time::sleep(ACCEPT_BACKOFF).await;
+                    continue;
+                }
+            },
+            _ = stop.cancelled() => break,
+        };
+        let connection =
+            http.serve_connection(TokioIo::new(stream), TowerToHyperService::new(app.clone()));
+        let connection = graceful.watch(connection);
+        tokio::spawn(async move {
+            if let Err(e) = connection.await {
+                tracing::debug!(error = %e, "connection ended with an error");
+            }
+            drop(slot);
+        });
+    }
+    graceful.shutdown().await;
+}

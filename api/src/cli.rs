@@ -6,8 +6,11 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
-use crate::auth::{read_tokens_file, TokensFileError};
-use crate::ServiceConfig;
+use phygap::io::capture::CaptureLimits;
+
+use crate::auth::{read_tokens_file, TokensFileError, MIN_TOKEN_CHARS};
+use crate::job_process::JobLimits;
+use crate::{ServiceConfig, ServiceLimits};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -31,6 +34,34 @@ pub enum Command {
     /// Print the OpenAPI document of the HTTP API (YAML, derived from the code), or write it to
     /// `--out` (`--out api/openapi.yaml` regenerates the committed copy).
     Openapi(OpenapiArgs),
+    /// Run one stage of a job (the service starts this in a child process of its own and talks
+    /// to it on standard input and output; not for people).
+    #[command(hide = true)]
+    Stage(StageArgs),
+}
+
+/// The limits a job's process runs under (set by the service from its own flags).
+#[derive(Debug, Args)]
+pub struct StageArgs {
+    /// Cap on the process's heap and private writable memory, bytes.
+    #[arg(long)]
+    pub memory_bytes: Option<u64>,
+    #[arg(long, default_value_t = CaptureLimits::DEFAULT.max_views)]
+    pub max_views: usize,
+    #[arg(long, default_value_t = CaptureLimits::DEFAULT.max_pixels_per_view)]
+    pub max_pixels_per_view: u64,
+    #[arg(long, default_value_t = CaptureLimits::DEFAULT.max_decoded_bytes)]
+    pub max_decoded_bytes: u64,
+}
+
+impl StageArgs {
+    pub fn capture_limits(&self) -> CaptureLimits {
+        CaptureLimits {
+            max_views: self.max_views,
+            max_pixels_per_view: self.max_pixels_per_view,
+            max_decoded_bytes: self.max_decoded_bytes,
+        }
+    }
 }
 
 #[derive(Debug, Args)]
@@ -60,6 +91,18 @@ impl OpenapiArgs {
     }
 }
 
+/// Flags that cannot make a service.
+#[derive(Debug, thiserror::Error)]
+pub enum ConfigError {
+    #[error(transparent)]
+    TokensFile(#[from] TokensFileError),
+    #[error(
+        "the admin token has {0} characters; it needs at least {MIN_TOKEN_CHARS} (and is best \
+         given as PHYGAP_TOKEN, which `ps` does not show, rather than --token)"
+    )]
+    WeakToken(usize),
+}
+
 #[derive(Debug, Args)]
 pub struct ServeArgs {
     /// Address to listen on.
@@ -71,7 +114,8 @@ pub struct ServeArgs {
     /// Jobs run at once (0: queue jobs without running any).
     #[arg(long, default_value_t = 1, env = "PHYGAP_WORKERS")]
     pub workers: usize,
-    /// Require `Authorization: Bearer TOKEN` on every /v1 route.
+    /// Require `Authorization: Bearer TOKEN` on every /v1 route (at least 16 characters; prefer
+    /// the PHYGAP_TOKEN variable: a flag shows in `ps`).
     #[arg(long, env = "PHYGAP_TOKEN", hide_env_values = true)]
     pub token: Option<String>,
     /// Account tokens, one `ACCOUNT TOKEN` pair a line: each token sees only its account's
@@ -103,12 +147,50 @@ pub struct ServeArgs {
     #[arg(long, default_value_t = 30, env = "PHYGAP_LEASE_SECONDS",
           value_parser = clap::value_parser!(u64).range(2..=3600))]
     pub lease_seconds: u64,
+    /// Memory of each job's process in MiB (its heap; a job over it fails `out_of_memory`);
+    /// default: three quarters of this machine's memory divided among the workers.
+    #[arg(long, env = "PHYGAP_JOB_MEMORY_MB",
+          value_parser = clap::value_parser!(u64).range(64..=16_777_216))]
+    pub job_memory_mb: Option<u64>,
+    /// Compute threads of each job's process; default: one per core.
+    #[arg(long, env = "PHYGAP_JOB_THREADS",
+          value_parser = clap::value_parser!(u64).range(1..=4096))]
+    pub job_threads: Option<u64>,
+    /// Longest a job's stage (training, export, relighting) may run, in minutes; a job over it
+    /// fails `time_limit`; 0: no limit.
+    #[arg(long, default_value_t = 1440, env = "PHYGAP_MAX_RUNTIME_MINUTES")]
+    pub max_runtime_minutes: u64,
+    /// Most views (frames) a capture may have.
+    #[arg(long, default_value_t = CaptureLimits::DEFAULT.max_views, env = "PHYGAP_MAX_VIEWS",
+          value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(2..=1_000_000))]
+    pub max_views: usize,
+    /// Most megapixels one view of a capture (or one relight camera) may have.
+    #[arg(long, default_value_t = CaptureLimits::DEFAULT.max_pixels_per_view / 1_000_000,
+          env = "PHYGAP_MAX_MEGAPIXELS",
+          value_parser = clap::value_parser!(u64).range(1..=4096))]
+    pub max_megapixels: u64,
+    /// Most MiB a capture's views may hold once decoded (40 bytes a pixel of every view).
+    #[arg(long, default_value_t = CaptureLimits::DEFAULT.max_decoded_bytes >> 20,
+          env = "PHYGAP_MAX_CAPTURE_MB",
+          value_parser = clap::value_parser!(u64).range(1..=16_777_216))]
+    pub max_capture_mb: u64,
+    /// Most megapixels of an uploaded environment map (relighting).
+    #[arg(long, default_value_t = ServiceLimits::DEFAULT_ENVMAP_PIXELS / 1_000_000,
+          env = "PHYGAP_MAX_ENVMAP_MEGAPIXELS",
+          value_parser = clap::value_parser!(u64).range(1..=1024))]
+    pub max_envmap_megapixels: u64,
 }
 
 impl ServeArgs {
     /// The service configuration these flags describe (reads the tokens file).
-    pub fn to_config(&self) -> Result<ServiceConfig, TokensFileError> {
+    pub fn to_config(&self) -> Result<ServiceConfig, ConfigError> {
         let mut config = ServiceConfig::new(self.data_dir.clone());
+        if let Some(token) = self.token.as_deref().filter(|t| !t.is_empty()) {
+            let chars = token.chars().count();
+            if chars < MIN_TOKEN_CHARS {
+                return Err(ConfigError::WeakToken(chars));
+            }
+        }
         if let Some(path) = &self.tokens_file {
             config.account_tokens = read_tokens_file(path)?;
         }
@@ -122,11 +204,28 @@ impl ServeArgs {
         config.database_url = self.database_url.clone().filter(|url| !url.is_empty());
         config.artifact_url = self.artifact_url.clone().filter(|url| !url.is_empty());
         config.lease = std::time::Duration::from_secs(self.lease_seconds);
+        config.limits = ServiceLimits {
+            capture: CaptureLimits {
+                max_views: self.max_views,
+                max_pixels_per_view: self.max_megapixels * 1_000_000,
+                max_decoded_bytes: self.max_capture_mb << 20,
+            },
+            max_envmap_pixels: self.max_envmap_megapixels * 1_000_000,
+            job: JobLimits {
+                memory_bytes: Some(match self.job_memory_mb {
+                    Some(mb) => mb << 20,
+                    None => crate::job_process::default_job_memory(self.workers),
+                }),
+                threads: self.job_threads.map(|t| t as usize),
+                max_runtime: (self.max_runtime_minutes > 0)
+                    .then(|| std::time::Duration::from_secs(self.max_runtime_minutes * 60)),
+            },
+        };
         Ok(config)
     }
 
     /// The configuration of a worker process: jobs only, no `/v1` API.
-    pub fn to_worker_config(&self) -> Result<ServiceConfig, TokensFileError> {
+    pub fn to_worker_config(&self) -> Result<ServiceConfig, ConfigError> {
         Ok(ServiceConfig {
             api: false,
             ..self.to_config()?

@@ -1,37 +1,59 @@
-//! The production [`Pipeline`]: the phygap core's capture loader, trainer, exporter and relighter.
-//! Each call is blocking; the capture is loaded from disk per call (the service keeps no capture in
-//! memory between jobs).
+//! The reconstruction core behind [`Pipeline`]: the phygap core's capture loader, trainer,
+//! exporter and relighter, called in the current process. The service never calls it itself: a
+//! job's child process does ([`crate::job_process`]), so what a hostile capture costs is that
+//! process's alone. Each call is blocking; the capture is loaded from disk per call.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 
 use phygap::core::config::TrainConfig;
 use phygap::core::events::TrainEvent;
+use phygap::io::capture::{CaptureError, CaptureLimits};
 
 use crate::pipeline::{CaptureInfo, Pipeline, PipelineError, RunOutcome};
 
-/// Calls `phygap::io::capture::load`, `phygap::pipeline::train::train`, `phygap::pipeline::export::export` and
-/// `phygap::pipeline::relight::relight`.
-pub struct CorePipeline;
+/// Calls `phygap::io::capture::load_within`, `phygap::pipeline::train::train`,
+/// `phygap::pipeline::export::export` and `phygap::pipeline::relight::relight`.
+#[derive(Clone, Debug, Default)]
+pub struct CorePipeline {
+    /// The most a capture may declare (views, pixels, decoded bytes).
+    pub capture_limits: CaptureLimits,
+}
 
-fn load(capture_dir: &Path) -> Result<phygap::io::capture::Capture, PipelineError> {
-    phygap::io::capture::load(capture_dir).map_err(|e| PipelineError::InvalidCapture {
-        problems: e.problems().to_vec(),
-        message: e.to_string(),
-    })
+impl CorePipeline {
+    fn load(&self, capture_dir: &Path) -> Result<phygap::io::capture::Capture, PipelineError> {
+        let capture = phygap::io::capture::load_within(capture_dir, &self.capture_limits)
+            .map_err(capture_error)?;
+        capture.check_trainable().map_err(capture_error)?;
+        Ok(capture)
+    }
+}
+
+/// A capture the loader refused, as the service reports it.
+fn capture_error(e: CaptureError) -> PipelineError {
+    match e {
+        CaptureError::TooLarge { ref exceeded, .. } => PipelineError::CaptureTooLarge {
+            limit: exceeded.limit.to_owned(),
+            message: e.to_string(),
+        },
+        e => PipelineError::InvalidCapture {
+            problems: e.problems().to_vec(),
+            message: e.to_string(),
+        },
+    }
 }
 
 /// The error of a core `stage` that failed while running.
-fn failed(stage: &'static str, error: impl std::fmt::Display) -> PipelineError {
+fn failed(stage: &str, error: impl std::fmt::Display) -> PipelineError {
     PipelineError::Failed {
-        stage,
+        stage: stage.to_owned(),
         message: error.to_string(),
     }
 }
 
 impl Pipeline for CorePipeline {
     fn inspect(&self, capture_dir: &Path) -> Result<CaptureInfo, PipelineError> {
-        let summary = load(capture_dir)?.summary();
+        let summary = self.load(capture_dir)?.summary();
         Ok(CaptureInfo {
             views: summary.views,
             kinds: summary.kinds,
@@ -48,7 +70,7 @@ impl Pipeline for CorePipeline {
         cancel: &AtomicBool,
         on_event: &mut dyn FnMut(&TrainEvent),
     ) -> Result<RunOutcome, PipelineError> {
-        let capture = load(capture_dir)?;
+        let capture = self.load(capture_dir)?;
         match phygap::pipeline::train::train(&capture, model_dir, config, resume, cancel, on_event)
         {
             Ok(phygap::pipeline::train::TrainOutcome::Finished) => Ok(RunOutcome::Finished),
@@ -59,8 +81,23 @@ impl Pipeline for CorePipeline {
         }
     }
 
-    fn export(&self, model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
-        phygap::pipeline::export::export(model_dir, out_dir).map_err(|e| failed("export", e))
+    fn export(
+        &self,
+        model_dir: &Path,
+        capture_dir: Option<&Path>,
+        out_dir: &Path,
+    ) -> Result<Vec<PathBuf>, PipelineError> {
+        use phygap::pipeline::previews::{write_captured_previews, CAPTURED_DIR};
+        let mut files = phygap::pipeline::export::export(model_dir, out_dir)
+            .map_err(|e| failed("export", e))?;
+        if let Some(capture_dir) = capture_dir {
+            let capture = self.load(capture_dir)?;
+            files.extend(
+                write_captured_previews(&capture, &out_dir.join(CAPTURED_DIR))
+                    .map_err(|e| failed("export", e))?,
+            );
+        }
+        Ok(files)
     }
 
     fn relight(

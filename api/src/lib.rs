@@ -17,8 +17,10 @@ pub mod artifacts;
 pub mod auth;
 pub mod bucket;
 pub mod cli;
+pub mod connections;
 pub mod core_pipeline;
 pub mod error;
+pub mod job_process;
 pub mod material_mesh;
 pub mod metrics;
 pub mod openapi;
@@ -26,6 +28,8 @@ pub mod pipeline;
 pub mod purge;
 pub mod queue;
 pub mod routes;
+pub mod security_headers;
+pub mod slow_body;
 pub mod store;
 pub mod web;
 
@@ -82,6 +86,39 @@ pub struct ServiceConfig {
     pub artifact_options: Vec<(String, String)>,
     /// Serve the `/v1` API (a worker process serves only `/healthz` and `/metrics`).
     pub api: bool,
+    /// What inputs may declare and what a job's process may use.
+    pub limits: ServiceLimits,
+    /// Connections, timeouts and request sizes of the HTTP listener.
+    pub http: connections::HttpLimits,
+}
+
+/// The bounds every input and every job is held to (README: "Limits").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ServiceLimits {
+    /// Views, pixels per view and decoded bytes of a capture (also a relight's cameras' views
+    /// and pixels).
+    pub capture: phygap::io::capture::CaptureLimits,
+    /// Most pixels of an uploaded environment map.
+    pub max_envmap_pixels: u64,
+    /// Memory, threads and run time of each job's process.
+    pub job: job_process::JobLimits,
+}
+
+impl ServiceLimits {
+    /// 64 megapixels: a 16384 × 4096 map (an 8K HDRI is 33.5).
+    pub const DEFAULT_ENVMAP_PIXELS: u64 = 64_000_000;
+}
+
+impl Default for ServiceLimits {
+    /// The core's capture limits, 64-megapixel maps, and jobs without memory or time caps (the
+    /// command line sets those from the machine: [`cli::ServeArgs::to_config`]).
+    fn default() -> Self {
+        ServiceLimits {
+            capture: phygap::io::capture::CaptureLimits::DEFAULT,
+            max_envmap_pixels: Self::DEFAULT_ENVMAP_PIXELS,
+            job: job_process::JobLimits::NONE,
+        }
+    }
 }
 
 impl ServiceConfig {
@@ -104,6 +141,8 @@ impl ServiceConfig {
             artifact_url: None,
             artifact_options: Vec::new(),
             api: true,
+            limits: ServiceLimits::default(),
+            http: connections::HttpLimits::DEFAULT,
         }
     }
 }
@@ -184,7 +223,7 @@ pub enum StartError {
 pub struct Server {
     addr: SocketAddr,
     state: AppState,
-    http: JoinHandle<std::io::Result<()>>,
+    http: JoinHandle<()>,
     tasks: Vec<JoinHandle<()>>,
 }
 
@@ -298,11 +337,8 @@ impl Server {
         };
         let router = routes::router(state.clone());
         let stop = state.shutdown.clone();
-        let http = tokio::spawn(async move {
-            axum::serve(listener, router)
-                .with_graceful_shutdown(stop.cancelled_owned())
-                .await
-        });
+        let http_limits = state.config.http;
+        let http = tokio::spawn(connections::serve(listener, router, http_limits, stop));
         let mut tasks = queue::worker::spawn(&state);
         tasks.extend(purge::spawn_sweeper(&state));
         tracing::info!(%addr, owner = state.runtime.owner(), "phygap-api listening");
@@ -335,8 +371,7 @@ impl Server {
             }
         }
         match tokio::time::timeout(Duration::from_secs(10), self.http).await {
-            Ok(Ok(Ok(()))) => {}
-            Ok(Ok(Err(e))) => tracing::error!(error = %e, "HTTP server error"),
+            Ok(Ok(())) => {}
             Ok(Err(e)) => tracing::error!(error = %e, "HTTP task ended abnormally"),
             Err(_) => tracing::warn!("HTTP connections still open after 10 s; leaving them"),
         }

@@ -1,6 +1,7 @@
 //! `phygap-api serve` (API and workers) or `phygap-api worker` (workers alone): runs the
 //! reconstruction service until SIGTERM or Ctrl-C, then checkpoints and requeues running jobs
-//! before exiting. `phygap-api openapi` prints the API's OpenAPI document.
+//! before exiting. `phygap-api openapi` prints the API's OpenAPI document. `phygap-api stage`
+//! is one stage of a job, in the process of its own the service starts for it.
 
 use anyhow::Context;
 use clap::Parser;
@@ -11,12 +12,32 @@ fn main() -> anyhow::Result<()> {
         Command::Serve(args) => args.to_config(),
         Command::Worker(args) => args.to_worker_config(),
         Command::Openapi(args) => return args.run(),
+        Command::Stage(args) => return stage(&args),
     }
     .context("reading the configuration")?;
-    phygap::pipeline::allocator::keep_large_buffers();
     tokio::runtime::Runtime::new()
         .context("starting the async runtime")?
         .block_on(serve(config))
+}
+
+/// One stage of a job, in its own process: the memory cap comes first, before anything is read.
+fn stage(args: &phygap_api::cli::StageArgs) -> anyhow::Result<()> {
+    if let Some(bytes) = args.memory_bytes {
+        phygap_api::job_process::child::limit_memory(bytes)?;
+    }
+    tracing_subscriber::fmt()
+        .with_env_filter(
+            tracing_subscriber::EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| "info,wgpu_hal=error,wgpu_core=error".into()),
+        )
+        .with_ansi(false)
+        .with_writer(std::io::stderr)
+        .init();
+    phygap::pipeline::allocator::keep_large_buffers();
+    let pipeline = phygap_api::core_pipeline::CorePipeline {
+        capture_limits: args.capture_limits(),
+    };
+    Ok(phygap_api::job_process::child::run(&pipeline)?)
 }
 
 async fn serve(config: phygap_api::ServiceConfig) -> anyhow::Result<()> {
@@ -27,7 +48,11 @@ async fn serve(config: phygap_api::ServiceConfig) -> anyhow::Result<()> {
         )
         .with_writer(std::io::stderr)
         .init();
-    let pipeline = phygap_api::pipeline::production_pipeline();
+    let executable = std::env::current_exe().context("finding the service's own executable")?;
+    let pipeline = std::sync::Arc::new(phygap_api::job_process::ProcessPipeline::for_service(
+        executable,
+        &config.limits,
+    ));
     let server = phygap_api::Server::start(config, pipeline)
         .await
         .context("starting the service")?;

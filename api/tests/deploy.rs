@@ -57,7 +57,9 @@ fn serve_args(argv: &[String]) -> phygap_api::cli::ServeArgs {
         .command
     {
         Command::Serve(args) | Command::Worker(args) => args,
-        Command::Openapi(_) => panic!("{argv:?} runs neither serve nor worker"),
+        Command::Openapi(_) | Command::Stage(_) => {
+            panic!("{argv:?} runs neither serve nor worker")
+        }
     }
 }
 

@@ -8,6 +8,7 @@ pub mod bench;
 pub mod evaluate;
 pub mod export;
 pub mod mesh_extraction;
+pub mod previews;
 pub mod reconstruction;
 pub mod relight;
 pub mod scorecard;

@@ -7,7 +7,6 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
-use rayon::prelude::*;
 use thiserror::Error;
 
 use crate::core::brdf_lut::BrdfLut;
@@ -18,13 +17,13 @@ use crate::core::light::LightProbe;
 use crate::core::mesh::TriangleMesh;
 use crate::core::raster::RasterSettings;
 use crate::core::render::{RenderError, RenderedView, Scene};
-use crate::core::shading;
 use crate::formats::image_io::{self, Image, ImageError};
 use crate::io::capture::Capture;
 use crate::io::model::Model;
 use crate::pipeline::backend::{self, BackendError, Engine};
 use crate::pipeline::evaluate::{self, EvalError, EvalReport};
 use crate::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
+use crate::pipeline::previews;
 
 #[derive(Debug, Error)]
 pub enum ReconstructionError {
@@ -249,17 +248,8 @@ fn output_images(view: &RenderedView) -> Vec<(&'static str, (Image, Preview))> {
     let s0 = rgb(view.premultiplied(&s.s0));
     let s1 = rgb(view.premultiplied(&s.s1));
     let s2 = rgb(view.premultiplied(&s.s2));
-    let (dolp, aolp): (Vec<f64>, Vec<f64>) = (0..w * h)
-        .into_par_iter()
-        .map(|p| {
-            let (a, b, c) = (
-                s.s0[p].element_sum(),
-                s.s1[p].element_sum(),
-                s.s2[p].element_sum(),
-            );
-            (shading::dolp(a, b, c), shading::aolp(b, c))
-        })
-        .unzip();
+    let sums = |stokes: &[DVec3]| -> Vec<f64> { stokes.iter().map(|v| v.element_sum()).collect() };
+    let (dolp, aolp) = previews::dolp_aolp(&sums(&s.s0), &sums(&s.s1), &sums(&s.s2));
     let dolp = grey(dolp);
     let aolp = grey(aolp);
     let normal: Vec<f64> = g
@@ -271,7 +261,6 @@ fn output_images(view: &RenderedView) -> Vec<(&'static str, (Image, Preview))> {
     let diffuse = rgb(view.premultiplied(&s.diffuse));
     let specular = rgb(view.premultiplied(&s.specular));
     let signed = |v: f32| 0.5 + 0.5 * v;
-    let aolp_preview = |v: f32| (v.rem_euclid(std::f32::consts::PI)) / std::f32::consts::PI;
     vec![
         ("s0", (s0.clone(), (s0, true))),
         ("s1", (s1.clone(), (mapped(&s1, &signed), false))),
@@ -279,7 +268,10 @@ fn output_images(view: &RenderedView) -> Vec<(&'static str, (Image, Preview))> {
         ("dolp", (dolp.clone(), (dolp, false))),
         (
             "aolp",
-            (aolp.clone(), (mapped(&aolp, &aolp_preview), false)),
+            (
+                aolp.clone(),
+                (mapped(&aolp, &previews::aolp_preview), false),
+            ),
         ),
         (
             "normal",

@@ -19,6 +19,7 @@ use tokio::task::JoinHandle;
 use tokio_util::sync::CancellationToken;
 use tracing::Instrument;
 
+use crate::pipeline::PipelineError;
 use crate::queue::{CancelReason, JobControl};
 use crate::store::{now_ms, Finish, JobRecord, JobSpec, Progress, StoreError};
 use crate::AppState;
@@ -96,25 +97,65 @@ enum Executed {
     Interrupted,
     /// The shared object store could not be reached: the job goes back to the queue.
     StorageUnavailable(String),
+    /// The job's process died (`reason` is the death's code).
+    Died {
+        reason: &'static str,
+        message: String,
+    },
 }
 
 /// Why the blocking part of a job stopped early.
 enum Stop {
-    /// The job's own failure (a message for its `error` field).
-    Failed(String),
+    /// The job's own failure: a stable code and a message for its `error` field.
+    Failed { code: &'static str, message: String },
     /// The shared object store could not be reached.
     Storage(crate::bucket::BucketError),
+    /// The job's process died.
+    Died {
+        reason: &'static str,
+        message: String,
+    },
 }
 
-impl From<String> for Stop {
-    fn from(message: String) -> Self {
-        Stop::Failed(message)
+impl Stop {
+    /// A failure of the service's own doing around the job (files, folders).
+    fn internal(message: String) -> Stop {
+        Stop::Failed {
+            code: "internal",
+            message,
+        }
     }
 }
 
 impl From<crate::bucket::BucketError> for Stop {
     fn from(e: crate::bucket::BucketError) -> Self {
         Stop::Storage(e)
+    }
+}
+
+impl From<PipelineError> for Stop {
+    fn from(e: PipelineError) -> Self {
+        let code = match &e {
+            PipelineError::InvalidCapture { .. } => "invalid_capture",
+            PipelineError::CaptureTooLarge { .. } => "capture_too_large",
+            PipelineError::InvalidInput(_) => "invalid_input",
+            PipelineError::Failed { stage, .. } => match stage.as_str() {
+                "training" => "training_failed",
+                "export" => "export_failed",
+                "relighting" => "relighting_failed",
+                _ => "failed",
+            },
+            PipelineError::Died { reason, .. } => {
+                return Stop::Died {
+                    reason: reason.code(),
+                    message: e.to_string(),
+                }
+            }
+        };
+        Stop::Failed {
+            code,
+            message: e.to_string(),
+        }
     }
 }
 
@@ -243,8 +284,18 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
             Some(CancelReason::LeaseLost) => None,
             Some(CancelReason::Shutdown) | None => Some(Finish::Requeue),
         },
-        Ok(Err(message)) => Some(Finish::Failed(message)),
-        Err(join_error) => Some(Finish::Failed(format!("the job panicked: {join_error}"))),
+        Ok(Ok(Executed::Died { reason, message })) => match control.reason() {
+            // Stopped on purpose (a cancel or shutdown the process could not answer in time).
+            Some(CancelReason::User) => Some(Finish::Cancelled),
+            Some(CancelReason::LeaseLost) => None,
+            Some(CancelReason::Shutdown) => Some(Finish::Requeue),
+            None => Some(Finish::Died { reason, message }),
+        },
+        Ok(Err((code, message))) => Some(Finish::Failed { code, message }),
+        Err(join_error) => Some(Finish::Failed {
+            code: "internal",
+            message: format!("the job panicked: {join_error}"),
+        }),
     };
     done.cancel();
     if let Err(e) = heartbeat.await {
@@ -252,9 +303,10 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
     }
     let outcome = match &finish {
         Some(Finish::Succeeded) => "succeeded",
-        Some(Finish::Failed(_)) => "failed",
+        Some(Finish::Failed { .. }) => "failed",
         Some(Finish::Cancelled) => "cancelled",
         Some(Finish::Requeue) => "requeued",
+        Some(Finish::Died { .. }) => "died",
         None => "lease_lost",
     };
     if let Some(finish) = &finish {
@@ -270,8 +322,14 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
             Err(e) => tracing::error!(error = %e, "recording the job's end failed"),
         }
     }
-    if let Some(Finish::Failed(message)) = &finish {
-        tracing::warn!(error = %message, "job failed");
+    match &finish {
+        Some(Finish::Failed { code, message }) => {
+            tracing::warn!(code, error = %message, "job failed")
+        }
+        Some(Finish::Died { reason, message }) => {
+            tracing::warn!(reason, error = %message, "the job's process died")
+        }
+        _ => {}
     }
     tracing::info!(
         outcome,
@@ -332,24 +390,26 @@ async fn heartbeat_loop(
     }
 }
 
-fn replace_dir(dir: &std::path::Path) -> Result<(), String> {
+fn replace_dir(dir: &std::path::Path) -> Result<(), Stop> {
     if dir.exists() {
-        std::fs::remove_dir_all(dir).map_err(|e| format!("clearing `{}`: {e}", dir.display()))?;
+        std::fs::remove_dir_all(dir)
+            .map_err(|e| Stop::internal(format!("clearing a folder: {e}")))?;
     }
-    std::fs::create_dir_all(dir).map_err(|e| format!("creating `{}`: {e}", dir.display()))
+    std::fs::create_dir_all(dir).map_err(|e| Stop::internal(format!("creating a folder: {e}")))
 }
 
-/// The blocking body of a job. Errors are messages for the job's `error` field.
+/// The blocking body of a job. Errors are a code and a message for the job's `error` fields.
 fn execute(
     state: &AppState,
     job: &JobRecord,
     control: &JobControl,
     live: &Live,
-) -> Result<Executed, String> {
+) -> Result<Executed, (&'static str, String)> {
     match execute_steps(state, job, control, live) {
         Ok(executed) => Ok(executed),
-        Err(Stop::Failed(message)) => Err(message),
+        Err(Stop::Failed { code, message }) => Err((code, message)),
         Err(Stop::Storage(e)) => Ok(Executed::StorageUnavailable(e.to_string())),
+        Err(Stop::Died { reason, message }) => Ok(Executed::Died { reason, message }),
     }
 }
 
@@ -387,7 +447,10 @@ fn execute_steps(
             let capture_dir = paths.capture_dir(&job.capture_id);
             fetch_missing(state, &format!("captures/{}", job.capture_id), &capture_dir)?;
             if !capture_dir.is_dir() {
-                return Err(format!("capture `{}` no longer exists", job.capture_id).into());
+                return Err(Stop::Failed {
+                    code: "capture_missing",
+                    message: format!("capture `{}` no longer exists", job.capture_id),
+                });
             }
             let model_dir = paths.model_dir(&job.id);
             let resume = job.attempts > 1;
@@ -398,7 +461,7 @@ fn execute_steps(
                 tracing::info!(files, "fetched the job's checkpoint from the object store");
             }
             std::fs::create_dir_all(&model_dir)
-                .map_err(|e| format!("creating `{}`: {e}", model_dir.display()))?;
+                .map_err(|e| Stop::internal(format!("creating the model folder: {e}")))?;
             let mut on_event = |event: &TrainEvent| {
                 live.update(|p| apply_event(p, event));
                 if let TrainEvent::Checkpoint { iteration } = event {
@@ -408,17 +471,14 @@ fn execute_steps(
                     }
                 }
             };
-            let outcome = state
-                .pipeline
-                .train(
-                    &capture_dir,
-                    &model_dir,
-                    config,
-                    resume,
-                    &control.cancel,
-                    &mut on_event,
-                )
-                .map_err(|e| e.to_string())?;
+            let outcome = state.pipeline.train(
+                &capture_dir,
+                &model_dir,
+                config,
+                resume,
+                &control.cancel,
+                &mut on_event,
+            )?;
             // The final (or interrupted) state, for a resume or a relight on another machine.
             upload_model(state, &job.id, &model_dir)?;
             if let crate::pipeline::RunOutcome::Interrupted { iteration } = outcome {
@@ -429,8 +489,7 @@ fn execute_steps(
             replace_dir(&staging)?;
             state
                 .pipeline
-                .export(&model_dir, &staging)
-                .map_err(|e| e.to_string())?;
+                .export(&model_dir, Some(&capture_dir), &staging)?;
         }
         JobSpec::Relight {
             parent_job_id,
@@ -448,22 +507,19 @@ fn execute_steps(
             fetch_missing(state, &format!("jobs/{parent_job_id}/model"), &parent_model)?;
             let cameras = cameras_file.as_ref().map(|name| input.join(name));
             replace_dir(&staging)?;
-            state
-                .pipeline
-                .relight(
-                    &parent_model,
-                    &input.join(envmap_file),
-                    cameras.as_deref(),
-                    &staging,
-                    *rotate_deg,
-                )
-                .map_err(|e| e.to_string())?;
+            state.pipeline.relight(
+                &parent_model,
+                &input.join(envmap_file),
+                cameras.as_deref(),
+                &staging,
+                *rotate_deg,
+            )?;
         }
     }
     let published = match block_on(state.artifacts.publish(&job.id, &staging)) {
         Ok(published) => published,
         Err(crate::artifacts::ArtifactError::Bucket(e)) => return Err(e.into()),
-        Err(e) => return Err(e.to_string().into()),
+        Err(e) => return Err(Stop::internal(format!("publishing the artifacts: {e}"))),
     };
     let _ = std::fs::remove_dir_all(&staging);
     tracing::info!(artifacts = published.len(), "artifacts published");

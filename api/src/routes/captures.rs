@@ -18,7 +18,7 @@ use crate::archive::ArchiveError;
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody, ProblemBody};
 use crate::openapi::Binary;
-use crate::pipeline::PipelineError;
+use crate::pipeline::{DeathReason, PipelineError};
 use crate::queue::new_id;
 use crate::store::{now_ms, rfc3339, CaptureRecord, DeleteOutcome};
 use crate::AppState;
@@ -104,12 +104,7 @@ pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u
     let mut stream = body.into_data_stream();
     let mut total = 0u64;
     while let Some(chunk) = stream.next().await {
-        let chunk = chunk.map_err(|e| {
-            ApiError::bad_request(
-                "upload_interrupted",
-                format!("reading the upload failed: {e}"),
-            )
-        })?;
+        let chunk = chunk.map_err(|e| body_error(&e))?;
         total += chunk.len() as u64;
         if total > limit {
             return Err(too_large(limit));
@@ -122,6 +117,23 @@ pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u
         .await
         .map_err(|e| ApiError::internal("writing the upload", e))?;
     Ok(total)
+}
+
+/// The answer to a request body that broke off: 408 when it was too slow
+/// ([`crate::slow_body`]), else 400 `upload_interrupted`.
+pub fn body_error(e: &(dyn std::error::Error + 'static)) -> ApiError {
+    if crate::slow_body::is_too_slow(e) {
+        ApiError::new(
+            StatusCode::REQUEST_TIMEOUT,
+            "request_timeout",
+            e.to_string(),
+        )
+    } else {
+        ApiError::bad_request(
+            "upload_interrupted",
+            format!("reading the upload failed: {e}"),
+        )
+    }
 }
 
 /// Bytes of an oversized upload read (and dropped) before answering 413.
@@ -170,6 +182,46 @@ fn relative_to_archive(message: &str, extracted: &FsPath) -> String {
     message.replace(&prefix, "")
 }
 
+/// The answer to a capture the validator refused (or could not finish validating).
+fn rejected_capture(error: PipelineError, extracted: &FsPath) -> ApiError {
+    let relative = |text: &str| relative_to_archive(text, extracted);
+    match error {
+        PipelineError::InvalidCapture { message, problems } => {
+            let problems = problems
+                .into_iter()
+                .map(|p| ProblemBody {
+                    frame: relative(&p.frame),
+                    key: p.key,
+                    message: relative(&p.message),
+                })
+                .collect();
+            ApiError::unprocessable("invalid_capture", relative(&message)).with_problems(problems)
+        }
+        PipelineError::CaptureTooLarge { message, .. } => {
+            ApiError::unprocessable("capture_too_large", relative(&message))
+        }
+        PipelineError::Died {
+            reason: reason @ (DeathReason::OutOfMemory | DeathReason::TimeLimit),
+            detail,
+        } => ApiError::unprocessable(
+            "capture_too_large",
+            format!(
+                "validating the capture {} ({detail}); it is too large for this service",
+                if reason == DeathReason::OutOfMemory {
+                    "ran out of memory"
+                } else {
+                    "ran past the time limit"
+                }
+            ),
+        ),
+        PipelineError::Died { detail, .. } => ApiError::unprocessable(
+            "invalid_capture",
+            format!("the capture could not be validated: the validating process died ({detail})"),
+        ),
+        other => ApiError::internal("validating the capture", other),
+    }
+}
+
 /// Extracts, validates and files an uploaded archive (blocking).
 fn extract_and_file(
     state: &AppState,
@@ -182,22 +234,10 @@ fn extract_and_file(
     let extracted = staging.path().join("capture");
     let root = crate::archive::extract(archive, &extracted, &state.config.extract_limits)
         .map_err(archive_error)?;
-    let info = state.pipeline.inspect(&root).map_err(|e| {
-        let relative = |text: &str| relative_to_archive(text, &extracted);
-        let (message, problems) = match e {
-            PipelineError::InvalidCapture { message, problems } => (message, problems),
-            other => (other.to_string(), Vec::new()),
-        };
-        let problems = problems
-            .into_iter()
-            .map(|p| ProblemBody {
-                frame: relative(&p.frame),
-                key: p.key,
-                message: relative(&p.message),
-            })
-            .collect();
-        ApiError::unprocessable("invalid_capture", relative(&message)).with_problems(problems)
-    })?;
+    let info = state
+        .pipeline
+        .inspect(&root)
+        .map_err(|e| rejected_capture(e, &extracted))?;
     let dir = state.paths.capture_dir(id);
     std::fs::rename(&root, &dir).map_err(|e| ApiError::internal("filing the capture", e))?;
     let record = CaptureRecord {
@@ -272,15 +312,18 @@ async fn ingest(
     responses(
         (status = CREATED, description = "The accepted capture", body = CaptureView),
         (status = BAD_REQUEST, description = "An empty body (empty_upload), a corrupt archive \
-            (invalid_archive), an unsafe entry: traversal, absolute path, link \
-            (unsafe_archive), or an interrupted upload (upload_interrupted)", body = ErrorBody),
+            (invalid_archive), an unsafe entry: traversal, absolute path, link, a name over 255 \
+            bytes (unsafe_archive), or an interrupted upload (upload_interrupted)", body = ErrorBody),
+        (status = REQUEST_TIMEOUT, description = "The body arrived slower than the service's \
+            minimum rate (request_timeout)", body = ErrorBody),
         (status = PAYLOAD_TOO_LARGE, description = "An upload over --max-upload-mb, or an \
             archive expanding past the limits: decompression bomb, too many entries \
             (payload_too_large)", body = ErrorBody),
         (status = UNSUPPORTED_MEDIA_TYPE, description = "Not a .zip or .tar archive \
             (unsupported_archive)", body = ErrorBody),
         (status = UNPROCESSABLE_ENTITY, description = "The capture breaks the capture format \
-            (invalid_capture)", body = ErrorBody),
+            (invalid_capture), or declares more views, pixels a view or decoded bytes than the \
+            service's limits allow (capture_too_large, naming the limit)", body = ErrorBody),
     )
 )]
 pub async fn upload(

@@ -55,9 +55,15 @@ pub struct JobView {
     /// Estimated seconds until the run ends.
     #[schema(required = true)]
     eta_seconds: Option<f64>,
-    /// Why it failed.
+    /// Why it failed, for people.
     #[schema(required = true)]
     error: Option<String>,
+    /// Why it failed, as a stable name: `out_of_memory`, `time_limit`, `killed` or `crashed`
+    /// (its process died the same way twice), `training_failed`, `export_failed`,
+    /// `relighting_failed`, `invalid_capture`, `capture_too_large`, `invalid_input`,
+    /// `capture_missing`, `abandoned` (its workers kept dying), `internal`; null unless failed.
+    #[schema(required = true)]
+    error_code: Option<String>,
     #[schema(format = DateTime)]
     created_at: String,
     #[schema(format = DateTime, required = true)]
@@ -122,6 +128,7 @@ impl From<JobRecord> for JobView {
             test_psnr: job.progress.test_psnr,
             eta_seconds: job.progress.eta_seconds,
             error: job.error,
+            error_code: job.error_code,
             created_at: rfc3339(job.created_at),
             started_at: job.started_at.map(rfc3339),
             finished_at: job.finished_at.map(rfc3339),
@@ -147,6 +154,9 @@ pub struct SubmitRequest {
     #[serde(default)]
     config: TrainConfig,
 }
+
+/// Largest `POST /v1/jobs` body (axum's default body limit; a config is about 2 KB).
+pub const MAX_SUBMIT_BYTES: usize = 2 << 20;
 
 /// Longest `Idempotency-Key` (utoipa takes the document's `maxLength` as a literal only, on
 /// [`SubmitHeaders`]; `api/tests/openapi.rs` sends a key of that length and one longer).
@@ -208,10 +218,12 @@ pub async fn load_job(state: &AppState, caller: &Caller, id: &str) -> Result<Job
         (status = BAD_REQUEST, description = "A body that is not JSON (invalid_json) or cannot \
             be read (invalid_body), or an Idempotency-Key that is not 1 to 255 visible ASCII \
             characters (invalid_idempotency_key)", body = ErrorBody),
-        (status = UNPROCESSABLE_ENTITY, description = "Unknown or missing request fields \
-            (invalid_request), an invalid config (invalid_config), an unknown capture \
-            (unknown_capture), a reused idempotency key (idempotency_key_reused)",
+        (status = PAYLOAD_TOO_LARGE, description = "A body over 2 MiB (payload_too_large)",
             body = ErrorBody),
+        (status = UNPROCESSABLE_ENTITY, description = "Unknown or missing request fields \
+            (invalid_request), an invalid config, e.g. a size over its bound (invalid_config), \
+            an unknown capture (unknown_capture), a reused idempotency key \
+            (idempotency_key_reused)", body = ErrorBody),
     )
 )]
 pub async fn submit(
@@ -220,7 +232,15 @@ pub async fn submit(
     headers: HeaderMap,
     body: Result<Bytes, BytesRejection>,
 ) -> Result<(StatusCode, Json<JobView>), ApiError> {
-    let body = body.map_err(|e| ApiError::new(e.status(), "invalid_body", e.body_text()))?;
+    let body = body.map_err(|e| match e.status() {
+        StatusCode::PAYLOAD_TOO_LARGE => ApiError::too_large(format!(
+            "a job request is at most {} KiB: {}",
+            MAX_SUBMIT_BYTES >> 10,
+            e.body_text()
+        )),
+        _ if crate::slow_body::is_too_slow(&e) => crate::routes::captures::body_error(&e),
+        status => ApiError::new(status, "invalid_body", e.body_text()),
+    })?;
     let value: serde_json::Value = serde_json::from_slice(&body)
         .map_err(|e| ApiError::bad_request("invalid_json", format!("request body: {e}")))?;
     let request: SubmitRequest = serde_json::from_value(value)
@@ -240,11 +260,9 @@ pub async fn submit(
             format!("capture `{}` does not exist", request.capture_id),
         ));
     }
-    // Keys are scoped to the account, so one account cannot reach another's jobs through them.
-    let key = idempotency_key(&headers)?.map(|key| match caller.account() {
-        Some(account) => format!("{account}/{key}"),
-        None => key,
-    });
+    // The store keeps keys per account (the job's), so one account cannot reach another's
+    // jobs through them.
+    let key = idempotency_key(&headers)?;
     let hash = serde_json::to_string(&(&request.capture_id, &request.config))
         .map_err(|e| ApiError::internal("hashing the request", e))?;
     let job = NewJob {
@@ -489,6 +507,8 @@ pub async fn events(
 fn multipart_error(e: MultipartError) -> ApiError {
     if e.status() == StatusCode::PAYLOAD_TOO_LARGE {
         ApiError::too_large(e.body_text())
+    } else if crate::slow_body::is_too_slow(&e) {
+        crate::routes::captures::body_error(&e)
     } else {
         ApiError::bad_request("invalid_multipart", e.body_text())
     }
@@ -522,6 +542,59 @@ fn envmap_extension(head: &[u8]) -> Option<&'static str> {
         Some("hdr")
     } else {
         None
+    }
+}
+
+/// Checks what a relight job will read before it is queued, from headers and JSON alone: the
+/// map's size against the service's limit, the cameras as cameras (count and pixels within the
+/// capture limits). Nothing is decoded here; the job's process renders.
+fn check_relight_inputs(
+    envmap: &std::path::Path,
+    cameras: Option<&std::path::Path>,
+    limits: &crate::ServiceLimits,
+) -> Result<(), ApiError> {
+    let header = phygap::formats::image_io::read_header(envmap).map_err(|e| {
+        ApiError::unprocessable(
+            "invalid_envmap",
+            format!(
+                "the environment map cannot be read: {}",
+                without_folder(&e.to_string(), envmap)
+            ),
+        )
+    })?;
+    let pixels = header.width as u64 * header.height as u64;
+    if pixels > limits.max_envmap_pixels {
+        return Err(ApiError::unprocessable(
+            "envmap_too_large",
+            format!(
+                "the environment map declares {}×{} pixels, over the limit of {} megapixels \
+                 (--max-envmap-megapixels)",
+                header.width,
+                header.height,
+                limits.max_envmap_pixels / 1_000_000
+            ),
+        ));
+    }
+    if let Some(cameras) = cameras {
+        use phygap::io::capture::CaptureError;
+        phygap::io::capture::load_cameras_within(cameras, &limits.capture).map_err(|e| {
+            let message = without_folder(&e.to_string(), cameras);
+            match e {
+                CaptureError::TooLarge { .. } => {
+                    ApiError::unprocessable("cameras_too_large", message)
+                }
+                _ => ApiError::unprocessable("invalid_cameras", message),
+            }
+        })?;
+    }
+    Ok(())
+}
+
+/// `message` naming `file` by its name alone (the service's folders are not the client's).
+fn without_folder(message: &str, file: &std::path::Path) -> String {
+    match file.parent() {
+        Some(folder) => message.replace(&format!("{}/", folder.display()), ""),
+        None => message.to_owned(),
     }
 }
 
@@ -564,9 +637,12 @@ pub struct RelightForm {
         (status = UNSUPPORTED_MEDIA_TYPE, description = "Not multipart (invalid_multipart), or \
             a map that is neither OpenEXR nor Radiance HDR (unsupported_envmap)",
             body = ErrorBody),
-        (status = UNPROCESSABLE_ENTITY, description = "No envmap field (missing_envmap), \
-            cameras that are not JSON (invalid_cameras), a rotate_deg that is not a finite \
-            number (invalid_rotate_deg)", body = ErrorBody),
+        (status = UNPROCESSABLE_ENTITY, description = "No envmap field (missing_envmap), a map \
+            whose header cannot be read (invalid_envmap) or that declares more pixels than \
+            --max-envmap-megapixels (envmap_too_large), cameras that are not valid cameras \
+            (invalid_cameras) or more views or pixels than the capture limits allow \
+            (cameras_too_large), a rotate_deg that is not a finite number (invalid_rotate_deg)",
+            body = ErrorBody),
     )
 )]
 pub async fn relight(
@@ -653,6 +729,16 @@ pub async fn relight(
     let envmap_file = envmap_file.ok_or_else(|| {
         ApiError::unprocessable("missing_envmap", "the form has no `envmap` file field")
     })?;
+    let (envmap_path, cameras_path, limits) = (
+        staging.path().join(&envmap_file),
+        cameras_file.as_ref().map(|name| staging.path().join(name)),
+        state.config.limits,
+    );
+    tokio::task::spawn_blocking(move || {
+        check_relight_inputs(&envmap_path, cameras_path.as_deref(), &limits)
+    })
+    .await
+    .map_err(|e| ApiError::internal("checking the relight inputs", e))??;
     let input_dir = state.paths.input_dir(&id);
     if let Some(parent_dir) = input_dir.parent() {
         std::fs::create_dir_all(parent_dir)

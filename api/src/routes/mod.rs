@@ -4,6 +4,7 @@
 
 pub(crate) mod artifacts;
 pub(crate) mod captures;
+pub(crate) mod conditional;
 pub(crate) mod health;
 pub(crate) mod jobs;
 pub(crate) mod viewer;
@@ -14,7 +15,10 @@ use axum::routing::{delete, get, post, MethodRouter};
 use axum::Router;
 use tower_http::catch_panic::CatchPanicLayer;
 
-use crate::error::{method_not_allowed_fallback, not_found_fallback, panic_response};
+use crate::error::{
+    json_errors, method_not_allowed_fallback, not_found_fallback, oversized_requests,
+    panic_response,
+};
 use crate::AppState;
 
 /// One route: method, path template (axum syntax), and whether the bearer token guards it.
@@ -59,7 +63,12 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
             true,
             delete(captures::remove),
         ),
-        entry(Method::POST, "/v1/jobs", true, post(jobs::submit)),
+        entry(
+            Method::POST,
+            "/v1/jobs",
+            true,
+            post(jobs::submit).layer(DefaultBodyLimit::max(jobs::MAX_SUBMIT_BYTES)),
+        ),
         entry(Method::GET, "/v1/jobs", true, get(jobs::list)),
         entry(Method::GET, "/v1/jobs/{id}", true, get(jobs::show)),
         entry(Method::DELETE, "/v1/jobs/{id}", true, delete(jobs::remove)),
@@ -103,8 +112,9 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
     ]
 }
 
-/// The complete application: routes, auth on `/v1` and `/metrics`, JSON fallbacks, HTTP
-/// metrics, panic guard, and the web page at `/`. A worker process (`config.api` false) serves
+/// The complete application: routes, auth on `/v1` and `/metrics`, JSON fallbacks and errors,
+/// HTTP metrics, request-size and body-rate limits, security headers, panic guard, and the web
+/// page at `/`. A worker process (`config.api` false) serves
 /// only `/healthz` and `/metrics`.
 pub fn router(state: AppState) -> Router {
     let mut open = Router::new();
@@ -128,12 +138,23 @@ pub fn router(state: AppState) -> Router {
         // The web page, for people (a worker process serves health and metrics only).
         open = open.merge(crate::web::router());
     }
-    open.fallback(not_found_fallback)
+    let limits = state.config.http;
+    let app = open
+        .fallback(not_found_fallback)
         .method_not_allowed_fallback(method_not_allowed_fallback)
+        .layer(axum::middleware::from_fn(move |request, next| {
+            crate::slow_body::enforce_min_rate(limits, request, next)
+        }))
         .layer(axum::middleware::from_fn_with_state(
             state.clone(),
             crate::metrics::track_http,
         ))
-        .layer(CatchPanicLayer::custom(panic_response))
-        .with_state(state)
+        .layer(axum::middleware::from_fn(json_errors))
+        .with_state(state);
+    // Outermost: size checks before anything else reads the request; headers on every answer,
+    // the panic guard's included.
+    crate::security_headers::apply(app.layer(axum::middleware::from_fn(move |request, next| {
+        oversized_requests(limits, request, next)
+    })))
+    .layer(CatchPanicLayer::custom(panic_response))
 }

@@ -1,6 +1,7 @@
-//! Shared harness of the integration tests: a real server on loopback over the real core
-//! ([`test_pipeline`]), a reqwest client, capture archives built on the fly (small synthetic
-//! captures from `phygap::pipeline::synth`) and bounded polling.
+//! Shared harness of the integration tests: a real server on loopback over the real core, each
+//! job stage in a process of its own as in production ([`test_pipeline`]), a reqwest client,
+//! capture archives built on the fly (small synthetic captures from `phygap::pipeline::synth`)
+//! and bounded polling.
 
 #![allow(dead_code)]
 
@@ -13,15 +14,19 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use phygap::pipeline::synth::{synth, SynthOptions};
-use phygap_api::core_pipeline::CorePipeline;
+use phygap_api::job_process::ProcessPipeline;
 use phygap_api::pipeline::Pipeline;
 use phygap_api::{Server, ServiceConfig};
 use serde_json::{json, Value};
 use tempfile::TempDir;
 
-/// The pipeline every integration test runs on: the real core.
-pub fn test_pipeline() -> Arc<dyn Pipeline> {
-    Arc::new(CorePipeline)
+/// The pipeline a server with `config` runs on, as in production: every stage in a child
+/// process (`phygap-api stage`, this package's binary) under the config's limits.
+pub fn test_pipeline(config: &ServiceConfig) -> Arc<dyn Pipeline> {
+    Arc::new(ProcessPipeline::for_service(
+        env!("CARGO_BIN_EXE_phygap-api").into(),
+        &config.limits,
+    ))
 }
 
 /// A small valid capture folder: a 10-view 24×24 full-Stokes sphere rendered by `phygap synth`.
@@ -144,7 +149,8 @@ impl std::ops::Deref for TestServer {
 
 impl TestServer {
     pub async fn start(config: ServiceConfig) -> TestServer {
-        Self::start_with(config, test_pipeline()).await
+        let pipeline = test_pipeline(&config);
+        Self::start_with(config, pipeline).await
     }
 
     pub async fn start_with(config: ServiceConfig, pipeline: Arc<dyn Pipeline>) -> TestServer {

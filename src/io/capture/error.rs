@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use thiserror::Error;
 
 /// One rule of CAPTURE_FORMAT.md §3 broken by one frame (or by the top level).
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct Problem {
     /// The frame, e.g. `frame 3 (train/s0/003.exr)`, or `top level` for keys outside `frames`.
     pub frame: String,

@@ -9,6 +9,7 @@ use clap::{Args, Parser, Subcommand};
 use phygap::io::capture::CaptureLimits;
 
 use crate::auth::{read_tokens_file, TokensFileError, MIN_TOKEN_CHARS};
+use crate::connections::HttpLimits;
 use crate::job_process::JobLimits;
 use crate::{ServiceConfig, ServiceLimits};
 
@@ -179,6 +180,22 @@ pub struct ServeArgs {
           env = "PHYGAP_MAX_ENVMAP_MEGAPIXELS",
           value_parser = clap::value_parser!(u64).range(1..=1024))]
     pub max_envmap_megapixels: u64,
+    /// HTTP connections served at once (more wait until one closes).
+    #[arg(long, default_value_t = HttpLimits::DEFAULT.max_connections,
+          env = "PHYGAP_MAX_CONNECTIONS",
+          value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=1_000_000))]
+    pub max_connections: usize,
+    /// Seconds a connection may take to send a request's head, or sit idle between requests.
+    #[arg(long, default_value_t = HttpLimits::DEFAULT.header_timeout.as_secs(),
+          env = "PHYGAP_HEADER_TIMEOUT_SECONDS",
+          value_parser = clap::value_parser!(u64).range(1..=3600))]
+    pub header_timeout_seconds: u64,
+    /// A request body must bring 8 KiB in every window of this many seconds, or is cut off
+    /// (408).
+    #[arg(long, default_value_t = HttpLimits::DEFAULT.body_window.as_secs(),
+          env = "PHYGAP_UPLOAD_WINDOW_SECONDS",
+          value_parser = clap::value_parser!(u64).range(1..=3600))]
+    pub upload_window_seconds: u64,
 }
 
 impl ServeArgs {
@@ -204,6 +221,12 @@ impl ServeArgs {
         config.database_url = self.database_url.clone().filter(|url| !url.is_empty());
         config.artifact_url = self.artifact_url.clone().filter(|url| !url.is_empty());
         config.lease = std::time::Duration::from_secs(self.lease_seconds);
+        config.http = HttpLimits {
+            max_connections: self.max_connections,
+            header_timeout: std::time::Duration::from_secs(self.header_timeout_seconds),
+            body_window: std::time::Duration::from_secs(self.upload_window_seconds),
+            ..HttpLimits::DEFAULT
+        };
         config.limits = ServiceLimits {
             capture: CaptureLimits {
                 max_views: self.max_views,

@@ -8,18 +8,16 @@
 //!
 //! Threading: the calling (blocking) thread waits on a channel fed by one thread reading the
 //! child's standard output; a second thread passes its standard error on to the service's own
-//! (the child's logs) and keeps its last lines, where an allocation failure is announced.
+//! (the child's logs) and notes an allocation failure announced there.
 
 pub mod child;
 pub mod protocol;
 
-use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Child, ChildStdin, Command, ExitStatus, Stdio};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, RecvTimeoutError};
-use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use phygap::core::config::TrainConfig;
@@ -74,9 +72,6 @@ const SECRET_VARIABLES: [&str; 5] = [
     "AWS_SESSION_TOKEN",
 ];
 
-/// Lines of the child's standard error kept for the failure message.
-const KEPT_LOG_LINES: usize = 40;
-
 /// What Rust's default allocation-error handler prints before it aborts.
 const ALLOCATION_FAILED: &str = "memory allocation of";
 
@@ -125,6 +120,11 @@ impl ProcessPipeline {
         }
         for name in SECRET_VARIABLES {
             command.env_remove(name);
+        }
+        if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+            // Mesa's device-select layer looks for a display server through XDG_RUNTIME_DIR and
+            // prints an error on every adapter probe without one; a service has no display.
+            command.env("NODEVICE_SELECT", "1");
         }
         command
             .stdin(Stdio::piped())
@@ -184,12 +184,15 @@ impl ProcessPipeline {
             stage: stage.to_owned(),
             message: format!("waiting for the job's process: {e}"),
         })?;
-        let log_tail = log.lock().map(|l| l.clone()).unwrap_or_default();
+        // The child has exited, so its standard error is at its end: every line is in.
+        let last_words = log
+            .and_then(|relay| relay.join().ok())
+            .unwrap_or_default();
         match answer {
             Some(answer) if status.success() => answer,
             _ => {
-                let reason = death_reason(status, timed_out, &log_tail);
-                let detail = describe_death(stage, reason, status, &log_tail, self.limits);
+                let reason = death_reason(status, timed_out, &last_words);
+                let detail = describe_death(stage, reason, status, &last_words, self.limits);
                 tracing::warn!(reason = reason.code(), %detail, "the job's process died");
                 Err(PipelineError::Died { reason, detail })
             }
@@ -205,24 +208,27 @@ fn send_line(stdin: &mut Option<ChildStdin>, line: &str) -> std::io::Result<()> 
     }
 }
 
-/// Passes the child's standard error on to the service's, keeping its last lines.
-fn relay_stderr(child: &mut Child) -> Arc<Mutex<VecDeque<String>>> {
-    let kept = Arc::new(Mutex::new(VecDeque::new()));
-    if let Some(stderr) = child.stderr.take() {
-        let kept = kept.clone();
-        std::thread::spawn(move || {
-            for line in BufReader::new(stderr).lines().map_while(Result::ok) {
-                eprintln!("{line}");
-                if let Ok(mut kept) = kept.lock() {
-                    if kept.len() == KEPT_LOG_LINES {
-                        kept.pop_front();
-                    }
-                    kept.push_back(line);
-                }
+/// What the child said on its standard error that tells how it died.
+#[derive(Debug, Default)]
+struct LastWords {
+    /// Rust's `memory allocation of N bytes failed`, wherever it came (a backtrace may follow).
+    allocation_failure: Option<String>,
+}
+
+/// Passes the child's standard error on to the service's; the thread ends with the child's
+/// output and returns its [`LastWords`].
+fn relay_stderr(child: &mut Child) -> Option<std::thread::JoinHandle<LastWords>> {
+    let stderr = child.stderr.take()?;
+    Some(std::thread::spawn(move || {
+        let mut words = LastWords::default();
+        for line in BufReader::new(stderr).lines().map_while(Result::ok) {
+            eprintln!("{line}");
+            if words.allocation_failure.is_none() && line.contains(ALLOCATION_FAILED) {
+                words.allocation_failure = Some(line.trim().to_owned());
             }
-        });
-    }
-    kept
+        }
+        words
+    }))
 }
 
 /// The child's messages, read line by line on a thread of their own; other lines are logged.
@@ -246,11 +252,11 @@ fn read_messages(child: &mut Child) -> mpsc::Receiver<Message> {
 }
 
 /// Why a child that gave no answer (or exited with a failure) ended.
-fn death_reason(status: ExitStatus, timed_out: bool, log_tail: &VecDeque<String>) -> DeathReason {
+fn death_reason(status: ExitStatus, timed_out: bool, last_words: &LastWords) -> DeathReason {
     use std::os::unix::process::ExitStatusExt;
     if timed_out {
         DeathReason::TimeLimit
-    } else if log_tail.iter().any(|l| l.contains(ALLOCATION_FAILED)) {
+    } else if last_words.allocation_failure.is_some() {
         DeathReason::OutOfMemory
     } else if status.signal() == Some(libc::SIGKILL) {
         DeathReason::Killed
@@ -265,7 +271,7 @@ fn describe_death(
     stage: &str,
     reason: DeathReason,
     status: ExitStatus,
-    log_tail: &VecDeque<String>,
+    last_words: &LastWords,
     limits: JobLimits,
 ) -> String {
     use std::os::unix::process::ExitStatusExt;
@@ -276,11 +282,10 @@ fn describe_death(
     };
     match reason {
         DeathReason::OutOfMemory => {
-            let words = log_tail
-                .iter()
-                .rev()
-                .find(|l| l.contains(ALLOCATION_FAILED))
-                .map_or("an allocation failed", |l| l.trim());
+            let words = last_words
+                .allocation_failure
+                .as_deref()
+                .unwrap_or("an allocation failed");
             match limits.memory_bytes {
                 Some(bytes) => format!(
                     "{words} during {stage}; the job's memory limit is {} MiB",

@@ -6,6 +6,7 @@
 #![allow(dead_code)]
 
 pub mod postgres;
+pub mod process;
 pub mod s3;
 
 use std::io::Write;

@@ -24,7 +24,10 @@ pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out
         description = "Upload a polarization capture (.zip or .tar holding transforms.json or a \
             COLMAP model, and its images or raw mosaic frames), train a relightable model of it as a queued job, follow its progress, \
             download its artifacts, and relight it under new environment maps. Every error is \
-            `{\"error\": {\"code\", \"message\"}}`.\n\nWhen the server runs with tokens, every \
+            `{\"error\": {\"code\", \"message\"}}`, those of the HTTP layer too: 404 \
+            `not_found` for a path no route matches, 405 `method_not_allowed` for a wrong \
+            method, and on every operation 414 `uri_too_long`, 431 `headers_too_large` and 500 \
+            `internal`.\n\nWhen the server runs with tokens, every \
             /v1 route and /metrics need `Authorization: Bearer <token>`: the admin token \
             (--token) sees every capture and job, an account token (--tokens-file) only its own \
             account's (others' answer 404)."
@@ -49,7 +52,7 @@ pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out
         viewer::material_mesh,
         viewer::ground_truth,
     ),
-    modifiers(&Access),
+    modifiers(&Access, &CommonErrors),
     tags(
         (name = "service", description = "Health, metrics and this document"),
         (name = "captures", description = "Capture archives: upload, look up, delete"),
@@ -111,6 +114,57 @@ impl Modify for Access {
                     .insert("401".into(), unauthorized.clone().into());
             } else {
                 operation.security = Some(Vec::new());
+            }
+        }
+    }
+}
+
+/// The errors any operation can answer from the HTTP layer, before or around its handler:
+/// a request target or headers over the limits, a path parameter that does not decode, an
+/// internal error; declared on every operation that does not declare them itself.
+struct CommonErrors;
+
+impl Modify for CommonErrors {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        let error = |description: &str| {
+            ResponseBuilder::new()
+                .description(description)
+                .content(
+                    "application/json",
+                    ContentBuilder::new()
+                        .schema(Some(Ref::from_schema_name(crate::error::ErrorBody::name())))
+                        .build(),
+                )
+                .build()
+        };
+        let common = [
+            (
+                "414",
+                error("A request target over the service's limit (uri_too_long)"),
+            ),
+            (
+                "431",
+                error("Headers over the service's limit in bytes or fields (headers_too_large)"),
+            ),
+            ("500", error("An internal error (internal)")),
+        ];
+        let bad_path = error("A path parameter that does not decode (bad_request)");
+        for (path, item) in openapi.paths.paths.iter_mut() {
+            for method in [Method::GET, Method::POST, Method::DELETE] {
+                let Some(operation) = operation_mut(item, &method) else {
+                    continue;
+                };
+                let responses = &mut operation.responses.responses;
+                for (status, response) in &common {
+                    responses
+                        .entry((*status).to_owned())
+                        .or_insert_with(|| response.clone().into());
+                }
+                if path.contains('{') {
+                    responses
+                        .entry("400".to_owned())
+                        .or_insert_with(|| bad_path.clone().into());
+                }
             }
         }
     }

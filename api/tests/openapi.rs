@@ -643,6 +643,54 @@ async fn live_answers_match_the_declared_schemas() {
     let missing = format!("/v1/jobs/{trained}/artifacts/nothing.bin");
     let answer = spec.request(&admin, Method::GET, download, &missing).await;
     assert_eq!(answer.status, 404);
+    let etag = admin
+        .send(Method::GET, &metrics_path)
+        .await
+        .headers()
+        .get("etag")
+        .unwrap()
+        .to_str()
+        .unwrap()
+        .to_owned();
+    let cached = admin
+        .client
+        .get(admin.url(&metrics_path))
+        .header("if-none-match", etag)
+        .send()
+        .await
+        .unwrap();
+    let answer = spec.check(Method::GET, download, cached).await;
+    assert_eq!((answer.status, answer.body.len()), (304, 0));
+
+    // The HTTP layer's own errors, declared on every operation.
+    let answer = spec
+        .request(&admin, Method::GET, "/v1/jobs/{id}", "/v1/jobs/%FF")
+        .await;
+    assert_eq!(answer.error(), (400, "bad_request"));
+    let long = format!("/v1/jobs/{}", "x".repeat(9000));
+    let answer = spec
+        .request(&admin, Method::GET, "/v1/jobs/{id}", &long)
+        .await;
+    assert_eq!(answer.error(), (414, "uri_too_long"));
+    let padded = admin
+        .client
+        .get(admin.url("/v1/jobs"))
+        .header("x-padding", "p".repeat(40_000))
+        .send()
+        .await
+        .unwrap();
+    let answer = spec.check(Method::GET, "/v1/jobs", padded).await;
+    assert_eq!(answer.error(), (431, "headers_too_large"));
+    let oversized = admin
+        .client
+        .post(admin.url("/v1/jobs"))
+        .header("content-type", "application/json")
+        .body(vec![b' '; 3 << 20])
+        .send()
+        .await
+        .unwrap();
+    let answer = spec.check(Method::POST, "/v1/jobs", oversized).await;
+    assert_eq!(answer.error(), (413, "payload_too_large"));
 
     let answer = spec
         .request(

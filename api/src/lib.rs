@@ -20,6 +20,7 @@ pub mod cli;
 pub mod connections;
 pub mod core_pipeline;
 pub mod error;
+pub mod intake;
 pub mod job_process;
 pub mod material_mesh;
 pub mod metrics;

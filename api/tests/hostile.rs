@@ -84,8 +84,14 @@ async fn inputs_that_once_aborted_the_server_are_answered_and_it_stays_up() {
     let huge_exr = exr_declaring(100_000, 100_000);
 
     // 1. A capture image declaring 100000 × 100000 pixels: refused from its header.
-    let (status, body) = api.upload(capture_with("s0/000.exr", huge_exr.clone())).await;
-    assert_eq!((status, error_code(&body).0), (422, "invalid_capture"), "{body}");
+    let (status, body) = api
+        .upload(capture_with("s0/000.exr", huge_exr.clone()))
+        .await;
+    assert_eq!(
+        (status, error_code(&body).0),
+        (422, "invalid_capture"),
+        "{body}"
+    );
     let problem = &body["error"]["problems"][0];
     assert!(
         problem["message"]
@@ -94,14 +100,20 @@ async fn inputs_that_once_aborted_the_server_are_answered_and_it_stays_up() {
             .contains("100000×100000 pixels but w×h is 24×24"),
         "{body}"
     );
-    server.assert_up("a capture image declaring 10¹⁰ pixels").await;
+    server
+        .assert_up("a capture image declaring 10¹⁰ pixels")
+        .await;
 
     // 3. A config asking for 4·10⁹ surfels: refused before anything is queued.
     let capture = api.upload_capture().await;
     let config = json!({"iterations": 40, "max_surfels": 4294967295u64,
                         "initial_surfels": 4000000000u64});
     let (status, body) = api.submit(&capture, config).await;
-    assert_eq!((status, error_code(&body).0), (422, "invalid_config"), "{body}");
+    assert_eq!(
+        (status, error_code(&body).0),
+        (422, "invalid_config"),
+        "{body}"
+    );
     assert!(error_code(&body).1.contains("max_surfels"), "{body}");
     server.assert_up("a config of 4·10⁹ surfels").await;
 
@@ -117,7 +129,9 @@ async fn inputs_that_once_aborted_the_server_are_answered_and_it_stays_up() {
     let response = relight_form(api, &trained, huge_exr, None).await;
     let message = expect_error(response, 422, "envmap_too_large").await;
     assert!(message.contains("100000×100000"), "{message}");
-    server.assert_up("a relight map declaring 10¹⁰ pixels").await;
+    server
+        .assert_up("a relight map declaring 10¹⁰ pixels")
+        .await;
 
     // 4. Relight cameras of one 100000 × 100000 frame, and of one 60000 × 60000 frame.
     let map_path = dir.path().join("map.exr");
@@ -147,7 +161,11 @@ async fn inputs_that_once_aborted_the_server_are_answered_and_it_stays_up() {
             .collect::<Vec<_>>());
     });
     let (status, body) = api.upload(many).await;
-    assert_eq!((status, error_code(&body).0), (422, "capture_too_large"), "{body}");
+    assert_eq!(
+        (status, error_code(&body).0),
+        (422, "capture_too_large"),
+        "{body}"
+    );
     assert!(error_code(&body).1.contains("max_views"), "{body}");
     let grown = server.resident_bytes().saturating_sub(resident);
     assert!(grown < 64 << 20, "the service grew by {} MiB", grown >> 20);
@@ -160,11 +178,19 @@ async fn inputs_that_once_aborted_the_server_are_answered_and_it_stays_up() {
         }
     });
     let (status, body) = api.upload(no_test).await;
-    assert_eq!((status, error_code(&body).0), (422, "invalid_capture"), "{body}");
+    assert_eq!(
+        (status, error_code(&body).0),
+        (422, "invalid_capture"),
+        "{body}"
+    );
     assert!(error_code(&body).1.contains("test view"), "{body}");
     let far_focal = capture_with_transforms(|doc| doc["fl_x"] = json!(1e308));
     let (status, body) = api.upload(far_focal).await;
-    assert_eq!((status, error_code(&body).0), (422, "invalid_capture"), "{body}");
+    assert_eq!(
+        (status, error_code(&body).0),
+        (422, "invalid_capture"),
+        "{body}"
+    );
     assert_eq!(body["error"]["problems"][0]["key"], "fl_x", "{body}");
 
     // 9. A map whose header passes but whose pixels are missing fails its job, which names the
@@ -209,13 +235,21 @@ async fn inputs_that_once_aborted_the_server_are_answered_and_it_stays_up() {
         }
         request.send()
     };
-    assert_eq!(get(&[("if-none-match", &etag)]).await.unwrap().status(), 304);
+    assert_eq!(
+        get(&[("if-none-match", &etag)]).await.unwrap().status(),
+        304
+    );
     assert_eq!(get(&[("if-none-match", "*")]).await.unwrap().status(), 304);
     assert_eq!(
-        get(&[("if-none-match", "\"stale\"")]).await.unwrap().status(),
+        get(&[("if-none-match", "\"stale\"")])
+            .await
+            .unwrap()
+            .status(),
         200
     );
-    let partial = get(&[("range", "bytes=0-3"), ("if-range", &etag)]).await.unwrap();
+    let partial = get(&[("range", "bytes=0-3"), ("if-range", &etag)])
+        .await
+        .unwrap();
     assert_eq!(partial.status(), 206);
     let stale = get(&[("range", "bytes=0-3"), ("if-range", "\"stale\"")])
         .await
@@ -230,7 +264,14 @@ async fn inputs_that_once_aborted_the_server_are_answered_and_it_stays_up() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn a_job_over_its_memory_limit_fails_while_others_run() {
     let dir = tempfile::tempdir().unwrap();
-    let flags = ["--workers", "2", "--job-memory-mb", "400", "--lease-seconds", "2"];
+    let flags = [
+        "--workers",
+        "2",
+        "--job-memory-mb",
+        "400",
+        "--lease-seconds",
+        "2",
+    ];
     let server = ServerProcess::start(dir.path(), &flags).await;
     let api = &server.api;
     let capture = api.upload_capture().await;
@@ -378,13 +419,26 @@ async fn every_error_is_json_and_every_answer_carries_security_headers() {
         }
     }
     let json_error = |response: reqwest::Response, status: u16, code: &'static str| async move {
-        let content_type = response.headers()["content-type"].to_str().unwrap().to_owned();
+        let content_type = response.headers()["content-type"]
+            .to_str()
+            .unwrap()
+            .to_owned();
         assert_eq!(content_type, "application/json");
         expect_error(response, status, code).await
     };
-    json_error(api.send(reqwest::Method::GET, "/v1/jobs/%FF").await, 400, "bad_request").await;
+    json_error(
+        api.send(reqwest::Method::GET, "/v1/jobs/%FF").await,
+        400,
+        "bad_request",
+    )
+    .await;
     let long_path = format!("/v1/jobs/{}", "x".repeat(10_000));
-    json_error(api.send(reqwest::Method::GET, &long_path).await, 414, "uri_too_long").await;
+    json_error(
+        api.send(reqwest::Method::GET, &long_path).await,
+        414,
+        "uri_too_long",
+    )
+    .await;
     let big_header = api
         .client
         .get(api.url("/v1/jobs"))
@@ -409,7 +463,11 @@ async fn every_error_is_json_and_every_answer_carries_security_headers() {
     json_error(huge_job, 413, "payload_too_large").await;
     let long_entry = tar_of(&[(format!("{}.exr", "n".repeat(300)), vec![1, 2, 3])]);
     let (status, body) = api.upload(long_entry).await;
-    assert_eq!((status, error_code(&body).0), (400, "unsafe_archive"), "{body}");
+    assert_eq!(
+        (status, error_code(&body).0),
+        (400, "unsafe_archive"),
+        "{body}"
+    );
 
     // 13. The scheme's name in any case.
     let lower = t
@@ -428,7 +486,14 @@ async fn every_error_is_json_and_every_answer_carries_security_headers() {
 fn a_short_admin_token_is_refused_at_start() {
     let dir = tempfile::tempdir().unwrap();
     let output = std::process::Command::new(env!("CARGO_BIN_EXE_phygap-api"))
-        .args(["serve", "--bind", "127.0.0.1:0", "--token", "x", "--data-dir"])
+        .args([
+            "serve",
+            "--bind",
+            "127.0.0.1:0",
+            "--token",
+            "x",
+            "--data-dir",
+        ])
         .arg(dir.path())
         .output()
         .unwrap();

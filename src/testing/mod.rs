@@ -1,7 +1,9 @@
 //! Fixtures shared by the tests and benchmarks: the shared ground-truth captures' folder, random
 //! upstream gradients for the rasterizer's backward pass, surfel spheres (one, or two beside
-//! each other for GridMap), and [`hostile`] files that declare more than they hold.
+//! each other for GridMap), [`hostile`] files that declare more than they hold, and the
+//! mutational [`fuzz`]er of the readers of untrusted bytes.
 
+pub mod fuzz;
 pub mod hostile;
 
 use std::path::{Path, PathBuf};

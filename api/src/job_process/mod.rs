@@ -185,9 +185,7 @@ impl ProcessPipeline {
             message: format!("waiting for the job's process: {e}"),
         })?;
         // The child has exited, so its standard error is at its end: every line is in.
-        let last_words = log
-            .and_then(|relay| relay.join().ok())
-            .unwrap_or_default();
+        let last_words = log.and_then(|relay| relay.join().ok()).unwrap_or_default();
         match answer {
             Some(answer) if status.success() => answer,
             _ => {

@@ -88,7 +88,7 @@ pub enum CaptureError {
     Colmap(#[from] super::colmap::ColmapError),
     /// The capture declares more than its [`CaptureLimits`](super::CaptureLimits) allow; no
     /// image was read.
-    #[error("capture {path} is too large: {}", .exceeded.message)]
+    #[error("{path} is over a limit: {}", .exceeded.message)]
     TooLarge {
         path: PathBuf,
         exceeded: super::limits::LimitExceeded,

@@ -49,6 +49,7 @@ fn sphere_model() -> Model {
             train_seconds: 0.0,
             num_surfels: surfels.len(),
             backend: "cpu".into(),
+            working_resolution: None,
         },
         config: TrainConfig {
             iterations: 100,

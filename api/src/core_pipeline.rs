@@ -8,7 +8,8 @@ use std::sync::atomic::AtomicBool;
 
 use phygap::core::config::TrainConfig;
 use phygap::core::events::TrainEvent;
-use phygap::io::capture::{CaptureError, CaptureLimits};
+use phygap::core::resolution::Resolution;
+use phygap::io::capture::{CaptureError, CaptureLimits, LoadOptions};
 
 use crate::pipeline::{CaptureInfo, Pipeline, PipelineError, RunOutcome};
 
@@ -21,9 +22,13 @@ pub struct CorePipeline {
 }
 
 impl CorePipeline {
-    fn load(&self, capture_dir: &Path) -> Result<phygap::io::capture::Capture, PipelineError> {
-        let capture = phygap::io::capture::load_within(capture_dir, &self.capture_limits)
-            .map_err(capture_error)?;
+    fn load(
+        &self,
+        capture_dir: &Path,
+        options: &LoadOptions,
+    ) -> Result<phygap::io::capture::Capture, PipelineError> {
+        let capture =
+            phygap::io::capture::load_with(capture_dir, options).map_err(capture_error)?;
         capture.check_trainable().map_err(capture_error)?;
         Ok(capture)
     }
@@ -53,11 +58,21 @@ fn failed(stage: &str, error: impl std::fmt::Display) -> PipelineError {
 
 impl Pipeline for CorePipeline {
     fn inspect(&self, capture_dir: &Path) -> Result<CaptureInfo, PipelineError> {
-        let summary = self.load(capture_dir)?.summary();
+        // Every file is read and checked; the views are kept at the host engines' working size,
+        // so validating a large capture holds little of it.
+        let options = LoadOptions {
+            limits: self.capture_limits,
+            resolution: Resolution::Auto,
+            pixel_budget: Resolution::HOST_PIXEL_BUDGET,
+        };
+        let capture = self.load(capture_dir, &options)?;
+        let summary = capture.summary();
         Ok(CaptureInfo {
             views: summary.views,
             kinds: summary.kinds,
             warnings: summary.warnings,
+            width: capture.full_size.0,
+            height: capture.full_size.1,
         })
     }
 
@@ -70,9 +85,14 @@ impl Pipeline for CorePipeline {
         cancel: &AtomicBool,
         on_event: &mut dyn FnMut(&TrainEvent),
     ) -> Result<RunOutcome, PipelineError> {
-        let capture = self.load(capture_dir)?;
-        match phygap::pipeline::train::train(&capture, model_dir, config, resume, cancel, on_event)
-        {
+        use phygap::pipeline::train;
+        let engine = train::engine_for(config).map_err(|e| failed("training", e))?;
+        let capture = train::load_capture(capture_dir, config, &engine, &self.capture_limits)
+            .map_err(capture_error)?;
+        capture.check_trainable().map_err(capture_error)?;
+        match train::train_on(
+            &engine, &capture, model_dir, config, resume, cancel, on_event,
+        ) {
             Ok(phygap::pipeline::train::TrainOutcome::Finished) => Ok(RunOutcome::Finished),
             Ok(phygap::pipeline::train::TrainOutcome::Interrupted { iteration }) => {
                 Ok(RunOutcome::Interrupted { iteration })
@@ -91,7 +111,16 @@ impl Pipeline for CorePipeline {
         let mut files = phygap::pipeline::export::export(model_dir, out_dir)
             .map_err(|e| failed("export", e))?;
         if let Some(capture_dir) = capture_dir {
-            let capture = self.load(capture_dir)?;
+            // The previews compare with the renders: the size the model was trained at.
+            let model =
+                phygap::io::model::Model::load(model_dir).map_err(|e| failed("export", e))?;
+            let downscale = model.info.working_resolution.map_or(1, |r| r.downscale);
+            let options = LoadOptions {
+                limits: self.capture_limits,
+                resolution: Resolution::Downscale(downscale),
+                ..LoadOptions::default()
+            };
+            let capture = self.load(capture_dir, &options)?;
             files.extend(
                 write_captured_previews(&capture, &out_dir.join(CAPTURED_DIR))
                     .map_err(|e| failed("export", e))?,

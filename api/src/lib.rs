@@ -12,6 +12,7 @@
 //! an `--artifact-url` holds them), `tmp/` (uploads in progress; leftovers removed at start). With
 //! an object store, the folders other than `tmp/` are working copies of its objects.
 
+pub mod admission;
 pub mod archive;
 pub mod artifacts;
 pub mod auth;

@@ -23,6 +23,11 @@ pub struct CaptureInfo {
     pub kinds: Vec<String>,
     /// Non-fatal problems the loader noticed (e.g. a frame without a mask).
     pub warnings: Vec<String>,
+    /// The size of its views (all views of a capture have one).
+    #[serde(default)]
+    pub width: u32,
+    #[serde(default)]
+    pub height: u32,
 }
 
 /// How a training run ended without error.

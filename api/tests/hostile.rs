@@ -501,3 +501,28 @@ fn a_short_admin_token_is_refused_at_start() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(stderr.contains("at least 16"), "{stderr}");
 }
+
+/// Issue 29's admission: a training job whose capture cannot fit the job memory limit at the
+/// working resolution it asks for is refused when submitted, naming what would fit.
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn a_job_whose_capture_cannot_fit_is_refused_at_submit() {
+    let (_dir, t) = TestServer::start_fresh_with(|c| {
+        c.limits.job.memory_bytes = Some(200 << 20);
+    })
+    .await;
+    let capture = t.upload_capture().await;
+    let (_, record) = t.get_json(&format!("/v1/captures/{capture}")).await;
+    assert_eq!(
+        (record["width"].as_u64(), record["height"].as_u64()),
+        (Some(24), Some(24))
+    );
+    let (status, body) = t.submit(&capture, train_config(20, 10)).await;
+    assert_eq!(
+        (status, error_code(&body).0),
+        (422, "capture_too_large"),
+        "{body}"
+    );
+    assert!(error_code(&body).1.contains("job memory limit"), "{body}");
+    assert_eq!(t.get_json("/v1/jobs").await.1["jobs"], json!([]));
+    t.server.shutdown().await;
+}

@@ -327,6 +327,8 @@ async fn cancel_and_capture_deletion_respect_job_states(s: &dyn Store) {
     let capture = CaptureRecord {
         id: "cap_1".into(),
         views: 3,
+        width: 1224,
+        height: 1024,
         kinds: vec!["rgb".into(), "stokes".into()],
         warnings: vec!["a warning".into()],
         size_bytes: 10,
@@ -409,6 +411,8 @@ async fn accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use
         let capture = CaptureRecord {
             id: id.into(),
             views: 1,
+            width: 8,
+            height: 8,
             kinds: vec![],
             warnings: vec![],
             size_bytes: 1,
@@ -486,7 +490,10 @@ async fn an_older_sqlite_file_is_upgraded_in_place() {
     }
     let store = SqliteStore::open(&path).unwrap();
     let old = store.capture("cap_old").await.unwrap().unwrap();
-    assert_eq!((old.views, old.account), (2, None));
+    assert_eq!(
+        (old.views, old.account, old.width, old.height),
+        (2, None, 0, 0)
+    );
     let job = store.job("job_old").await.unwrap().unwrap();
     assert_eq!((job.error_code, job.last_death), (None, None));
     let retry = NewJob {

@@ -9,6 +9,8 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+pub use crate::core::resolution::Resolution;
+
 /// Which measurement the photometric loss uses (METHOD.md §1).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[cfg_attr(feature = "openapi", derive(utoipa::ToSchema))]
@@ -104,6 +106,11 @@ pub struct TrainConfig {
         default_value = "off"
     )]
     pub fresnel_irradiance: bool,
+    /// Resolution training works at: `auto` (the engine's choice: views of at most 100,000 pixels
+    /// on the host engines, 2,000,000 on a GPU, shrunk by a whole factor), `full`, a longest side
+    /// in pixels (`512`) or a downscale factor (`/4`).
+    #[arg(long, default_value_t = TrainConfig::default().resolution)]
+    pub resolution: Resolution,
 
     /// End of the plain-2DGS stage, as a fraction of `iterations` (the paper's 3,000 / 15,000).
     #[arg(long, default_value_t = TrainConfig::default().geometry_stage_end)]
@@ -229,6 +236,7 @@ impl Default for TrainConfig {
             seed: 0,
             gridmap: true,
             fresnel_irradiance: false,
+            resolution: Resolution::Auto,
             geometry_stage_end: 0.2,
             material_stage_end: 1.0 / 3.0,
             initial_surfels: 20_000,
@@ -319,6 +327,9 @@ impl TrainConfig {
         }
         if self.envmap_prefilter_interval == 0 {
             return bad("envmap_prefilter_interval", "must be at least 1");
+        }
+        if let Some(problem) = self.resolution.problem() {
+            return bad("resolution", &problem);
         }
         if !(4..=1024).contains(&self.envmap_resolution) {
             return bad("envmap_resolution", "must be in 4..=1024");

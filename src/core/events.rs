@@ -29,6 +29,9 @@ pub enum TrainEvent {
         train_views: usize,
         test_views: usize,
         resumed_from: Option<u32>,
+        /// The views' size as trained, e.g. `306×256 (1224×1024 ÷ 4)`.
+        #[serde(default)]
+        resolution: String,
     },
     /// One optimization step finished (emitted every few steps, not every one).
     Step {

@@ -19,6 +19,7 @@ pub mod metrics;
 pub mod optim;
 pub mod raster;
 pub mod render;
+pub mod resolution;
 pub mod shading;
 pub mod step;
 pub mod surfels;

@@ -2,7 +2,8 @@
 //!
 //! ```text
 //! MODEL/
-//!   model.json        mode, world up, learned polarizer angles, training time, surfel count
+//!   model.json        mode, world up, learned polarizer angles, training time, surfel count,
+//!                     the working resolution
 //!   config.json       the resolved training configuration
 //!   surfels.ply       surfels (3DGS-viewer properties + albedo, roughness, IoR)
 //!   envmap.exr        the learned environment, lat-long linear HDR (CAPTURE_FORMAT.md §5)
@@ -65,6 +66,39 @@ pub struct ModelInfo {
     pub train_seconds: f64,
     pub num_surfels: usize,
     pub backend: String,
+    /// The resolution it was trained at (absent in models written before it was recorded: the
+    /// capture's full resolution).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub working_resolution: Option<WorkingResolution>,
+}
+
+/// The size of the views a model was trained on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct WorkingResolution {
+    /// The whole factor the capture's views were shrunk by (1: full resolution).
+    pub downscale: u32,
+    pub width: u32,
+    pub height: u32,
+    /// The capture's views before shrinking.
+    pub full_width: u32,
+    pub full_height: u32,
+}
+
+impl WorkingResolution {
+    /// What `capture` was loaded at.
+    pub fn of(capture: &crate::io::capture::Capture) -> Self {
+        let (width, height) = capture
+            .views
+            .first()
+            .map_or((0, 0), |v| (v.camera.width, v.camera.height));
+        WorkingResolution {
+            downscale: capture.downscale,
+            width,
+            height,
+            full_width: capture.full_size.0,
+            full_height: capture.full_size.1,
+        }
+    }
 }
 
 /// A trained reconstruction.

@@ -15,6 +15,7 @@ use crate::core::config::BackendChoice;
 use crate::core::raster::cpu::CpuBackend;
 use crate::core::raster::fast::FastBackend;
 use crate::core::raster::Backend;
+use crate::core::resolution::Resolution;
 use crate::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuError, GpuOptions};
 
 /// The engine a run computes on: each implements the rasterizer interface [`Backend`] (which
@@ -34,6 +35,18 @@ impl Engine {
         match self {
             Engine::Gpu(gpu) => Some(gpu),
             Engine::Cpu(_) | Engine::Fast(_) => None,
+        }
+    }
+
+    /// Pixels a view may have at the `auto` working resolution: the device's budget on a
+    /// hardware GPU, the host's on the host engines and on software adapters (lavapipe runs on
+    /// the same cores).
+    pub fn pixel_budget(&self) -> u64 {
+        match self {
+            Engine::Gpu(gpu) if !gpu.context().adapter_summary().software => {
+                Resolution::DEVICE_PIXEL_BUDGET
+            }
+            _ => Resolution::HOST_PIXEL_BUDGET,
         }
     }
 }

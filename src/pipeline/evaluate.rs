@@ -13,7 +13,7 @@ use thiserror::Error;
 use crate::core::metrics::{self, MetricsError};
 use crate::core::render::{RenderError, RenderedView, Scene};
 use crate::formats::image_io::{self, ImageError};
-use crate::io::capture::{Capture, Measurement, PolarizerAngle, View};
+use crate::io::capture::{resample, Capture, Measurement, PolarizerAngle, View};
 
 /// The JSON printed by `phygap eval` (keys fixed by the CLI contract).
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
@@ -73,7 +73,7 @@ pub fn relight_metrics(
             view: view.name.clone(),
             source,
         };
-        let target = read_f64(path, 3)?;
+        let target = read_f64(path, 3, capture, Truth::Radiance)?;
         let rendered = relit.render(&view.camera)?;
         let pred = rendered.premultiplied(&rendered.shaded.s0);
         let g = rendered.gbuffers();
@@ -120,14 +120,46 @@ impl Means {
     }
 }
 
-fn read_f64(path: &Path, channels: usize) -> Result<Vec<f64>, ImageError> {
+/// What a ground-truth file holds, which decides how it is shrunk to a working resolution.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Truth {
+    /// Radiance (Stokes, relit S0): block means, as the views themselves.
+    Radiance,
+    /// A G-buffer, zero on the background: means over the object's pixels.
+    GBuffer,
+    /// Unit normals: means over the object's pixels, made unit again.
+    Normal,
+}
+
+/// A ground-truth image of a view of `capture` as `channels` f64 per pixel, at the capture's
+/// working resolution (shrunk by `capture.downscale` as its views were).
+fn read_f64(
+    path: &Path,
+    channels: usize,
+    capture: &Capture,
+    truth: Truth,
+) -> Result<Vec<f64>, ImageError> {
     let (img, _) = image_io::read_image(path)?;
     let img = if channels == 3 {
         img.to_rgb()
     } else {
         img.channel(0)
     };
-    Ok(img.data.iter().map(|&v| f64::from(v)).collect())
+    let k = capture.downscale as usize;
+    let img = match truth {
+        Truth::Radiance => resample::downscale_image(&img, k),
+        Truth::GBuffer | Truth::Normal => resample::downscale_gbuffer(&img, k),
+    };
+    let mut values: Vec<f64> = img.data.iter().map(|&v| f64::from(v)).collect();
+    if truth == Truth::Normal && k > 1 {
+        for n in values.chunks_exact_mut(3) {
+            let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            if length > 0.0 {
+                n.iter_mut().for_each(|v| *v /= length);
+            }
+        }
+    }
+    Ok(values)
 }
 
 fn to_f64(img: &crate::formats::image_io::Image) -> Vec<f64> {
@@ -135,14 +167,18 @@ fn to_f64(img: &crate::formats::image_io::Image) -> Vec<f64> {
 }
 
 /// Ground-truth Stokes of a test view: from its measurement, else from `s*_path` ground truth.
-fn ground_truth_stokes(view: &View) -> Result<Option<[Vec<f64>; 3]>, ImageError> {
+fn ground_truth_stokes(
+    view: &View,
+    capture: &Capture,
+) -> Result<Option<[Vec<f64>; 3]>, ImageError> {
     if let Measurement::Stokes { s0, s1, s2 } = &view.measurement {
         return Ok(Some([to_f64(s0), to_f64(s1), to_f64(s2)]));
     }
     let gt = &view.ground_truth;
     match (&gt.s0, &gt.s1, &gt.s2) {
         (Some(a), Some(b), Some(c)) => {
-            Ok(Some([read_f64(a, 3)?, read_f64(b, 3)?, read_f64(c, 3)?]))
+            let read = |path| read_f64(path, 3, capture, Truth::Radiance);
+            Ok(Some([read(a)?, read(b)?, read(c)?]))
         }
         _ => Ok(None),
     }
@@ -204,7 +240,7 @@ pub fn evaluate(
         let mask_pixels: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();
         let mask = Some(mask_pixels.as_slice());
         let s = &rendered.shaded;
-        let gt_stokes = ground_truth_stokes(view)?;
+        let gt_stokes = ground_truth_stokes(view, capture)?;
         let (pred0, target0) = match &gt_stokes {
             Some([t0, _, _]) => (rendered.premultiplied(&s.s0), t0.clone()),
             None => image_comparison(view, &rendered, angles),
@@ -243,7 +279,8 @@ pub fn evaluate(
         }
         let gt = &view.ground_truth;
         if let Some(path) = &gt.normal {
-            let errors = metrics::normal_errors(g.normal.as_flattened(), &read_f64(path, 3)?, mask);
+            let truth = read_f64(path, 3, capture, Truth::Normal)?;
+            let errors = metrics::normal_errors(g.normal.as_flattened(), &truth, mask);
             if let Ok(e) = errors {
                 means.add("normal_mae_deg", Some(e.mae_degrees));
                 means.add("normal_cos_dist", Some(e.cosine_distance));
@@ -253,12 +290,13 @@ pub fn evaluate(
             let pred = g.albedo.as_flattened();
             means.add(
                 "albedo_mae",
-                metrics::masked_mae(pred, &read_f64(path, 3)?, 3, mask).ok(),
+                metrics::masked_mae(pred, &read_f64(path, 3, capture, Truth::GBuffer)?, 3, mask)
+                    .ok(),
             );
         }
         if let Some(path) = &gt.roughness {
             // Ground truth stores GGX α; our roughness r has α = r².
-            let gt_r: Vec<f64> = read_f64(path, 1)?
+            let gt_r: Vec<f64> = read_f64(path, 1, capture, Truth::GBuffer)?
                 .iter()
                 .map(|a| a.max(0.0).sqrt())
                 .collect();
@@ -270,7 +308,13 @@ pub fn evaluate(
         if let Some(path) = &gt.ior {
             means.add(
                 "ior_mae",
-                metrics::masked_mae(&g.ior, &read_f64(path, 1)?, 1, mask).ok(),
+                metrics::masked_mae(
+                    &g.ior,
+                    &read_f64(path, 1, capture, Truth::GBuffer)?,
+                    1,
+                    mask,
+                )
+                .ok(),
             );
         }
     }

@@ -130,6 +130,7 @@ mod tests {
                 train_seconds: 0.0,
                 num_surfels: surfels.len(),
                 backend: "cpu".into(),
+                working_resolution: None,
             },
             config,
             surfels,

@@ -83,8 +83,10 @@ pub struct SynthOptions {
     pub shape: Shape,
     /// Number of views; every 8th (index % 8 == 0) is a test view.
     pub views: usize,
-    /// Square image size in pixels.
+    /// Image width in pixels (and height, unless `height` is given).
     pub size: u32,
+    /// Image height in pixels, for views that are not square (the width is `size`).
+    pub height: Option<u32>,
     /// Linear albedo, GGX roughness r (α = r²) and IoR of the material.
     pub albedo: DVec3,
     pub roughness: f64,
@@ -98,6 +100,7 @@ impl Default for SynthOptions {
             shape: Shape::Sphere,
             views: 24,
             size: 96,
+            height: None,
             albedo: DVec3::new(0.55, 0.2, 0.08),
             roughness: 0.3,
             ior: 1.5,
@@ -223,8 +226,9 @@ pub fn procedural_sky(height: usize, sun_dir: DVec3, sun_radiance: f64) -> Image
     })
 }
 
-/// The cameras of a synthetic capture: a Fibonacci spiral at distance 4, elevations −10°…70°.
-pub fn spiral_cameras(views: usize, size: u32) -> Vec<Camera> {
+/// The cameras of a synthetic capture: a Fibonacci spiral at distance 4, elevations −10°…70°,
+/// `width × height` views with a horizontal field of view of 40°.
+pub fn spiral_cameras(views: usize, width: u32, height: u32) -> Vec<Camera> {
     let golden = PI * (3.0 - 5f64.sqrt());
     (0..views)
         .map(|k| {
@@ -237,7 +241,14 @@ pub fn spiral_cameras(views: usize, size: u32) -> Vec<Camera> {
                     elevation.cos() * azimuth.sin(),
                     elevation.sin(),
                 );
-            Camera::look_at(size, size, 40f64.to_radians(), eye, DVec3::ZERO, DVec3::Z)
+            Camera::look_at(
+                width,
+                height,
+                40f64.to_radians(),
+                eye,
+                DVec3::ZERO,
+                DVec3::Z,
+            )
         })
         .collect()
 }
@@ -310,9 +321,18 @@ fn render_view(
 /// masks, ground-truth buffers (`normal`, `depth`, `albedo`, `roughness` as GGX α, `ior`), the
 /// environment maps and, for test views, S0 relit under a second map.
 pub fn synth(out_dir: &Path, options: &SynthOptions) -> Result<(), SynthError> {
-    if options.views < 3 || options.size < 8 || options.size > 4096 {
+    let height = options.height.unwrap_or(options.size);
+    let sizes = [options.size, height];
+    if options.views < 3 || sizes.iter().any(|s| !(8..=4096).contains(s)) {
         return Err(SynthError::Invalid(
-            "need at least 3 views and an image size in 8..=4096".into(),
+            "need at least 3 views and image sides in 8..=4096".into(),
+        ));
+    }
+    if 2 * height < options.size || height > options.size {
+        return Err(SynthError::Invalid(
+            "the height must lie between half the width and the width (the object fits the \
+             view's narrower side)"
+                .into(),
         ));
     }
     let _span = tracing::info_span!("synth", views = options.views, size = options.size).entered();
@@ -351,7 +371,7 @@ pub fn synth(out_dir: &Path, options: &SynthOptions) -> Result<(), SynthError> {
     let env = prepare(&sky)?;
     let relight_env = prepare(&relight_sky)?;
 
-    let cameras = spiral_cameras(options.views, options.size);
+    let cameras = spiral_cameras(options.views, options.size, height);
     let rendered: Vec<Result<serde_json::Value, SynthError>> = cameras
         .par_iter()
         .enumerate()
@@ -475,7 +495,7 @@ mod tests {
 
     #[test]
     fn spiral_cameras_look_at_the_origin() {
-        for cam in spiral_cameras(10, 32) {
+        for cam in spiral_cameras(10, 32, 32) {
             let to_centre = (-cam.origin()).normalize();
             assert!(cam.forward().abs_diff_eq(to_centre, 1e-12));
             assert!((cam.origin().length() - 4.0).abs() < 1e-12);

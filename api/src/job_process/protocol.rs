@@ -140,6 +140,8 @@ mod tests {
                     views: 3,
                     kinds: vec!["stokes".into()],
                     warnings: vec![],
+                    width: 8,
+                    height: 6,
                 },
             }),
             Message::Error(PipelineError::InvalidCapture {

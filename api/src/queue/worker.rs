@@ -198,12 +198,14 @@ pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
             iterations,
             resumed_from,
             backend,
+            resolution,
             ..
         } => {
             progress.iterations = *iterations;
             progress.iteration = resumed_from.unwrap_or(0);
             progress.resumed_from = *resumed_from;
             progress.backend = Some(backend.clone());
+            progress.resolution = Some(resolution.clone()).filter(|r| !r.is_empty());
         }
         TrainEvent::Step {
             iteration,
@@ -543,8 +545,10 @@ mod tests {
                 train_views: 7,
                 test_views: 1,
                 resumed_from: Some(100),
+                resolution: "306×256 (1224×1024 ÷ 4)".into(),
             },
         );
+        assert_eq!(p.resolution.as_deref(), Some("306×256 (1224×1024 ÷ 4)"));
         assert_eq!(
             (p.iteration, p.iterations, p.resumed_from),
             (100, 300, Some(100))

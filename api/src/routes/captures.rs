@@ -31,6 +31,9 @@ pub struct CaptureView {
     id: String,
     /// Views in transforms.json.
     views: usize,
+    /// The size of its views, pixels (0 for captures uploaded before it was recorded).
+    width: u32,
+    height: u32,
     /// The kinds of measurement its views hold: `stokes`, `polarizer4`, `partial`, `rgb`.
     kinds: Vec<String>,
     /// What the loader noticed but accepted (e.g. views without masks).
@@ -54,6 +57,8 @@ impl From<CaptureRecord> for CaptureView {
         CaptureView {
             id: c.id,
             views: c.views,
+            width: c.width,
+            height: c.height,
             kinds: c.kinds,
             warnings: c.warnings,
             size_bytes: c.size_bytes,
@@ -243,6 +248,8 @@ fn extract_and_file(
     let record = CaptureRecord {
         id: id.to_owned(),
         views: info.views,
+        width: info.width,
+        height: info.height,
         kinds: info.kinds,
         warnings: info.warnings,
         size_bytes,

@@ -84,6 +84,10 @@ pub struct JobView {
     /// could not be extracted, the previous one kept); null if none.
     #[schema(required = true)]
     warning: Option<String>,
+    /// The size of the views the latest run trains on, and how it came about (the config's
+    /// `resolution`), e.g. "306×256 (1224×1024 ÷ 4)"; null before training starts.
+    #[schema(required = true)]
+    resolution: Option<String>,
     /// A cancel was asked for and the running job has not stopped yet.
     cancel_requested: bool,
     /// Training jobs only: the training configuration, defaults filled in.
@@ -136,6 +140,7 @@ impl From<JobRecord> for JobView {
             resumed_from: job.progress.resumed_from,
             backend: job.progress.backend,
             warning: job.progress.warning,
+            resolution: job.progress.resolution,
             cancel_requested: job.cancel_requested,
             config,
         }
@@ -222,8 +227,9 @@ pub async fn load_job(state: &AppState, caller: &Caller, id: &str) -> Result<Job
             body = ErrorBody),
         (status = UNPROCESSABLE_ENTITY, description = "Unknown or missing request fields \
             (invalid_request), an invalid config, e.g. a size over its bound (invalid_config), \
-            an unknown capture (unknown_capture), a reused idempotency key \
-            (idempotency_key_reused)", body = ErrorBody),
+            an unknown capture (unknown_capture), a job whose estimated memory at its working \
+            resolution exceeds the job memory limit (capture_too_large, naming a resolution that \
+            fits), a reused idempotency key (idempotency_key_reused)", body = ErrorBody),
     )
 )]
 pub async fn submit(
@@ -249,17 +255,22 @@ pub async fn submit(
         .config
         .validate()
         .map_err(|e| ApiError::unprocessable("invalid_config", e.to_string()))?;
-    let visible = state
+    let capture = state
         .store
         .capture(&request.capture_id)
         .await?
-        .is_some_and(|c| caller.may_see(c.account.as_deref()));
-    if !visible {
-        return Err(ApiError::unprocessable(
-            "unknown_capture",
-            format!("capture `{}` does not exist", request.capture_id),
-        ));
-    }
+        .filter(|c| caller.may_see(c.account.as_deref()))
+        .ok_or_else(|| {
+            ApiError::unprocessable(
+                "unknown_capture",
+                format!("capture `{}` does not exist", request.capture_id),
+            )
+        })?;
+    crate::admission::check(
+        &capture,
+        &request.config,
+        state.config.limits.job.memory_bytes,
+    )?;
     // The store keeps keys per account (the job's), so one account cannot reach another's
     // jobs through them.
     let key = idempotency_key(&headers)?;

@@ -123,6 +123,9 @@ impl JobSpec {
 pub struct CaptureRecord {
     pub id: String,
     pub views: usize,
+    /// The size of its views (0 × 0 for captures recorded before it was).
+    pub width: u32,
+    pub height: u32,
     pub kinds: Vec<String>,
     pub warnings: Vec<String>,
     pub size_bytes: u64,
@@ -151,6 +154,9 @@ pub struct Progress {
     /// The run's latest warning (e.g. a GridMap mesh that could not be extracted), if any.
     #[serde(default)]
     pub warning: Option<String>,
+    /// The size of the views the latest run trains on, e.g. `306×256 (1224×1024 ÷ 4)`.
+    #[serde(default)]
+    pub resolution: Option<String>,
 }
 
 /// A job as stored.
@@ -350,6 +356,8 @@ pub(crate) fn to_json<T: Serialize>(value: &T) -> String {
 pub(crate) struct RawCapture {
     pub id: String,
     pub views: i64,
+    pub width: i64,
+    pub height: i64,
     pub kinds: String,
     pub warnings: String,
     pub size_bytes: i64,
@@ -365,6 +373,8 @@ impl RawCapture {
             warnings: serde_json::from_str(&self.warnings)
                 .map_err(|e| corrupt(&id, "warnings", e))?,
             views: self.views.max(0) as usize,
+            width: u32::try_from(self.width).unwrap_or(0),
+            height: u32::try_from(self.height).unwrap_or(0),
             size_bytes: self.size_bytes.max(0) as u64,
             created_at: self.created_at,
             account: self.account,

@@ -29,7 +29,7 @@ const MIGRATIONS: &[(i32, &str)] = &[
     ),
     (
         3,
-        include_str!("../../migrations/postgres/0003_failures_and_request_keys.sql"),
+        include_str!("../../migrations/postgres/0003_failure_codes_request_keys_view_sizes.sql"),
     ),
 ];
 
@@ -199,8 +199,9 @@ impl Store for PostgresStore {
         let client = self.pool.get().await?;
         client
             .execute(
-                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at, account)
-                 VALUES ($1, $2, $3, $4, $5, $6, $7)",
+                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at, account,
+                                       width, height)
+                 VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9)",
                 &[
                     &capture.id,
                     &(capture.views as i64),
@@ -209,6 +210,8 @@ impl Store for PostgresStore {
                     &(capture.size_bytes as i64),
                     &capture.created_at,
                     &capture.account,
+                    &i64::from(capture.width),
+                    &i64::from(capture.height),
                 ],
             )
             .await?;
@@ -219,7 +222,7 @@ impl Store for PostgresStore {
         let client = self.pool.get().await?;
         let Some(row) = client
             .query_opt(
-                "SELECT id, views, kinds, warnings, size_bytes, created_at, account
+                "SELECT id, views, kinds, warnings, size_bytes, created_at, account, width, height
                  FROM captures WHERE id = $1",
                 &[&id],
             )
@@ -235,6 +238,8 @@ impl Store for PostgresStore {
             size_bytes: row.try_get(4)?,
             created_at: row.try_get(5)?,
             account: row.try_get(6)?,
+            width: row.try_get(7)?,
+            height: row.try_get(8)?,
         }
         .parse()
         .map(Some)

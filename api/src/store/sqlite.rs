@@ -61,6 +61,8 @@ const ADDED_COLUMNS: &[(&str, &str)] = &[
     ("jobs", "error_code TEXT"),
     ("jobs", "last_death TEXT"),
     ("jobs", "request_key TEXT"),
+    ("captures", "width INTEGER NOT NULL DEFAULT 0"),
+    ("captures", "height INTEGER NOT NULL DEFAULT 0"),
 ];
 
 /// Moves keys of files written by the first release into `request_key`, dropping the
@@ -147,6 +149,11 @@ impl SqliteStore {
     }
 }
 
+/// The columns [`capture_row`] reads, in order.
+const CAPTURE_COLUMNS: &str =
+    "id, views, kinds, warnings, size_bytes, created_at, account, width, \
+                               height";
+
 fn capture_row(row: &Row<'_>) -> rusqlite::Result<RawCapture> {
     Ok(RawCapture {
         id: row.get(0)?,
@@ -156,6 +163,8 @@ fn capture_row(row: &Row<'_>) -> rusqlite::Result<RawCapture> {
         size_bytes: row.get(4)?,
         created_at: row.get(5)?,
         account: row.get(6)?,
+        width: row.get(7)?,
+        height: row.get(8)?,
     })
 }
 
@@ -171,8 +180,9 @@ impl Store for SqliteStore {
     async fn insert_capture(&self, capture: &CaptureRecord) -> Result<(), StoreError> {
         self.with(|c| {
             c.execute(
-                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at, account)
-                 VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)",
+                "INSERT INTO captures (id, views, kinds, warnings, size_bytes, created_at, account,
+                                       width, height)
+                 VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)",
                 params![
                     capture.id,
                     capture.views as i64,
@@ -181,6 +191,8 @@ impl Store for SqliteStore {
                     capture.size_bytes as i64,
                     capture.created_at,
                     capture.account,
+                    capture.width,
+                    capture.height,
                 ],
             )?;
             Ok(())
@@ -190,8 +202,7 @@ impl Store for SqliteStore {
     async fn capture(&self, id: &str) -> Result<Option<CaptureRecord>, StoreError> {
         let row = self.with(|c| {
             Ok(c.query_row(
-                "SELECT id, views, kinds, warnings, size_bytes, created_at, account
-                 FROM captures WHERE id = ?1",
+                &format!("SELECT {CAPTURE_COLUMNS} FROM captures WHERE id = ?1"),
                 params![id],
                 capture_row,
             )

@@ -249,7 +249,9 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 StageArg::Geometry => BenchStage::Geometry,
                 StageArg::Polar => BenchStage::Polar,
             };
-            let capture = phygap::io::capture::load(&a.capture)?;
+            let limits = phygap::io::capture::CaptureLimits::DEFAULT;
+            let capture =
+                phygap::pipeline::train::load_capture(&a.capture, &config, &backend, &limits)?;
             let t = bench_train(&backend, &capture, &config, stage)?;
             if a.json {
                 println!("{}", serde_json::to_string_pretty(&t)?);

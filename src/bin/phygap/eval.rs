@@ -1,5 +1,6 @@
-//! `phygap eval MODEL CAPTURE [--json] [--relight-envmap FILE] [--gt-mesh FILE]`: metrics of a
-//! trained model on the capture's test views; with a relighting map, the relit S0 against the
+//! `phygap eval MODEL CAPTURE [--json] [--relight-envmap FILE] [--gt-mesh FILE] [--resolution
+//! working|full]`: metrics of a trained model on the capture's test views (at the resolution it
+//! was trained at, or the capture's own); with a relighting map, the relit S0 against the
 //! views' `relight_s0` ground truth; with a ground-truth mesh, the Chamfer-L1 of the model's mesh.
 
 use std::path::PathBuf;
@@ -7,6 +8,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
+use phygap::core::resolution::Resolution;
 use phygap::io::capture;
 use phygap::io::model::Model;
 use phygap::pipeline::evaluate::EvalReport;
@@ -30,11 +32,30 @@ pub struct EvalArgs {
     pub gt_mesh: Option<PathBuf>,
     #[arg(long, help = crate::GRIDMAP_OVERRIDE_HELP)]
     pub gridmap: Option<crate::Switch>,
+    /// Evaluate at the resolution the model was trained at (`working`: the capture's views
+    /// shrunk as they were for training) or at the capture's own (`full`).
+    #[arg(long, value_enum, default_value = "working")]
+    pub resolution: EvalResolution,
+}
+
+/// The resolution `phygap eval` renders and compares at.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EvalResolution {
+    Working,
+    Full,
 }
 
 pub fn run(args: &EvalArgs) -> Result<()> {
-    let capture = capture::load(&args.capture)?;
     let mut model = Model::load(&args.model)?;
+    let resolution = match (args.resolution, model.info.working_resolution) {
+        (EvalResolution::Working, Some(trained)) => Resolution::Downscale(trained.downscale),
+        _ => Resolution::Full,
+    };
+    let options = capture::LoadOptions {
+        resolution,
+        ..capture::LoadOptions::default()
+    };
+    let capture = capture::load_with(&args.capture, &options)?;
     crate::override_gridmap(&mut model, args.gridmap);
     let truth = GroundTruth {
         relight_envmap: args.relight_envmap.clone(),

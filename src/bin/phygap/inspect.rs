@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
+use phygap::core::resolution::Resolution;
 use phygap::io::capture::{self, CaptureSummary};
 
 /// Arguments of `phygap inspect`.
@@ -43,6 +44,18 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
         s.width,
         s.height,
     );
+    let working = |budget| {
+        let k = Resolution::Auto.factor(s.width.max(1), s.height.max(1), budget);
+        match k {
+            1 => format!("{}×{}", s.width, s.height),
+            k => format!("{}×{} (÷ {k})", s.width / k, s.height / k),
+        }
+    };
+    text.push_str(&format!(
+        "training    at {} on the host engines, {} on a GPU (--resolution auto)\n",
+        working(Resolution::HOST_PIXEL_BUDGET),
+        working(Resolution::DEVICE_PIXEL_BUDGET),
+    ));
     if !s.polarizer_groups.is_empty() {
         text.push_str(&format!(
             "polarizer groups  {}\n",

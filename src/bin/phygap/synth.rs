@@ -26,9 +26,10 @@ pub struct SynthArgs {
     /// Number of views (every 8th is a test view).
     #[arg(long, default_value_t = 24)]
     pub views: usize,
-    /// Image width and height in pixels.
-    #[arg(long, default_value_t = 96)]
-    pub size: u32,
+    /// Image size in pixels: `N` (square) or `WxH` (e.g. `1224x1024`, a polarization camera's
+    /// half-resolution views).
+    #[arg(long, default_value = "96", value_parser = parse_size)]
+    pub size: (u32, u32),
     /// Write raw mosaic frames of this sensor instead of Stokes images (the full-Stokes rendering
     /// goes to `OUT/reference`); the full count range is the brightest S0.
     #[arg(long, value_enum)]
@@ -38,11 +39,26 @@ pub struct SynthArgs {
     pub bit_depth: u32,
 }
 
+/// `N` or `WxH`.
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let side = |s: &str| {
+        s.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("`{text}`: expected N or WxH"))
+    };
+    match text.split_once(['x', 'X', '×']) {
+        Some((w, h)) => Ok((side(w)?, side(h)?)),
+        None => side(text).map(|n| (n, n)),
+    }
+}
+
 pub fn run(args: &SynthArgs) -> Result<()> {
+    let (width, height) = args.size;
     let options = SynthOptions {
         shape: args.shape,
         views: args.views,
-        size: args.size,
+        size: width,
+        height: Some(height),
         texture: args.texture,
         ..SynthOptions::default()
     };
@@ -70,8 +86,8 @@ pub fn run(args: &SynthArgs) -> Result<()> {
             args.views,
             args.bit_depth,
             sensor.name(),
-            args.size,
-            args.size,
+            width,
+            height,
             args.shape,
             args.out.display(),
             reference.display()
@@ -82,8 +98,8 @@ pub fn run(args: &SynthArgs) -> Result<()> {
     println!(
         "wrote a {}-view {}×{} full-Stokes capture of a {:?} to {}",
         args.views,
-        args.size,
-        args.size,
+        width,
+        height,
         args.shape,
         args.out.display()
     );

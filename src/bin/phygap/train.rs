@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use phygap::core::config::TrainConfig;
 use phygap::core::events::TrainEvent;
-use phygap::io::capture;
+use phygap::io::capture::CaptureLimits;
 use phygap::pipeline::train::{self, TrainOutcome};
 
 #[derive(Args, Debug)]
@@ -56,7 +56,8 @@ impl TrainArgs {
 
 pub fn run(args: &TrainArgs, matches: &clap::ArgMatches) -> Result<()> {
     let config = args.config(matches)?;
-    let capture = capture::load(&args.capture)?;
+    let engine = train::engine_for(&config)?;
+    let capture = train::load_capture(&args.capture, &config, &engine, &CaptureLimits::DEFAULT)?;
     for warning in &capture.warnings {
         eprintln!("warning: {warning}");
     }
@@ -68,7 +69,8 @@ pub fn run(args: &TrainArgs, matches: &clap::ArgMatches) -> Result<()> {
     }
     let bar = progress_bar(config.iterations);
     let mut on_event = |event: &TrainEvent| show_event(&bar, event);
-    let outcome = train::train(
+    let outcome = train::train_on(
+        &engine,
         &capture,
         &args.out,
         &config,
@@ -114,10 +116,12 @@ pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
             backend,
             train_views,
             resumed_from,
+            resolution,
             ..
         } => {
             bar.println(format!(
-                "training: mode {mode}, backend {backend}, {train_views} training views{}",
+                "training: mode {mode}, backend {backend}, {train_views} training views of \
+                 {resolution}{}",
                 resumed_from.map_or(String::new(), |it| format!(", resumed at {it}"))
             ));
             bar.set_position(u64::from(resumed_from.unwrap_or(0)));

@@ -104,17 +104,27 @@ impl CaptureLimits {
         Ok(())
     }
 
-    /// [`CaptureLimits::check`] for parsed frames: a raw frame decodes its sensor's pixels.
-    pub(crate) fn check_frames(&self, frames: &[FrameSpec]) -> Result<(), LimitExceeded> {
-        let size = |frame: &FrameSpec| {
+    /// [`CaptureLimits::check`] for parsed frames to be shrunk by `downscale`: a raw frame
+    /// decodes its sensor's pixels; the views hold their shrunk size.
+    pub(crate) fn check_frames(
+        &self,
+        frames: &[FrameSpec],
+        downscale: u32,
+    ) -> Result<(), LimitExceeded> {
+        let full = |frame: &FrameSpec| {
             (
                 u64::from(frame.camera.width),
                 u64::from(frame.camera.height),
             )
         };
+        let size = |frame: &FrameSpec| {
+            let (width, height) = full(frame);
+            let k = u64::from(downscale.max(1));
+            (width / k, height / k)
+        };
         let file_size = |frame: &FrameSpec| match &frame.source {
             Source::Raw(raw) => (raw.sensor_size.0 as u64, raw.sensor_size.1 as u64),
-            _ => size(frame),
+            _ => full(frame),
         };
         self.check(
             frames.len(),

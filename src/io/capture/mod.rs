@@ -18,6 +18,7 @@ mod lens;
 mod limits;
 pub mod mosaic;
 mod raw;
+pub mod resample;
 pub mod simulate;
 
 #[cfg(test)]
@@ -42,6 +43,8 @@ pub use dolp::DolpStats;
 pub use error::{CaptureError, Problem};
 pub use hull::{Bounds, VisualHull};
 pub use limits::{CaptureLimits, LimitExceeded};
+
+use crate::core::resolution::Resolution;
 pub use raw::RawReport;
 
 /// Training or held-out view.
@@ -117,6 +120,32 @@ pub struct Capture {
     pub raw: Option<RawReport>,
     /// The COLMAP model the capture was read from; `None` for a `transforms.json` capture.
     pub colmap: Option<ColmapReport>,
+    /// The whole factor the views were shrunk by at load (1: as the files are;
+    /// [`resample`]). Ground-truth files named by the views are shrunk by it when read.
+    pub downscale: u32,
+    /// The views' size before shrinking.
+    pub full_size: (u32, u32),
+}
+
+/// How a capture is loaded: its limits, and the size its views are loaded at.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LoadOptions {
+    pub limits: CaptureLimits,
+    /// The working resolution ([`Resolution::Full`]: the files' size).
+    pub resolution: Resolution,
+    /// Pixels a view may have under [`Resolution::Auto`] (the engine's budget).
+    pub pixel_budget: u64,
+}
+
+impl Default for LoadOptions {
+    /// [`CaptureLimits::DEFAULT`], full resolution.
+    fn default() -> Self {
+        LoadOptions {
+            limits: CaptureLimits::DEFAULT,
+            resolution: Resolution::Full,
+            pixel_budget: Resolution::HOST_PIXEL_BUDGET,
+        }
+    }
 }
 
 /// What `phygap inspect` prints.
@@ -164,14 +193,27 @@ const CLIPPED_WARNING_FRACTION: f64 = 1e-3;
 /// to the JSON file's folder. A folder without `transforms.json` but with a COLMAP model
 /// (`sparse/0/`) is read by [`colmap::load`].
 pub fn load(path: &Path) -> Result<Capture, CaptureError> {
-    load_within(path, &CaptureLimits::DEFAULT)
+    load_with(path, &LoadOptions::default())
 }
 
 /// [`load`] with the given limits: a capture declaring more views, pixels or decoded bytes is
 /// [`CaptureError::TooLarge`] before any image is read.
 pub fn load_within(path: &Path, limits: &CaptureLimits) -> Result<Capture, CaptureError> {
+    load_with(
+        path,
+        &LoadOptions {
+            limits: *limits,
+            ..LoadOptions::default()
+        },
+    )
+}
+
+/// [`load`] with the given limits and working resolution: each view is decoded at its files'
+/// size and shrunk at once ([`resample`]), so the capture holds its views at the working size
+/// only; the limits' decoded bytes count them at that size.
+pub fn load_with(path: &Path, options: &LoadOptions) -> Result<Capture, CaptureError> {
     if let Some(model) = colmap::find_model(path) {
-        return colmap::load(path, &model, limits);
+        return colmap::load(path, &model, options);
     }
     let json_path = transforms_path(path);
     let _span = tracing::info_span!("load_capture", path = %json_path.display()).entered();
@@ -182,7 +224,7 @@ pub fn load_within(path: &Path, limits: &CaptureLimits) -> Result<Capture, Captu
         .unwrap_or(Path::new("."));
     let root = folder.canonicalize().unwrap_or_else(|_| folder.to_owned());
     let (distortions, lens_problems) = lens::frame_distortions(&document);
-    let mut capture = load_document(&json_path, root, &document, lens_problems, limits)?;
+    let mut capture = load_document(&json_path, root, &document, lens_problems, options)?;
     lens::undistort_views(&mut capture, &distortions);
     Ok(capture)
 }
@@ -194,7 +236,7 @@ pub(crate) fn load_document(
     root: PathBuf,
     document: &serde_json::Value,
     earlier: Vec<Problem>,
-    limits: &CaptureLimits,
+    options: &LoadOptions,
 ) -> Result<Capture, CaptureError> {
     let frame::Parsed {
         header,
@@ -202,8 +244,16 @@ pub(crate) fn load_document(
         mut problems,
     } = frame::parse(&root, document);
     problems.splice(0..0, earlier);
-    limits
-        .check_frames(&frames)
+    let full_size = frames
+        .first()
+        .map_or((0, 0), |f| (f.camera.width, f.camera.height));
+    let downscale =
+        options
+            .resolution
+            .factor(full_size.0.max(1), full_size.1.max(1), options.pixel_budget);
+    options
+        .limits
+        .check_frames(&frames, downscale)
         .map_err(|exceeded| CaptureError::TooLarge {
             path: json_path.to_owned(),
             exceeded,
@@ -242,7 +292,12 @@ pub(crate) fn load_document(
         let _span = tracing::info_span!("load_images", frames = frames.len()).entered();
         frames
             .par_iter()
-            .map(|spec| images::load_view(spec, &header))
+            .map(|spec| {
+                images::load_view(spec, &header).map(|loaded| images::LoadedView {
+                    view: resample::downscale_view(loaded.view, downscale),
+                    ..loaded
+                })
+            })
             .collect()
     };
     let mut views = Vec::with_capacity(loaded.len());
@@ -308,6 +363,8 @@ pub(crate) fn load_document(
         points: Vec::new(),
         raw,
         colmap: None,
+        downscale,
+        full_size,
     })
 }
 
@@ -425,6 +482,22 @@ impl Capture {
                 ),
             )],
         })
+    }
+
+    /// The views' size as loaded and how it came about, e.g. `306×256 (1224×1024 ÷ 4)`, or
+    /// `256×256` at full resolution.
+    pub fn working_resolution(&self) -> String {
+        let (width, height) = self
+            .views
+            .first()
+            .map_or((0, 0), |v| (v.camera.width, v.camera.height));
+        match self.downscale {
+            1 => format!("{width}×{height}"),
+            k => format!(
+                "{width}×{height} ({}×{} ÷ {k})",
+                self.full_size.0, self.full_size.1
+            ),
+        }
     }
 
     pub fn train_views(&self) -> impl Iterator<Item = &View> {

@@ -797,3 +797,46 @@ fn implausible_intrinsics_and_poses_are_named() {
         &["frame 1", "`transform_matrix`", "farther than"],
     );
 }
+
+#[test]
+fn captures_load_at_a_working_resolution() {
+    use crate::core::resolution::Resolution;
+    let (fx, doc) = Fixture::stokes(3);
+    std::fs::write(fx.dir.path().join("transforms.json"), doc.to_string()).unwrap();
+    let full = load(fx.dir.path()).unwrap();
+    let at = |resolution, pixel_budget| {
+        let options = LoadOptions {
+            resolution,
+            pixel_budget,
+            ..LoadOptions::default()
+        };
+        load_with(fx.dir.path(), &options).unwrap()
+    };
+    let half = at(Resolution::Downscale(2), 0);
+    assert_eq!((half.downscale, half.full_size), (2, (8, 6)));
+    assert_eq!(half.working_resolution(), "4×3 (8×6 ÷ 2)");
+    assert_eq!(full.working_resolution(), "8×6");
+    for (small, big) in half.views.iter().zip(&full.views) {
+        assert_eq!(small.camera, resample::downscale_camera(&big.camera, 2));
+        let (Measurement::Stokes { s0, .. }, Measurement::Stokes { s0: big_s0, .. }) =
+            (&small.measurement, &big.measurement)
+        else {
+            panic!("Stokes views");
+        };
+        assert_eq!((s0.width, s0.height), (4, 3));
+        for c in 0..3 {
+            let block: f32 = [(2, 2), (3, 2), (2, 3), (3, 3)]
+                .iter()
+                .map(|&(x, y)| big_s0.pixel(x, y)[c])
+                .sum();
+            assert!((s0.pixel(1, 1)[c] - block / 4.0).abs() < 1e-3);
+        }
+        // The object is the left half: the second of four columns is its edge.
+        assert_eq!(small.mask.pixel(1, 0), &[1.0]);
+        assert_eq!(small.mask.pixel(2, 0), &[0.0]);
+    }
+    // `auto` shrinks by the smallest factor within the pixel budget: 48 pixels a view, 12 → ÷2.
+    assert_eq!(at(Resolution::Auto, 12).downscale, 2);
+    assert_eq!(at(Resolution::Auto, 48).downscale, 1);
+    assert_eq!(at(Resolution::LongestSide(3), 0).downscale, 3);
+}

@@ -71,13 +71,14 @@ pub fn bench_quality(
 ) -> Result<QualityRun, QualityError> {
     let _span = tracing::info_span!("bench_quality", iterations = config.iterations).entered();
     let start = Instant::now();
-    let capture = crate::io::capture::load(capture_dir)?;
+    let engine = train::engine_for(config)?;
+    let limits = crate::io::capture::CaptureLimits::DEFAULT;
+    let capture = train::load_capture(capture_dir, config, &engine, &limits)?;
     let mut backend = String::new();
     let mut progress = Vec::new();
     let mut warnings = Vec::new();
     let mut elapsed = 0.0;
     let never = AtomicBool::new(false);
-    let engine = train::engine_for(config)?;
     let outcome = train::train_on(
         &engine,
         &capture,

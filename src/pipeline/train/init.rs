@@ -157,6 +157,8 @@ pub(crate) mod tests {
             points: Vec::new(),
             raw: None,
             colmap: None,
+            downscale: 1,
+            full_size: (64, 64),
         }
     }
 

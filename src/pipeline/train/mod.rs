@@ -261,6 +261,31 @@ pub fn engine_for(config: &TrainConfig) -> Result<Engine, TrainError> {
     Ok(backend::select(config.backend)?)
 }
 
+/// Loads the capture at `path` within `limits` at the working resolution `config` asks for on
+/// `engine` (`auto`: within the engine's pixel budget), ready for [`train_on`].
+pub fn load_capture(
+    path: &Path,
+    config: &TrainConfig,
+    engine: &Engine,
+    limits: &crate::io::capture::CaptureLimits,
+) -> Result<Capture, crate::io::capture::CaptureError> {
+    let options = crate::io::capture::LoadOptions {
+        limits: *limits,
+        resolution: config.resolution,
+        pixel_budget: engine.pixel_budget(),
+    };
+    let capture = crate::io::capture::load_with(path, &options)?;
+    if capture.downscale > 1 {
+        tracing::info!(
+            downscale = capture.downscale,
+            full = ?capture.full_size,
+            "training at a working resolution: {}",
+            capture.working_resolution()
+        );
+    }
+    Ok(capture)
+}
+
 /// [`train`] on a backend the caller opened (`config.backend` is not consulted), so that it can
 /// read the backend's pass timings afterwards (`phygap bench train`).
 pub fn train_on(
@@ -370,6 +395,7 @@ impl Run<'_> {
             train_views: self.targets.len(),
             test_views: self.capture.test_views().count(),
             resumed_from,
+            resolution: self.capture.working_resolution(),
         });
         let session_start = Instant::now();
         let earlier_sessions = state.elapsed_seconds;
@@ -823,6 +849,7 @@ impl Run<'_> {
                 train_seconds: state.elapsed_seconds,
                 num_surfels: state.surfels.len(),
                 backend: self.backend.name().to_owned(),
+                working_resolution: Some(model::WorkingResolution::of(self.capture)),
             },
             config: TrainConfig {
                 mode: self.mode,

@@ -301,7 +301,7 @@ fn read_settings(
 pub fn load(
     root: &Path,
     location: &ModelLocation,
-    limits: &super::CaptureLimits,
+    options: &super::LoadOptions,
 ) -> Result<Capture, CaptureError> {
     let _span = tracing::info_span!("load_colmap", model = %location.dir.display()).entered();
     let model = model::read_model(&location.dir, location.format)?;
@@ -367,7 +367,7 @@ pub fn load(
         root,
         &Value::Object(document),
         problems,
-        limits,
+        options,
     )?;
 
     super::lens::undistort_views(&mut capture, &distortions);

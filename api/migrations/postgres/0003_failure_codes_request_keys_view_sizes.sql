@@ -14,3 +14,6 @@ WHERE idempotency_key IS NOT NULL;
 ALTER TABLE jobs DROP COLUMN idempotency_key;
 CREATE UNIQUE INDEX jobs_by_request_key ON jobs (COALESCE(account, ''), request_key)
     WHERE request_key IS NOT NULL;
+-- The size of a capture's views, for the memory a job on it needs (0 for older captures).
+ALTER TABLE captures ADD COLUMN width BIGINT NOT NULL DEFAULT 0;
+ALTER TABLE captures ADD COLUMN height BIGINT NOT NULL DEFAULT 0;

@@ -11,6 +11,7 @@ use phygap::io::capture::CaptureLimits;
 use crate::auth::{read_tokens_file, TokensFileError, MIN_TOKEN_CHARS};
 use crate::connections::HttpLimits;
 use crate::job_process::JobLimits;
+use crate::webhooks::WebhookSettings;
 use crate::{ServiceConfig, ServiceLimits};
 
 #[derive(Debug, Parser)]
@@ -102,6 +103,8 @@ pub enum ConfigError {
          given as PHYGAP_TOKEN, which `ps` does not show, rather than --token)"
     )]
     WeakToken(usize),
+    #[error("--webhook: {0}")]
+    Webhook(String),
 }
 
 #[derive(Debug, Args)]
@@ -196,6 +199,16 @@ pub struct ServeArgs {
           env = "PHYGAP_UPLOAD_WINDOW_SECONDS",
           value_parser = clap::value_parser!(u64).range(1..=3600))]
     pub upload_window_seconds: u64,
+    /// URL every job's end is POSTed to when the job names none of its own.
+    #[arg(long, env = "PHYGAP_WEBHOOK")]
+    pub webhook: Option<String>,
+    /// Key of the webhooks' HMAC-SHA256 signatures (header Phygap-Signature).
+    #[arg(long, env = "PHYGAP_WEBHOOK_SECRET", hide_env_values = true)]
+    pub webhook_secret: Option<String>,
+    /// Hosts webhooks may call, comma separated (default: any; the service calls out from
+    /// inside its network, so list them).
+    #[arg(long, env = "PHYGAP_WEBHOOK_HOSTS", value_delimiter = ',')]
+    pub webhook_hosts: Vec<String>,
 }
 
 impl ServeArgs {
@@ -227,6 +240,22 @@ impl ServeArgs {
             body_window: std::time::Duration::from_secs(self.upload_window_seconds),
             ..HttpLimits::DEFAULT
         };
+        config.webhooks = WebhookSettings {
+            default_url: self.webhook.clone().filter(|u| !u.is_empty()),
+            secret: self.webhook_secret.clone().unwrap_or_default(),
+            allowed_hosts: self
+                .webhook_hosts
+                .iter()
+                .map(|h| h.trim().to_owned())
+                .filter(|h| !h.is_empty())
+                .collect(),
+        };
+        if let Some(url) = &config.webhooks.default_url {
+            config
+                .webhooks
+                .target(Some(url))
+                .map_err(|e| ConfigError::Webhook(e.message))?;
+        }
         config.limits = ServiceLimits {
             capture: CaptureLimits {
                 max_views: self.max_views,

@@ -11,7 +11,7 @@ use phygap::core::events::TrainEvent;
 use phygap::core::resolution::Resolution;
 use phygap::io::capture::{CaptureError, CaptureLimits, LoadOptions};
 
-use crate::pipeline::{CaptureInfo, Pipeline, PipelineError, RunOutcome};
+use crate::pipeline::{CaptureInfo, Engines, Pipeline, PipelineError, RunOutcome};
 
 /// Calls `phygap::io::capture::load_within`, `phygap::pipeline::train::train`,
 /// `phygap::pipeline::export::export` and `phygap::pipeline::relight::relight`.
@@ -57,6 +57,31 @@ fn failed(stage: &str, error: impl std::fmt::Display) -> PipelineError {
 }
 
 impl Pipeline for CorePipeline {
+    /// This machine's adapters and what each backend choice resolves to.
+    fn engines(&self) -> Result<Engines, PipelineError> {
+        use phygap::core::config::BackendChoice;
+        use phygap::pipeline::backend::describe;
+        let backends = [
+            (BackendChoice::Auto, "auto"),
+            (BackendChoice::Cpu, "cpu"),
+            (BackendChoice::Fast, "fast"),
+            (BackendChoice::Gpu, "gpu"),
+        ]
+        .into_iter()
+        .map(|(choice, name)| {
+            let what = describe(choice).unwrap_or_else(|e| format!("unavailable: {e}"));
+            (name.to_owned(), what)
+        })
+        .collect();
+        Ok(Engines {
+            adapters: phygap::gpu::list_adapters()
+                .iter()
+                .map(ToString::to_string)
+                .collect(),
+            backends,
+        })
+    }
+
     fn inspect(&self, capture_dir: &Path) -> Result<CaptureInfo, PipelineError> {
         // Every file is read and checked; the views are kept at the host engines' working size,
         // so validating a large capture holds little of it.

@@ -34,6 +34,7 @@ pub mod security_headers;
 pub mod slow_body;
 pub mod store;
 pub mod web;
+pub mod webhooks;
 
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};
@@ -92,6 +93,8 @@ pub struct ServiceConfig {
     pub limits: ServiceLimits,
     /// Connections, timeouts and request sizes of the HTTP listener.
     pub http: connections::HttpLimits,
+    /// Where jobs' ends are reported, how they are signed, which hosts may be called.
+    pub webhooks: webhooks::WebhookSettings,
 }
 
 /// The bounds every input and every job is held to (README: "Limits").
@@ -145,6 +148,7 @@ impl ServiceConfig {
             api: true,
             limits: ServiceLimits::default(),
             http: connections::HttpLimits::DEFAULT,
+            webhooks: webhooks::WebhookSettings::default(),
         }
     }
 }
@@ -201,6 +205,8 @@ pub struct AppState {
     pub pipeline: Arc<dyn Pipeline>,
     pub metrics: Arc<Metrics>,
     pub runtime: Arc<Runtime>,
+    /// This machine's engines, probed once in a job's process on the first `GET /v1/info`.
+    pub engines: Arc<tokio::sync::OnceCell<pipeline::Engines>>,
     /// Cancelled when the server shuts down (stops workers claiming and ends event streams).
     pub shutdown: CancellationToken,
 }
@@ -335,6 +341,7 @@ impl Server {
             pipeline,
             metrics: Arc::new(Metrics::default()),
             runtime: Arc::new(Runtime::new()),
+            engines: Arc::default(),
             shutdown: CancellationToken::new(),
         };
         let router = routes::router(state.clone());
@@ -343,6 +350,7 @@ impl Server {
         let http = tokio::spawn(connections::serve(listener, router, http_limits, stop));
         let mut tasks = queue::worker::spawn(&state);
         tasks.extend(purge::spawn_sweeper(&state));
+        tasks.push(webhooks::spawn_sender(&state));
         tracing::info!(%addr, owner = state.runtime.owner(), "phygap-api listening");
         Ok(Server {
             addr,

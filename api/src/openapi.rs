@@ -11,7 +11,7 @@ use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement
 use utoipa::openapi::{ContentBuilder, Ref, ResponseBuilder};
 use utoipa::{Modify, OpenApi, ToSchema};
 
-use crate::routes::{artifacts, captures, health, jobs, viewer};
+use crate::routes::{artifacts, captures, health, info, jobs, viewer};
 
 /// The command that rewrites the committed document.
 pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out api/openapi.yaml";
@@ -37,6 +37,7 @@ pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out
         health::healthz,
         health::metrics,
         health::openapi,
+        info::info,
         captures::upload,
         captures::show,
         captures::remove,
@@ -46,6 +47,7 @@ pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out
         jobs::remove,
         jobs::events,
         jobs::cancel,
+        jobs::restart,
         jobs::relight,
         artifacts::list,
         artifacts::download,

@@ -30,6 +30,16 @@ pub struct CaptureInfo {
     pub height: u32,
 }
 
+/// The compute engines a machine offers, as `phygap info` describes them.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, utoipa::ToSchema)]
+pub struct Engines {
+    /// The GPU adapters found (Vulkan, Metal, DX12), software ones included.
+    pub adapters: Vec<String>,
+    /// What each `backend` choice trains on here (`auto`, `cpu`, `fast`, `gpu`), or why it
+    /// cannot.
+    pub backends: std::collections::BTreeMap<String, String>,
+}
+
 /// How a training run ended without error.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -150,6 +160,9 @@ impl DeathReason {
 
 /// The reconstruction core as the service sees it.
 pub trait Pipeline: Send + Sync + 'static {
+    /// What this machine's engines are (`GET /v1/info`).
+    fn engines(&self) -> Result<Engines, PipelineError>;
+
     /// Loads and validates the capture in `capture_dir` (the folder holding `transforms.json`).
     fn inspect(&self, capture_dir: &Path) -> Result<CaptureInfo, PipelineError>;
 

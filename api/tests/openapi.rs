@@ -552,6 +552,50 @@ async fn live_answers_match_the_declared_schemas() {
         .await;
     assert_eq!(answer.error(), (409, "job_finished"));
 
+    // Restarts: a bad setting, then the cancelled job back in the queue, then a queued one.
+    let restart = "/v1/jobs/{id}/restart";
+    let restart_path = format!("/v1/jobs/{queued}/restart");
+    let post = |body: Value| {
+        admin
+            .client
+            .post(admin.url(&restart_path))
+            .json(&body)
+            .send()
+    };
+    let answer = spec
+        .check(
+            Method::POST,
+            restart,
+            post(json!({"config": {"iterations": 0}})).await.unwrap(),
+        )
+        .await;
+    assert_eq!(answer.error(), (422, "invalid_config"));
+    let answer = spec
+        .check(
+            Method::POST,
+            restart,
+            post(json!({"config": {"iterations": 30}})).await.unwrap(),
+        )
+        .await;
+    assert_eq!(
+        (answer.status, &answer.json["state"]),
+        (200, &json!("queued"))
+    );
+    let answer = spec
+        .check(Method::POST, restart, post(json!({})).await.unwrap())
+        .await;
+    assert_eq!(answer.error(), (409, "job_not_restartable"));
+
+    // What the deployment offers, to the admin and to an account.
+    for client in [&admin, &account] {
+        let answer = spec
+            .request(client, Method::GET, "/v1/info", "/v1/info")
+            .await;
+        assert_eq!(answer.status, 200);
+        assert!(answer.json["limits"]["max_views"].as_u64() > Some(0));
+        assert!(answer.json["engines"]["backends"]["cpu"].is_string());
+    }
+
     // The trained job, its list, artifacts and viewer routes.
     admin.wait_succeeded(&trained).await;
     let answer = spec

@@ -24,6 +24,7 @@ fn new_job(id: &str, created_at: i64) -> NewJob {
         iterations: 100,
         created_at,
         account: None,
+        webhook_url: None,
     }
 }
 
@@ -53,7 +54,7 @@ async fn claim_is_exclusive_and_fifo(s: &dyn Store) {
     }
     assert_eq!(order, ["job_a", "job_b", "job_d", "job_c"]);
     assert_eq!(
-        s.counts().await.unwrap(),
+        s.counts(None).await.unwrap(),
         QueueCounts {
             queued: 0,
             running: 4
@@ -262,6 +263,104 @@ async fn idempotency_key_returns_the_same_job_or_conflicts(s: &dyn Store) {
     assert_eq!(s.list_jobs(10, None).await.unwrap().len(), 2);
 }
 
+async fn restarted_jobs_run_again_resuming_or_afresh(s: &dyn Store) {
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    assert_eq!(
+        s.restart("job_a", None, None).await.unwrap().unwrap().state,
+        JobState::Queued,
+        "a queued job stays as it is"
+    );
+    s.claim("w", 10, 100).await.unwrap().unwrap();
+    let failed = Finish::Failed {
+        code: "training_failed",
+        message: "diverged".into(),
+    };
+    s.finish("job_a", "w", &failed, 20).await.unwrap();
+    assert!(s.restart("job_none", None, None).await.unwrap().is_none());
+    // As it was: resumes (its attempts carry on, so the next claim resumes).
+    let again = s.restart("job_a", None, None).await.unwrap().unwrap();
+    assert_eq!(
+        (
+            again.state,
+            again.error,
+            again.error_code,
+            again.finished_at,
+            again.attempts
+        ),
+        (JobState::Queued, None, None, None, 1)
+    );
+    assert_eq!(s.claim("w", 30, 100).await.unwrap().unwrap().attempts, 2);
+    s.finish("job_a", "w", &Finish::Cancelled, 40)
+        .await
+        .unwrap();
+    // Changed: starts over, with its new spec and progress.
+    let spec = JobSpec::Train {
+        config: TrainConfig {
+            iterations: 77,
+            ..TrainConfig::default()
+        },
+    };
+    let fresh = Progress {
+        iterations: 77,
+        ..Progress::default()
+    };
+    let over = s
+        .restart("job_a", Some(&spec), Some(&fresh))
+        .await
+        .unwrap()
+        .unwrap();
+    assert_eq!((over.state, over.attempts), (JobState::Queued, 0));
+    assert_eq!((over.spec, over.progress), (spec, fresh));
+}
+
+async fn webhooks_are_taken_once_retried_and_recorded(s: &dyn Store) {
+    let hooked = NewJob {
+        webhook_url: Some("http://127.0.0.1:9/hook".into()),
+        ..new_job("job_a", 1)
+    };
+    s.submit(&hooked, None).await.unwrap();
+    s.submit(&new_job("job_b", 2), None).await.unwrap();
+    assert!(
+        s.take_webhook(5, 100).await.unwrap().is_none(),
+        "not ended yet"
+    );
+    while let Some(job) = s.claim("w", 10, 100).await.unwrap() {
+        s.finish(&job.id, "w", &Finish::Succeeded, 20)
+            .await
+            .unwrap();
+    }
+    let taken = s.take_webhook(30, 60).await.unwrap().unwrap();
+    assert_eq!((taken.job.id.as_str(), taken.attempts), ("job_a", 0));
+    assert_eq!(taken.url, "http://127.0.0.1:9/hook");
+    assert!(s.take_webhook(31, 60).await.unwrap().is_none(), "leased");
+    s.record_webhook("job_a", 1, "not delivered: cannot connect", Some(80))
+        .await
+        .unwrap();
+    assert!(
+        s.take_webhook(79, 200).await.unwrap().is_none(),
+        "not due yet"
+    );
+    let retry = s.take_webhook(80, 200).await.unwrap().unwrap();
+    assert_eq!(retry.attempts, 1);
+    s.record_webhook("job_a", 2, "delivered: 200", None)
+        .await
+        .unwrap();
+    assert!(
+        s.take_webhook(10_000, 20_000).await.unwrap().is_none(),
+        "delivered"
+    );
+    let webhook = s.job("job_a").await.unwrap().unwrap().webhook.unwrap();
+    assert_eq!(
+        (
+            webhook.attempts,
+            webhook.last_status.as_deref(),
+            webhook.done
+        ),
+        (2, Some("delivered: 200"), true)
+    );
+    assert_eq!(s.job("job_b").await.unwrap().unwrap().webhook, None);
+}
+
 async fn idempotency_keys_are_per_account(s: &dyn Store) {
     let of = |id: &str, account: Option<&str>| NewJob {
         account: account.map(str::to_owned),
@@ -379,6 +478,10 @@ async fn accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use
     assert_eq!(alices[0].account.as_deref(), Some("alice"));
     assert!(s.list_jobs(10, Some("bob")).await.unwrap().is_empty());
     assert_eq!(s.list_jobs(10, None).await.unwrap().len(), 2);
+    let queued = |queued| QueueCounts { queued, running: 0 };
+    assert_eq!(s.counts(Some("alice")).await.unwrap(), queued(1));
+    assert_eq!(s.counts(Some("bob")).await.unwrap(), queued(0));
+    assert_eq!(s.counts(None).await.unwrap(), queued(2));
     // Queued or running jobs are not deleted.
     assert_eq!(s.delete_job("job_a").await.unwrap(), DeleteOutcome::InUse);
     let running = s.claim("w", 3, 100).await.unwrap().unwrap();
@@ -445,6 +548,8 @@ where
     a_process_that_dies_the_same_way_twice_fails_the_job(fresh().await.as_ref()).await;
     idempotency_key_returns_the_same_job_or_conflicts(fresh().await.as_ref()).await;
     idempotency_keys_are_per_account(fresh().await.as_ref()).await;
+    restarted_jobs_run_again_resuming_or_afresh(fresh().await.as_ref()).await;
+    webhooks_are_taken_once_retried_and_recorded(fresh().await.as_ref()).await;
     concurrent_submits_with_one_key_create_one_job(fresh().await).await;
     cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;
     accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use(fresh().await.as_ref())

@@ -126,6 +126,9 @@ fn execute(
     on_event: &mut dyn FnMut(&phygap::core::events::TrainEvent),
 ) -> Result<Answer, PipelineError> {
     Ok(match request {
+        Request::Describe => Answer::Described {
+            engines: pipeline.engines()?,
+        },
         Request::Inspect { capture_dir } => Answer::Inspected {
             info: pipeline.inspect(&capture_dir)?,
         },

@@ -25,7 +25,7 @@ use phygap::core::events::TrainEvent;
 use phygap::io::capture::CaptureLimits;
 
 use self::protocol::{Answer, Message, Request, CANCEL_LINE};
-use crate::pipeline::{CaptureInfo, DeathReason, Pipeline, PipelineError, RunOutcome};
+use crate::pipeline::{CaptureInfo, DeathReason, Engines, Pipeline, PipelineError, RunOutcome};
 
 /// What a job's process may use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -64,9 +64,10 @@ pub fn default_job_memory(workers: usize) -> u64 {
 
 /// Environment variables the job's process does not inherit: the service's secrets (the admin
 /// token, the database and the object store's credentials); the child needs none of them.
-const SECRET_VARIABLES: [&str; 5] = [
+const SECRET_VARIABLES: [&str; 6] = [
     "PHYGAP_TOKEN",
     "PHYGAP_DATABASE_URL",
+    "PHYGAP_WEBHOOK_SECRET",
     "AWS_ACCESS_KEY_ID",
     "AWS_SECRET_ACCESS_KEY",
     "AWS_SESSION_TOKEN",
@@ -301,6 +302,14 @@ fn describe_death(
 }
 
 impl Pipeline for ProcessPipeline {
+    /// Probed in a process of its own: the service never loads a GPU driver.
+    fn engines(&self) -> Result<Engines, PipelineError> {
+        match self.run(&Request::Describe, None, &mut |_| {})? {
+            Answer::Described { engines } => Ok(engines),
+            other => Err(unexpected(&Request::Describe, &other)),
+        }
+    }
+
     fn inspect(&self, capture_dir: &Path) -> Result<CaptureInfo, PipelineError> {
         let request = Request::Inspect {
             capture_dir: capture_dir.to_owned(),

@@ -11,12 +11,15 @@ use phygap::core::config::TrainConfig;
 use phygap::core::events::TrainEvent;
 use serde::{Deserialize, Serialize};
 
-use crate::pipeline::{CaptureInfo, PipelineError, RunOutcome};
+use crate::pipeline::{CaptureInfo, Engines, PipelineError, RunOutcome};
 
 /// The stage a job's process runs, with everything it needs (paths are absolute).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "stage", rename_all = "snake_case")]
 pub enum Request {
+    /// What this machine's engines are (`GET /v1/info`): adapters are probed in a job's process,
+    /// so the service itself never loads a GPU driver.
+    Describe,
     Inspect {
         capture_dir: PathBuf,
     },
@@ -44,6 +47,7 @@ impl Request {
     /// The folders and files the request names, which its error messages name relative to.
     pub fn folders(&self) -> Vec<&std::path::Path> {
         match self {
+            Request::Describe => Vec::new(),
             Request::Inspect { capture_dir } => vec![capture_dir],
             Request::Train {
                 capture_dir,
@@ -77,6 +81,7 @@ impl Request {
     /// The stage's name, for logs and failure messages.
     pub fn stage(&self) -> &'static str {
         match self {
+            Request::Describe => "description",
             Request::Inspect { .. } => "validation",
             Request::Train { .. } => "training",
             Request::Export { .. } => "export",
@@ -89,6 +94,7 @@ impl Request {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Answer {
+    Described { engines: Engines },
     Inspected { info: CaptureInfo },
     Trained { outcome: RunOutcome },
     Files { files: Vec<PathBuf> },

@@ -77,7 +77,7 @@ pub async fn metrics(
             "the metrics need the admin token",
         ));
     }
-    let counts = state.store.counts().await?;
+    let counts = state.store.counts(None).await?;
     let body = state.metrics.render(counts, state.config.workers);
     Ok((
         [(

@@ -23,7 +23,7 @@ use crate::error::{ApiError, ErrorBody};
 use crate::queue::{new_id, CancelReason};
 use crate::routes::captures::TempDir;
 use crate::store::{
-    now_ms, rfc3339, DeleteOutcome, JobRecord, JobSpec, JobState, NewJob, StoreError,
+    now_ms, rfc3339, DeleteOutcome, JobRecord, JobSpec, JobState, NewJob, StoreError, WebhookRecord,
 };
 use crate::AppState;
 
@@ -93,6 +93,9 @@ pub struct JobView {
     /// Training jobs only: the training configuration, defaults filled in.
     #[serde(skip_serializing_if = "Option::is_none")]
     config: Option<TrainConfig>,
+    /// Where the job's end is reported, and how that goes; null without a webhook.
+    #[schema(required = true)]
+    webhook: Option<WebhookRecord>,
 }
 
 /// What a job does.
@@ -143,6 +146,7 @@ impl From<JobRecord> for JobView {
             resolution: job.progress.resolution,
             cancel_requested: job.cancel_requested,
             config,
+            webhook: job.webhook,
         }
     }
 }
@@ -158,6 +162,10 @@ pub struct SubmitRequest {
     /// defaults.
     #[serde(default)]
     config: TrainConfig,
+    /// An http(s) URL the job's end is POSTed to (the job as `GET /v1/jobs/{id}` answers it,
+    /// signed: `Phygap-Signature`); default: the server's `--webhook`, if any.
+    #[serde(default)]
+    webhook: Option<String>,
 }
 
 /// Largest `POST /v1/jobs` body (axum's default body limit; a config is about 2 KB).
@@ -227,6 +235,7 @@ pub async fn load_job(state: &AppState, caller: &Caller, id: &str) -> Result<Job
             body = ErrorBody),
         (status = UNPROCESSABLE_ENTITY, description = "Unknown or missing request fields \
             (invalid_request), an invalid config, e.g. a size over its bound (invalid_config), \
+            a webhook that is not an http(s) URL of an allowed host (invalid_webhook), \
             an unknown capture (unknown_capture), a job whose estimated memory at its working \
             resolution exceeds the job memory limit (capture_too_large, naming a resolution that \
             fits), a reused idempotency key (idempotency_key_reused)", body = ErrorBody),
@@ -274,11 +283,13 @@ pub async fn submit(
     // The store keeps keys per account (the job's), so one account cannot reach another's
     // jobs through them.
     let key = idempotency_key(&headers)?;
-    let hash = serde_json::to_string(&(&request.capture_id, &request.config))
+    let hash = serde_json::to_string(&(&request.capture_id, &request.config, &request.webhook))
         .map_err(|e| ApiError::internal("hashing the request", e))?;
+    let webhook_url = state.config.webhooks.target(request.webhook.as_deref())?;
     let job = NewJob {
         id: new_id("job"),
         capture_id: request.capture_id,
+        webhook_url,
         iterations: request.config.iterations,
         spec: JobSpec::Train {
             config: request.config,
@@ -568,6 +579,8 @@ pub struct RelightForm {
     cameras: Option<Vec<u8>>,
     /// Rotation of the map about the world up axis, in degrees (default 0).
     rotate_deg: Option<f64>,
+    /// An http(s) URL the relight job's end is POSTed to (default: the server's --webhook).
+    webhook: Option<String>,
 }
 
 /// `POST /v1/jobs/{id}/relight`: multipart form with `envmap` (an `.exr` or `.hdr` file),
@@ -634,8 +647,10 @@ pub async fn relight(
     let mut envmap_file = None;
     let mut cameras_file = None;
     let mut rotate_deg = 0.0f64;
+    let mut webhook = None;
     while let Some(field) = multipart.next_field().await.map_err(multipart_error)? {
         match field.name().unwrap_or("") {
+            "webhook" => webhook = Some(field.text().await.map_err(multipart_error)?),
             "envmap" => {
                 let upload = staging.path().join("envmap.upload");
                 let head = save_field(field, &upload).await?;
@@ -679,7 +694,10 @@ pub async fn relight(
             other => {
                 return Err(ApiError::bad_request(
                     "unknown_field",
-                    format!("unknown form field `{other}` (expected envmap, cameras, rotate_deg)"),
+                    format!(
+                        "unknown form field `{other}` (expected envmap, cameras, rotate_deg, \
+                         webhook)"
+                    ),
                 ))
             }
         }
@@ -687,6 +705,7 @@ pub async fn relight(
     let envmap_file = envmap_file.ok_or_else(|| {
         ApiError::unprocessable("missing_envmap", "the form has no `envmap` file field")
     })?;
+    let webhook_url = state.config.webhooks.target(webhook.as_deref())?;
     let (envmap_path, cameras_path, limits) = (
         staging.path().join(&envmap_file),
         cameras_file.as_ref().map(|name| staging.path().join(name)),
@@ -724,6 +743,7 @@ pub async fn relight(
         iterations: 0,
         created_at: now_ms(),
         account: caller.account().map(str::to_owned),
+        webhook_url,
     };
     let record = match state.store.submit(&job, None).await {
         Ok((record, _)) => record,
@@ -738,6 +758,153 @@ pub async fn relight(
     tracing::info!(job_id = %id, parent = %record.capture_id, "relight job queued");
     state.runtime.wake_workers();
     Ok((StatusCode::CREATED, Json(record.into())))
+}
+
+/// The body of `POST /v1/jobs/{id}/restart` (optional: without one, the job runs again as it
+/// was).
+#[derive(Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RestartRequest {
+    /// Training jobs: settings to change, keys of the job's `config` (the others keep their
+    /// values). A changed config starts the run over; an unchanged one resumes from the last
+    /// checkpoint.
+    #[serde(default)]
+    #[schema(value_type = Option<Object>)]
+    config: Option<serde_json::Map<String, serde_json::Value>>,
+}
+
+/// `POST /v1/jobs/{id}/restart`: a failed or cancelled job runs again, resuming from its last
+/// checkpoint, or over from the start with changed settings.
+#[utoipa::path(
+    post,
+    path = "/v1/jobs/{id}/restart",
+    tag = "jobs",
+    operation_id = "restart_job",
+    summary = "Run a failed or cancelled job again",
+    description = "The job goes back to the queue under its id: its error cleared, resuming from \
+        its last checkpoint, or, when `config` changes a setting, starting over with the changed \
+        config (`attempts` counts from 0 again). A training job's capture must still exist, a \
+        relight job's model too.",
+    params(JobPath),
+    request_body(content = Option<RestartRequest>, content_type = "application/json"),
+    responses(
+        (status = OK, description = "The job, queued again", body = JobView),
+        (status = BAD_REQUEST, description = "A body that is not JSON (invalid_json)",
+            body = ErrorBody),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)",
+            body = ErrorBody),
+        (status = CONFLICT, description = "The job is queued, running or succeeded \
+            (job_not_restartable), or its capture (capture_missing) or model \
+            (model_not_ready) is gone", body = ErrorBody),
+        (status = PAYLOAD_TOO_LARGE, description = "A body over 2 MiB (payload_too_large)",
+            body = ErrorBody),
+        (status = UNPROCESSABLE_ENTITY, description = "Unknown request fields \
+            (invalid_request), an invalid config (invalid_config), settings for a relight job \
+            (invalid_request), a capture that cannot fit at the new resolution \
+            (capture_too_large)", body = ErrorBody),
+    )
+)]
+pub async fn restart(
+    State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
+    Path(JobPath { id }): Path<JobPath>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Json<JobView>, ApiError> {
+    let body = body.map_err(|e| match e.status() {
+        StatusCode::PAYLOAD_TOO_LARGE => ApiError::too_large(e.body_text()),
+        status => ApiError::new(status, "invalid_body", e.body_text()),
+    })?;
+    let request: RestartRequest = if body.iter().all(u8::is_ascii_whitespace) {
+        RestartRequest::default()
+    } else {
+        let value: serde_json::Value = serde_json::from_slice(&body)
+            .map_err(|e| ApiError::bad_request("invalid_json", format!("request body: {e}")))?;
+        serde_json::from_value(value)
+            .map_err(|e| ApiError::unprocessable("invalid_request", e.to_string()))?
+    };
+    let job = load_job(&state, &caller, &id).await?;
+    if !matches!(job.state, JobState::Failed | JobState::Cancelled) {
+        return Err(ApiError::conflict(
+            "job_not_restartable",
+            format!(
+                "job `{id}` is {}; only failed or cancelled jobs restart",
+                job.state.as_str()
+            ),
+        ));
+    }
+    let (spec, fresh) = match &job.spec {
+        JobSpec::Train { config } => {
+            let changed = match &request.config {
+                Some(changes) => Some(changed_config(config, changes)?),
+                None => None,
+            };
+            let new_config = changed.as_ref().unwrap_or(config);
+            let capture = state.store.capture(&job.capture_id).await?.ok_or_else(|| {
+                ApiError::conflict(
+                    "capture_missing",
+                    format!("capture `{}` of job `{id}` was deleted", job.capture_id),
+                )
+            })?;
+            crate::admission::check(&capture, new_config, state.config.limits.job.memory_bytes)?;
+            match changed.filter(|c| c != config) {
+                Some(changed) => {
+                    let fresh = crate::store::Progress {
+                        iterations: changed.iterations,
+                        ..Default::default()
+                    };
+                    (Some(JobSpec::Train { config: changed }), Some(fresh))
+                }
+                None => (None, None),
+            }
+        }
+        JobSpec::Relight { parent_job_id, .. } => {
+            if request.config.is_some() {
+                return Err(ApiError::unprocessable(
+                    "invalid_request",
+                    "a relight job has no config to change; upload a new relight instead",
+                ));
+            }
+            let parent = state.store.job(parent_job_id).await?;
+            if !parent.is_some_and(|p| p.state == JobState::Succeeded) {
+                return Err(ApiError::conflict(
+                    "model_not_ready",
+                    format!("the model of job `{parent_job_id}` is gone"),
+                ));
+            }
+            (None, None)
+        }
+    };
+    let job = state
+        .store
+        .restart(&id, spec.as_ref(), fresh.as_ref())
+        .await?
+        .ok_or_else(|| ApiError::not_found("job", &id))?;
+    if job.state != JobState::Queued {
+        return Err(ApiError::conflict(
+            "job_not_restartable",
+            format!("job `{id}` is {} now", job.state.as_str()),
+        ));
+    }
+    tracing::info!(job_id = %id, fresh = fresh.is_some(), "job restarted");
+    state.runtime.wake_workers();
+    state.runtime.changed(&id);
+    Ok(Json(job.into()))
+}
+
+/// `config` with the keys of `changes` replaced (every value checked as a training config is).
+fn changed_config(
+    config: &TrainConfig,
+    changes: &serde_json::Map<String, serde_json::Value>,
+) -> Result<TrainConfig, ApiError> {
+    let invalid =
+        |e: &dyn std::fmt::Display| ApiError::unprocessable("invalid_config", e.to_string());
+    let mut merged = serde_json::to_value(config).map_err(|e| invalid(&e))?;
+    if let Some(object) = merged.as_object_mut() {
+        object.extend(changes.clone());
+    }
+    let changed: TrainConfig = serde_json::from_value(merged).map_err(|e| invalid(&e))?;
+    changed.validate().map_err(|e| invalid(&e))?;
+    Ok(changed)
 }
 
 /// How long `DELETE` of a running job waits for it to stop (it checkpoints first).

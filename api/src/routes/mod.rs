@@ -6,6 +6,7 @@ pub(crate) mod artifacts;
 pub(crate) mod captures;
 pub(crate) mod conditional;
 pub(crate) mod health;
+pub(crate) mod info;
 pub(crate) mod jobs;
 pub(crate) mod viewer;
 
@@ -50,6 +51,7 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
         entry(Method::GET, "/healthz", false, get(health::healthz)),
         entry(Method::GET, "/metrics", true, get(health::metrics)),
         entry(Method::GET, "/v1/openapi.json", true, get(health::openapi)),
+        entry(Method::GET, "/v1/info", true, get(info::info)),
         entry(
             Method::POST,
             "/v1/captures",
@@ -78,6 +80,12 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
             "/v1/jobs/{id}/cancel",
             true,
             post(jobs::cancel),
+        ),
+        entry(
+            Method::POST,
+            "/v1/jobs/{id}/restart",
+            true,
+            post(jobs::restart).layer(DefaultBodyLimit::max(jobs::MAX_SUBMIT_BYTES)),
         ),
         entry(
             Method::POST,

@@ -182,6 +182,8 @@ pub struct JobRecord {
     pub cancel_requested: bool,
     /// The account whose token submitted it (`None`: submitted without an account token).
     pub account: Option<String>,
+    /// Its webhook, when it has one.
+    pub webhook: Option<WebhookRecord>,
 }
 
 /// A job to enqueue.
@@ -193,6 +195,43 @@ pub struct NewJob {
     pub iterations: u32,
     pub created_at: i64,
     pub account: Option<String>,
+    /// Where to report the job's end ([`crate::webhooks`]).
+    pub webhook_url: Option<String>,
+}
+
+/// How a job's end is being reported to its webhook.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize, utoipa::ToSchema)]
+pub struct WebhookRecord {
+    /// The URL the job's end is POSTed to.
+    pub url: String,
+    /// Attempts made.
+    pub attempts: u32,
+    /// How the last attempt went (`delivered: 200`, `answered 503`, `not delivered: cannot
+    /// connect`, …); null before the first.
+    #[schema(required = true)]
+    pub last_status: Option<String>,
+    /// Delivered, or given up: no more attempts.
+    pub done: bool,
+}
+
+/// A delivery a process took to send: the job as it ended, the URL and the attempts so far.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WebhookDelivery {
+    pub job: JobRecord,
+    pub url: String,
+    pub attempts: u32,
+}
+
+impl WebhookDelivery {
+    /// The delivery of a job taken for it (one with a webhook).
+    pub(crate) fn of(job: JobRecord) -> Option<WebhookDelivery> {
+        let webhook = job.webhook.clone()?;
+        Some(WebhookDelivery {
+            url: webhook.url,
+            attempts: webhook.attempts,
+            job,
+        })
+    }
 }
 
 /// How a worker's run of a job ended.
@@ -286,13 +325,41 @@ pub trait Store: Send + Sync + 'static {
         finish: &Finish,
         now: i64,
     ) -> Result<(), StoreError>;
+    /// Puts a failed or cancelled job back in the queue as a new run: its error, death and cancel
+    /// request cleared, its spec replaced by `spec` when given. With `fresh` progress the run
+    /// starts over (that progress, attempts counted from 0, so the next claim does not resume);
+    /// without, it resumes from the job's last checkpoint. `None`: no such job; `Some(job)` in
+    /// a state other than `queued`: it was not failed or cancelled, and is unchanged.
+    async fn restart(
+        &self,
+        id: &str,
+        spec: Option<&JobSpec>,
+        fresh: Option<&Progress>,
+    ) -> Result<Option<JobRecord>, StoreError>;
     /// Queued jobs are cancelled at once; running ones get `cancel_requested`. `None`: no such job.
     async fn request_cancel(&self, id: &str, now: i64) -> Result<Option<JobRecord>, StoreError>;
     /// Puts running jobs whose lease ended before `now` back in the queue (or fails them after
     /// `max_attempts` claims); returns their ids.
     async fn requeue_expired(&self, now: i64, max_attempts: u32)
         -> Result<Vec<String>, StoreError>;
-    async fn counts(&self) -> Result<QueueCounts, StoreError>;
+    /// Queued and running jobs, of `account` only when one is given.
+    async fn counts(&self, account: Option<&str>) -> Result<QueueCounts, StoreError>;
+    /// Takes the oldest webhook delivery due at `now` (a job that ended, with a webhook not yet
+    /// delivered or given up, whose next attempt is due) for the caller until `lease_until`.
+    async fn take_webhook(
+        &self,
+        now: i64,
+        lease_until: i64,
+    ) -> Result<Option<WebhookDelivery>, StoreError>;
+    /// Records attempt number `attempts` of a job's webhook: its status, and when the next is
+    /// due (`None`: no more, it was delivered or given up).
+    async fn record_webhook(
+        &self,
+        id: &str,
+        attempts: u32,
+        status: &str,
+        next_at: Option<i64>,
+    ) -> Result<(), StoreError>;
 }
 
 pub(crate) fn corrupt(id: &str, column: &'static str, problem: impl ToString) -> StoreError {
@@ -319,6 +386,10 @@ pub(crate) struct RawJob {
     pub account: Option<String>,
     pub error_code: Option<String>,
     pub last_death: Option<String>,
+    pub webhook_url: Option<String>,
+    pub webhook_attempts: u32,
+    pub webhook_status: Option<String>,
+    pub webhook_done: bool,
 }
 
 impl RawJob {
@@ -337,6 +408,12 @@ impl RawJob {
             error: self.error,
             error_code: self.error_code,
             last_death: self.last_death,
+            webhook: self.webhook_url.map(|url| WebhookRecord {
+                url,
+                attempts: self.webhook_attempts,
+                last_status: self.webhook_status,
+                done: self.webhook_done,
+            }),
             created_at: self.created_at,
             started_at: self.started_at,
             finished_at: self.finished_at,

@@ -13,8 +13,9 @@ use tokio_postgres::types::ToSql;
 use tokio_postgres::{NoTls, Row};
 
 use super::{
-    abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, NewJob,
-    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, ABANDONED,
+    abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, JobSpec,
+    NewJob, Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, WebhookDelivery,
+    ABANDONED,
 };
 
 /// The schema's versions, oldest first; each runs once, in a transaction.
@@ -29,7 +30,9 @@ const MIGRATIONS: &[(i32, &str)] = &[
     ),
     (
         3,
-        include_str!("../../migrations/postgres/0003_failure_codes_request_keys_view_sizes.sql"),
+        include_str!(
+            "../../migrations/postgres/0003_failure_codes_request_keys_view_sizes_webhooks.sql"
+        ),
     ),
 ];
 
@@ -43,7 +46,8 @@ const POOL_TIMEOUT: Duration = Duration::from_secs(5);
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
                            finished_at, attempts, cancel_requested, account, error_code, \
-                           last_death";
+                           last_death, webhook_url, webhook_attempts, webhook_status, \
+                           webhook_done";
 
 /// The PostgreSQL store.
 pub struct PostgresStore {
@@ -90,6 +94,10 @@ fn raw_job(row: &Row) -> Result<RawJob, StoreError> {
         account: row.try_get(11)?,
         error_code: row.try_get(12)?,
         last_death: row.try_get(13)?,
+        webhook_url: row.try_get(14)?,
+        webhook_attempts: row.try_get::<_, i32>(15)?.max(0) as u32,
+        webhook_status: row.try_get(16)?,
+        webhook_done: row.try_get(17)?,
     })
 }
 
@@ -300,8 +308,8 @@ impl Store for PostgresStore {
             .query_opt(
                 &format!(
                     "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                       request_key, request_hash, account)
-                     VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7, $8)
+                                       request_key, request_hash, account, webhook_url)
+                     VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7, $8, $9)
                      ON CONFLICT ((COALESCE(account, '')), request_key)
                          WHERE request_key IS NOT NULL DO NOTHING
                      RETURNING {JOB_COLUMNS}"
@@ -315,6 +323,7 @@ impl Store for PostgresStore {
                     &key,
                     &hash,
                     &job.account,
+                    &job.webhook_url,
                 ],
             )
             .await?;
@@ -337,7 +346,7 @@ impl Store for PostgresStore {
                 &[&key, &job.account],
             )
             .await?;
-        let stored_hash: Option<String> = row.try_get(14)?;
+        let stored_hash: Option<String> = row.try_get(18)?;
         if stored_hash.as_deref() != Some(hash) {
             return Err(StoreError::IdempotencyConflict(key.to_owned()));
         }
@@ -518,6 +527,36 @@ impl Store for PostgresStore {
         Ok(())
     }
 
+    async fn restart(
+        &self,
+        id: &str,
+        spec: Option<&JobSpec>,
+        fresh: Option<&Progress>,
+    ) -> Result<Option<JobRecord>, StoreError> {
+        let (spec, fresh) = (spec.map(to_json), fresh.map(to_json));
+        // One statement: the update (when the job may restart) and the job as it is after it.
+        self.query_job(
+            &format!(
+                "WITH restarted AS (
+                     UPDATE jobs SET state = 'queued', error = NULL, error_code = NULL,
+                            last_death = NULL, finished_at = NULL, cancel_requested = FALSE,
+                            webhook_attempts = 0, webhook_status = NULL,
+                            webhook_next_at = NULL, webhook_done = FALSE,
+                            spec = COALESCE($2, spec),
+                            attempts = CASE WHEN $3::TEXT IS NULL THEN attempts ELSE 0 END,
+                            progress = COALESCE($3, progress)
+                     WHERE id = $1 AND state IN ('failed', 'cancelled')
+                     RETURNING {JOB_COLUMNS})
+                 SELECT {JOB_COLUMNS} FROM restarted
+                 UNION ALL
+                 SELECT {JOB_COLUMNS} FROM jobs
+                 WHERE id = $1 AND NOT EXISTS (SELECT 1 FROM restarted)"
+            ),
+            &[&id, &spec, &fresh],
+        )
+        .await
+    }
+
     async fn request_cancel(&self, id: &str, now: i64) -> Result<Option<JobRecord>, StoreError> {
         self.query_job(
             &format!(
@@ -568,14 +607,58 @@ impl Store for PostgresStore {
             .collect::<Result<_, _>>()?)
     }
 
-    async fn counts(&self) -> Result<QueueCounts, StoreError> {
+    async fn take_webhook(
+        &self,
+        now: i64,
+        lease_until: i64,
+    ) -> Result<Option<WebhookDelivery>, StoreError> {
+        let job = self
+            .query_job(
+                &format!(
+                    "UPDATE jobs SET webhook_next_at = $2
+                     WHERE id = (
+                         SELECT id FROM jobs
+                         WHERE webhook_url IS NOT NULL AND NOT webhook_done
+                           AND state IN ('succeeded', 'failed', 'cancelled')
+                           AND COALESCE(webhook_next_at, 0) <= $1
+                         ORDER BY COALESCE(webhook_next_at, 0), finished_at
+                         LIMIT 1 FOR UPDATE SKIP LOCKED)
+                     RETURNING {JOB_COLUMNS}"
+                ),
+                &[&now, &lease_until],
+            )
+            .await?;
+        Ok(job.and_then(WebhookDelivery::of))
+    }
+
+    async fn record_webhook(
+        &self,
+        id: &str,
+        attempts: u32,
+        status: &str,
+        next_at: Option<i64>,
+    ) -> Result<(), StoreError> {
+        let client = self.pool.get().await?;
+        client
+            .execute(
+                "UPDATE jobs SET webhook_attempts = $2, webhook_status = $3,
+                        webhook_next_at = $4, webhook_done = ($4::BIGINT IS NULL)
+                 WHERE id = $1",
+                &[&id, &(attempts as i32), &status, &next_at],
+            )
+            .await?;
+        Ok(())
+    }
+
+    async fn counts(&self, account: Option<&str>) -> Result<QueueCounts, StoreError> {
         let client = self.pool.get().await?;
         let row = client
             .query_one(
                 "SELECT count(*) FILTER (WHERE state = 'queued'),
                         count(*) FILTER (WHERE state = 'running')
-                 FROM jobs WHERE state IN ('queued', 'running')",
-                &[],
+                 FROM jobs WHERE state IN ('queued', 'running')
+                 AND ($1::TEXT IS NULL OR account = $1)",
+                &[&account],
             )
             .await?;
         Ok(QueueCounts {

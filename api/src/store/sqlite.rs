@@ -7,8 +7,9 @@ use std::sync::Mutex;
 use rusqlite::{params, Connection, OptionalExtension, Row};
 
 use super::{
-    abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, NewJob,
-    Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, ABANDONED,
+    abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, JobSpec,
+    NewJob, Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, WebhookDelivery,
+    ABANDONED,
 };
 
 /// The embedded SQLite store.
@@ -49,7 +50,8 @@ CREATE INDEX IF NOT EXISTS jobs_by_capture ON jobs(capture_id, state);
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
                            finished_at, attempts, cancel_requested, account, error_code, \
-                           last_death";
+                           last_death, webhook_url, webhook_attempts, webhook_status, \
+                           webhook_done";
 
 /// Columns added after the first release, added to older files when they are opened.
 /// `request_key` is the client's Idempotency-Key, unique per account (the first release kept
@@ -63,6 +65,11 @@ const ADDED_COLUMNS: &[(&str, &str)] = &[
     ("jobs", "request_key TEXT"),
     ("captures", "width INTEGER NOT NULL DEFAULT 0"),
     ("captures", "height INTEGER NOT NULL DEFAULT 0"),
+    ("jobs", "webhook_url TEXT"),
+    ("jobs", "webhook_attempts INTEGER NOT NULL DEFAULT 0"),
+    ("jobs", "webhook_status TEXT"),
+    ("jobs", "webhook_next_at INTEGER"),
+    ("jobs", "webhook_done INTEGER NOT NULL DEFAULT 0"),
 ];
 
 /// Moves keys of files written by the first release into `request_key`, dropping the
@@ -76,10 +83,13 @@ UPDATE jobs SET request_key = CASE
 WHERE idempotency_key IS NOT NULL;
 ";
 
-/// Keys are unique per account (the admin's, without an account, is one more scope).
-const REQUEST_KEY_INDEX: &str = "
+/// Keys are unique per account (the admin's, without an account, is one more scope); webhook
+/// deliveries still to make are found by an index of their own.
+const ADDED_INDEXES: &str = "
 CREATE UNIQUE INDEX IF NOT EXISTS jobs_by_request_key
     ON jobs (COALESCE(account, ''), request_key) WHERE request_key IS NOT NULL;
+CREATE INDEX IF NOT EXISTS jobs_with_webhooks_to_send
+    ON jobs (webhook_next_at) WHERE webhook_url IS NOT NULL AND webhook_done = 0;
 ";
 
 fn has_column(conn: &Connection, table: &str, column: &str) -> rusqlite::Result<bool> {
@@ -106,6 +116,10 @@ fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
         account: row.get(11)?,
         error_code: row.get(12)?,
         last_death: row.get(13)?,
+        webhook_url: row.get(14)?,
+        webhook_attempts: row.get(15)?,
+        webhook_status: row.get(16)?,
+        webhook_done: row.get(17)?,
     })
 }
 
@@ -126,7 +140,7 @@ impl SqliteStore {
         if has_column(&conn, "jobs", "idempotency_key")? {
             conn.execute_batch(MIGRATE_LEGACY_KEYS)?;
         }
-        conn.execute_batch(REQUEST_KEY_INDEX)?;
+        conn.execute_batch(ADDED_INDEXES)?;
         Ok(SqliteStore {
             conn: Mutex::new(conn),
         })
@@ -278,8 +292,8 @@ impl Store for SqliteStore {
             };
             tx.execute(
                 "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                   request_key, request_hash, account)
-                 VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7, ?8)",
+                                   request_key, request_hash, account, webhook_url)
+                 VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7, ?8, ?9)",
                 params![
                     job.id,
                     job.capture_id,
@@ -289,6 +303,7 @@ impl Store for SqliteStore {
                     idempotency.map(|(k, _)| k),
                     idempotency.map(|(_, h)| h),
                     job.account,
+                    job.webhook_url,
                 ],
             )?;
             let record = Self::job_in(&tx, &job.id)?
@@ -460,6 +475,31 @@ impl Store for SqliteStore {
         })
     }
 
+    async fn restart(
+        &self,
+        id: &str,
+        spec: Option<&JobSpec>,
+        fresh: Option<&Progress>,
+    ) -> Result<Option<JobRecord>, StoreError> {
+        let (spec, fresh) = (spec.map(to_json), fresh.map(to_json));
+        self.with(|c| {
+            let tx = c.transaction()?;
+            tx.execute(
+                "UPDATE jobs SET state = 'queued', error = NULL, error_code = NULL,
+                        last_death = NULL, finished_at = NULL, cancel_requested = 0,
+                        webhook_attempts = 0, webhook_status = NULL, webhook_next_at = NULL,
+                        webhook_done = 0, spec = COALESCE(?2, spec),
+                        attempts = CASE WHEN ?3 IS NULL THEN attempts ELSE 0 END,
+                        progress = COALESCE(?3, progress)
+                 WHERE id = ?1 AND state IN ('failed', 'cancelled')",
+                params![id, spec, fresh],
+            )?;
+            let record = Self::job_in(&tx, id)?;
+            tx.commit()?;
+            Ok(record)
+        })
+    }
+
     async fn request_cancel(&self, id: &str, now: i64) -> Result<Option<JobRecord>, StoreError> {
         self.with(|c| {
             let tx = c.transaction()?;
@@ -516,13 +556,59 @@ impl Store for SqliteStore {
         })
     }
 
-    async fn counts(&self) -> Result<QueueCounts, StoreError> {
+    async fn take_webhook(
+        &self,
+        now: i64,
+        lease_until: i64,
+    ) -> Result<Option<WebhookDelivery>, StoreError> {
+        self.with(|c| {
+            let sql = format!(
+                "UPDATE jobs SET webhook_next_at = ?2
+                 WHERE id = (
+                     SELECT id FROM jobs
+                     WHERE webhook_url IS NOT NULL AND webhook_done = 0
+                       AND state IN ('succeeded', 'failed', 'cancelled')
+                       AND COALESCE(webhook_next_at, 0) <= ?1
+                     ORDER BY COALESCE(webhook_next_at, 0), finished_at LIMIT 1)
+                 RETURNING {JOB_COLUMNS}"
+            );
+            let job = c
+                .query_row(&sql, params![now, lease_until], raw_job)
+                .optional()?
+                .map(RawJob::parse)
+                .transpose()?;
+            Ok(job.and_then(WebhookDelivery::of))
+        })
+    }
+
+    async fn record_webhook(
+        &self,
+        id: &str,
+        attempts: u32,
+        status: &str,
+        next_at: Option<i64>,
+    ) -> Result<(), StoreError> {
+        self.with(|c| {
+            c.execute(
+                "UPDATE jobs SET webhook_attempts = ?2, webhook_status = ?3, webhook_next_at = ?4,
+                        webhook_done = (?4 IS NULL)
+                 WHERE id = ?1",
+                params![id, attempts, status, next_at],
+            )?;
+            Ok(())
+        })
+    }
+
+    async fn counts(&self, account: Option<&str>) -> Result<QueueCounts, StoreError> {
         self.with(|c| {
             let mut stmt = c.prepare(
-                "SELECT state, count(*) FROM jobs WHERE state IN ('queued', 'running') GROUP BY state",
+                "SELECT state, count(*) FROM jobs WHERE state IN ('queued', 'running')
+                 AND (?1 IS NULL OR account = ?1) GROUP BY state",
             )?;
             let mut counts = QueueCounts::default();
-            let rows = stmt.query_map([], |r| Ok((r.get::<_, String>(0)?, r.get::<_, i64>(1)?)))?;
+            let rows = stmt.query_map(params![account], |r| {
+                Ok((r.get::<_, String>(0)?, r.get::<_, i64>(1)?))
+            })?;
             for row in rows {
                 let (state, n) = row?;
                 match state.as_str() {

@@ -439,3 +439,11 @@ pub fn count_files(dir: &Path) -> usize {
         })
         .sum()
 }
+
+/// The current time in unix seconds.
+pub fn now_seconds() -> i64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .unwrap()
+        .as_secs() as i64
+}

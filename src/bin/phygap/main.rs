@@ -100,7 +100,20 @@ fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {
     }
 }
 
+/// Mesa's device-select Vulkan layer looks for a display server through `XDG_RUNTIME_DIR` and
+/// prints `error: XDG_RUNTIME_DIR is invalid or not set` at every adapter probe without one (a
+/// server, a container, an ssh session); phygap shows nothing on a display, so there it switches
+/// the layer off. Called first, while the process has one thread.
+fn quiet_device_select() {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none()
+        && std::env::var_os("NODEVICE_SELECT").is_none()
+    {
+        std::env::set_var("NODEVICE_SELECT", "1");
+    }
+}
+
 fn main() {
+    quiet_device_select();
     phygap::pipeline::allocator::keep_large_buffers();
     tracing_subscriber::fmt()
         .with_env_filter(

@@ -175,6 +175,16 @@ fn fingerprint(config: &TrainConfig) -> String {
     serde_json::to_string(config).expect("config serializes")
 }
 
+/// Whether a checkpoint's fingerprint was written with `config`: read back as a config, so
+/// that a checkpoint written before a setting existed matches a config holding that setting's
+/// default (the setting behaves as it did then).
+fn same_config(saved: &str, config: &TrainConfig) -> bool {
+    match serde_json::from_str::<TrainConfig>(saved) {
+        Ok(saved) => saved == *config,
+        Err(_) => saved == fingerprint(config),
+    }
+}
+
 /// GridMap of a run (METHOD.md §5): the mesh and the probes, rebuilt from the training state on
 /// their schedules and never checkpointed. `current` is false at the start of a session and right
 /// after a checkpoint, so an uninterrupted run and a resumed one rebuild at the same iteration
@@ -379,7 +389,7 @@ impl Run<'_> {
         let fp = fingerprint(self.config);
         let (mut state, resumed_from) = if resume && checkpoint.exists() {
             let (state, saved_fp) = TrainState::load(&checkpoint)?;
-            if saved_fp != fp {
+            if !same_config(&saved_fp, self.config) {
                 return Err(TrainError::ConfigChanged(checkpoint));
             }
             let it = state.iteration;
@@ -897,6 +907,26 @@ impl Run<'_> {
 mod tests {
     use super::*;
     use crate::pipeline::synth::{synth, Shape, SynthOptions};
+
+    #[test]
+    fn a_checkpoint_matches_its_config_and_one_written_before_a_setting_existed() {
+        let config = TrainConfig::default();
+        assert!(same_config(&fingerprint(&config), &config));
+        let changed = TrainConfig {
+            iterations: config.iterations + 1,
+            ..config.clone()
+        };
+        assert!(!same_config(&fingerprint(&config), &changed));
+        // A fingerprint from before `resolution` existed: the setting's default.
+        let mut older: serde_json::Value = serde_json::to_value(&config).unwrap();
+        older.as_object_mut().unwrap().remove("resolution");
+        assert!(same_config(&older.to_string(), &config));
+        let full = TrainConfig {
+            resolution: crate::core::resolution::Resolution::Full,
+            ..config
+        };
+        assert!(!same_config(&older.to_string(), &full));
+    }
 
     /// A short run on a small synthetic torus whose PolarDR stage rebuilds mesh and GridMap
     /// several times and crosses checkpoints.

@@ -17,3 +17,12 @@ CREATE UNIQUE INDEX jobs_by_request_key ON jobs (COALESCE(account, ''), request_
 -- The size of a capture's views, for the memory a job on it needs (0 for older captures).
 ALTER TABLE captures ADD COLUMN width BIGINT NOT NULL DEFAULT 0;
 ALTER TABLE captures ADD COLUMN height BIGINT NOT NULL DEFAULT 0;
+-- Webhooks: where a job's end is reported, and how its delivery goes (attempts, the last one's
+-- status, when the next is due, whether delivered or given up).
+ALTER TABLE jobs ADD COLUMN webhook_url TEXT;
+ALTER TABLE jobs ADD COLUMN webhook_attempts INTEGER NOT NULL DEFAULT 0;
+ALTER TABLE jobs ADD COLUMN webhook_status TEXT;
+ALTER TABLE jobs ADD COLUMN webhook_next_at BIGINT;
+ALTER TABLE jobs ADD COLUMN webhook_done BOOLEAN NOT NULL DEFAULT FALSE;
+CREATE INDEX jobs_with_webhooks_to_send ON jobs (webhook_next_at)
+    WHERE webhook_url IS NOT NULL AND NOT webhook_done;

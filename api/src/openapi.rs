@@ -46,6 +46,7 @@ pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out
         jobs::show,
         jobs::remove,
         jobs::events,
+        jobs::progress,
         jobs::cancel,
         jobs::restart,
         jobs::relight,

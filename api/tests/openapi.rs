@@ -596,8 +596,48 @@ async fn live_answers_match_the_declared_schemas() {
         assert!(answer.json["engines"]["backends"]["cpu"].is_string());
     }
 
-    // The trained job, its list, artifacts and viewer routes.
+    // The trained job, its history, list, artifacts and viewer routes.
     admin.wait_succeeded(&trained).await;
+    let history = "/v1/jobs/{id}/progress";
+    let answer = spec
+        .request(
+            &admin,
+            Method::GET,
+            history,
+            &format!("/v1/jobs/{trained}/progress"),
+        )
+        .await;
+    let events = answer.json["events"].as_array().unwrap().clone();
+    let kinds: Vec<&str> = events
+        .iter()
+        .map(|e| e["event"]["type"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds.first(), Some(&"started"), "{kinds:?}");
+    assert_eq!(kinds.last(), Some(&"finished"), "{kinds:?}");
+    assert!(
+        kinds.contains(&"step") && kinds.contains(&"evaluated"),
+        "{kinds:?}"
+    );
+    assert_eq!(answer.json["next"].as_u64(), Some(events.len() as u64));
+    let page = spec
+        .request(
+            &admin,
+            Method::GET,
+            history,
+            &format!("/v1/jobs/{trained}/progress?from=2&limit=1"),
+        )
+        .await;
+    assert_eq!(page.json["events"][0], events[2]);
+    assert_eq!(page.json["next"], 3);
+    let bad = spec
+        .request(
+            &admin,
+            Method::GET,
+            history,
+            &format!("/v1/jobs/{trained}/progress?from=soon"),
+        )
+        .await;
+    assert_eq!(bad.error(), (400, "invalid_query"));
     let answer = spec
         .request(
             &admin,

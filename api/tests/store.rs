@@ -361,6 +361,22 @@ async fn webhooks_are_taken_once_retried_and_recorded(s: &dyn Store) {
     assert_eq!(s.job("job_b").await.unwrap().unwrap().webhook, None);
 }
 
+async fn progress_events_are_kept_in_order_and_go_with_their_job(s: &dyn Store) {
+    s.submit(&new_job("job_a", 1), None).await.unwrap();
+    assert_eq!(s.next_event_seq("job_a").await.unwrap(), 0);
+    let events: Vec<String> = (0..5).map(|i| format!("{{\"n\":{i}}}")).collect();
+    s.append_events("job_a", 0, &events[..3]).await.unwrap();
+    s.append_events("job_a", 3, &events[3..]).await.unwrap();
+    assert_eq!(s.next_event_seq("job_a").await.unwrap(), 5);
+    let page = s.events("job_a", 1, 2).await.unwrap();
+    assert_eq!(page, [(1, events[1].clone()), (2, events[2].clone())]);
+    assert_eq!(s.events("job_a", 5, 10).await.unwrap(), []);
+    assert_eq!(s.events("job_b", 0, 10).await.unwrap(), []);
+    s.request_cancel("job_a", 2).await.unwrap();
+    assert_eq!(s.delete_job("job_a").await.unwrap(), DeleteOutcome::Deleted);
+    assert_eq!(s.events("job_a", 0, 10).await.unwrap(), []);
+}
+
 async fn idempotency_keys_are_per_account(s: &dyn Store) {
     let of = |id: &str, account: Option<&str>| NewJob {
         account: account.map(str::to_owned),
@@ -550,6 +566,7 @@ where
     idempotency_keys_are_per_account(fresh().await.as_ref()).await;
     restarted_jobs_run_again_resuming_or_afresh(fresh().await.as_ref()).await;
     webhooks_are_taken_once_retried_and_recorded(fresh().await.as_ref()).await;
+    progress_events_are_kept_in_order_and_go_with_their_job(fresh().await.as_ref()).await;
     concurrent_submits_with_one_key_create_one_job(fresh().await).await;
     cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;
     accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use(fresh().await.as_ref())

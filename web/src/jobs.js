@@ -113,9 +113,25 @@ async function submitJob(root) {
   }
 }
 
+/** The loss curve a training job's runs recorded so far (GET /v1/jobs/{id}/progress, page by page). */
+async function loadHistory(jobId) {
+  const points = [];
+  let from = 0;
+  for (;;) {
+    const page = await json(`/v1/jobs/${jobId}/progress?from=${from}`);
+    for (const { event } of page.events) {
+      if (event.type === 'step') points.push([event.iteration, event.loss]);
+    }
+    if (!page.events.length || page.next === from) break;
+    from = page.next;
+  }
+  curves.set(jobId, points);
+}
+
 async function refreshJobs(root) {
   const list = root.querySelector('#job-list');
   const { jobs } = await json('/v1/jobs?limit=50');
+  await Promise.all(jobs.filter((job) => job.kind === 'train').map((job) => loadHistory(job.id)));
   leaveJobsPage();
   list.replaceChildren();
   if (!jobs.length) list.append(el('p', 'muted', 'No jobs yet.'));
@@ -180,7 +196,7 @@ function updateCard(card, job) {
     }
     curves.set(job.id, points);
     const canvas = card.querySelector('.loss-curve');
-    // A job that ended before the page opened has no curve to show.
+    // The curve starts from the job's recorded history, so an ended job shows it too.
     canvas.hidden = !live && points.length < 2;
     if (!canvas.hidden) drawLossCurve(canvas, points, job.iterations);
   } else {

@@ -167,6 +167,8 @@ fn block_on<F: std::future::Future>(future: F) -> F::Output {
 /// Shared between the blocking job thread and its heartbeat task.
 struct Live {
     progress: Mutex<Progress>,
+    /// Events not yet recorded in the store (JSON), with the number the first of them gets.
+    events: Mutex<(u64, Vec<String>)>,
     dirty: Notify,
 }
 
@@ -176,6 +178,27 @@ impl Live {
             f(&mut progress);
         }
         self.dirty.notify_one();
+    }
+
+    /// Folds a training event into the progress and queues it for the job's history.
+    fn record(&self, event: &TrainEvent) {
+        if let (Ok(mut events), Ok(json)) = (self.events.lock(), serde_json::to_string(event)) {
+            events.1.push(json);
+        }
+        self.update(|p| apply_event(p, event));
+    }
+
+    /// The events to record, with the number of the first; they count as recorded from now.
+    fn take_events(&self) -> (u64, Vec<String>) {
+        match self.events.lock() {
+            Ok(mut events) => {
+                let taken = std::mem::take(&mut events.1);
+                let first = events.0;
+                events.0 += taken.len() as u64;
+                (first, taken)
+            }
+            Err(_) => (0, Vec::new()),
+        }
     }
 
     fn snapshot(&self) -> Progress {
@@ -245,11 +268,20 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
         control.cancel(CancelReason::User);
     }
     tracing::info!(attempt = job.attempts, "job started");
+    // The run's events follow the job's earlier runs' in its history.
+    let first_event = match state.store.next_event_seq(&job.id).await {
+        Ok(seq) => seq,
+        Err(e) => {
+            tracing::warn!(error = %e, "reading the job's history failed");
+            0
+        }
+    };
     let live = Arc::new(Live {
         progress: Mutex::new(Progress {
             stage: Some("starting".into()),
             ..job.progress.clone()
         }),
+        events: Mutex::new((first_event, Vec::new())),
         dirty: Notify::new(),
     });
     let done = CancellationToken::new();
@@ -361,6 +393,12 @@ async fn heartbeat_loop(
             _ = tokio::time::sleep(beat) => false,
         };
         let progress = live.snapshot();
+        let (first, events) = live.take_events();
+        if !events.is_empty() {
+            if let Err(e) = state.store.append_events(&job_id, first, &events).await {
+                tracing::warn!(error = %e, "recording progress events failed");
+            }
+        }
         match state
             .store
             .heartbeat(
@@ -465,7 +503,7 @@ fn execute_steps(
             std::fs::create_dir_all(&model_dir)
                 .map_err(|e| Stop::internal(format!("creating the model folder: {e}")))?;
             let mut on_event = |event: &TrainEvent| {
-                live.update(|p| apply_event(p, event));
+                live.record(event);
                 if let TrainEvent::Checkpoint { iteration } = event {
                     if let Err(Stop::Storage(e)) = upload_model(state, &job.id, &model_dir) {
                         // The next checkpoint tries again; a resume starts from the last upload.

@@ -760,6 +760,89 @@ pub async fn relight(
     Ok((StatusCode::CREATED, Json(record.into())))
 }
 
+/// Most events `GET /v1/jobs/{id}/progress` answers at once.
+const MAX_PROGRESS_EVENTS: usize = 1000;
+
+/// The query of `GET /v1/jobs/{id}/progress`.
+#[derive(Deserialize, IntoParams)]
+#[into_params(parameter_in = Query)]
+pub struct ProgressQuery {
+    /// The number of the first event to answer (0: from the start; the previous answer's
+    /// `next` to continue).
+    #[param(default = 0)]
+    from: Option<u64>,
+    /// Most events to answer, 1 to 1000 (default 1000).
+    #[param(default = 1000)]
+    limit: Option<usize>,
+}
+
+/// One recorded event of a run.
+#[derive(Serialize, ToSchema)]
+pub struct ProgressEvent {
+    /// Its number in the job's history (counted across the job's runs).
+    seq: u64,
+    /// The event as the run reported it: `type` started, step (iteration, stage, loss, losses,
+    /// num_surfels, elapsed_seconds, eta_seconds), evaluated (test_psnr), checkpoint, warning
+    /// or finished.
+    #[schema(value_type = Object)]
+    event: serde_json::Value,
+}
+
+/// A page of a job's history.
+#[derive(Serialize, ToSchema)]
+pub struct ProgressPage {
+    job_id: String,
+    events: Vec<ProgressEvent>,
+    /// The `from` that continues after this page (equal to the request's when it had none).
+    next: u64,
+}
+
+/// `GET /v1/jobs/{id}/progress?from=N`: the events the job's runs reported, from number `N`.
+#[utoipa::path(
+    get,
+    path = "/v1/jobs/{id}/progress",
+    tag = "jobs",
+    operation_id = "job_progress",
+    summary = "A job's progress history",
+    description = "Every event its runs reported (steps with their losses, evaluations, \
+        checkpoints, warnings), numbered across runs, from number `from`; a client polls with \
+        the previous answer's `next` (the event stream carries the latest state only).",
+    params(JobPath, ProgressQuery),
+    responses(
+        (status = OK, description = "Events from `from`", body = ProgressPage),
+        (status = BAD_REQUEST, description = "A query that does not parse (invalid_query)", body = ErrorBody),
+        (status = NOT_FOUND, description = "No such job the token may see (not_found)", body = ErrorBody),
+    )
+)]
+pub async fn progress(
+    State(state): State<AppState>,
+    Extension(caller): Extension<Caller>,
+    Path(JobPath { id }): Path<JobPath>,
+    query: Result<Query<ProgressQuery>, axum::extract::rejection::QueryRejection>,
+) -> Result<Json<ProgressPage>, ApiError> {
+    let Query(query) = query.map_err(|e| ApiError::bad_request("invalid_query", e.body_text()))?;
+    load_job(&state, &caller, &id).await?;
+    let from = query.from.unwrap_or(0);
+    let limit = query
+        .limit
+        .unwrap_or(MAX_PROGRESS_EVENTS)
+        .clamp(1, MAX_PROGRESS_EVENTS);
+    let rows = state.store.events(&id, from, limit).await?;
+    let next = rows.last().map_or(from, |(seq, _)| seq + 1);
+    let events = rows
+        .into_iter()
+        .map(|(seq, text)| ProgressEvent {
+            seq,
+            event: serde_json::from_str(&text).unwrap_or(serde_json::Value::Null),
+        })
+        .collect();
+    Ok(Json(ProgressPage {
+        job_id: id,
+        events,
+        next,
+    }))
+}
+
 /// The body of `POST /v1/jobs/{id}/restart` (optional: without one, the job runs again as it
 /// was).
 #[derive(Default, Deserialize, ToSchema)]

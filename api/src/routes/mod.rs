@@ -76,6 +76,12 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
         entry(Method::DELETE, "/v1/jobs/{id}", true, delete(jobs::remove)),
         entry(Method::GET, "/v1/jobs/{id}/events", true, get(jobs::events)),
         entry(
+            Method::GET,
+            "/v1/jobs/{id}/progress",
+            true,
+            get(jobs::progress),
+        ),
+        entry(
             Method::POST,
             "/v1/jobs/{id}/cancel",
             true,

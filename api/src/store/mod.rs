@@ -344,6 +344,23 @@ pub trait Store: Send + Sync + 'static {
         -> Result<Vec<String>, StoreError>;
     /// Queued and running jobs, of `account` only when one is given.
     async fn counts(&self, account: Option<&str>) -> Result<QueueCounts, StoreError>;
+    /// Appends a job's progress events (JSON objects) numbered from `first_seq`.
+    async fn append_events(
+        &self,
+        id: &str,
+        first_seq: u64,
+        events: &[String],
+    ) -> Result<(), StoreError>;
+    /// A job's recorded progress events from number `from`, at most `limit`, in order, as
+    /// (number, JSON object).
+    async fn events(
+        &self,
+        id: &str,
+        from: u64,
+        limit: usize,
+    ) -> Result<Vec<(u64, String)>, StoreError>;
+    /// The number the job's next progress event gets (one past the last recorded).
+    async fn next_event_seq(&self, id: &str) -> Result<u64, StoreError>;
     /// Takes the oldest webhook delivery due at `now` (a job that ended, with a webhook not yet
     /// delivered or given up, whose next attempt is due) for the caller until `lease_until`.
     async fn take_webhook(

@@ -30,9 +30,7 @@ const MIGRATIONS: &[(i32, &str)] = &[
     ),
     (
         3,
-        include_str!(
-            "../../migrations/postgres/0003_failure_codes_request_keys_view_sizes_webhooks.sql"
-        ),
+        include_str!("../../migrations/postgres/0003_operations.sql"),
     ),
 ];
 
@@ -402,6 +400,8 @@ impl Store for PostgresStore {
             return Ok(DeleteOutcome::InUse);
         }
         tx.execute("DELETE FROM jobs WHERE id = $1", &[&id]).await?;
+        tx.execute("DELETE FROM job_events WHERE job_id = $1", &[&id])
+            .await?;
         tx.commit().await?;
         Ok(DeleteOutcome::Deleted)
     }
@@ -605,6 +605,60 @@ impl Store for PostgresStore {
             .iter()
             .map(|r| r.try_get(0))
             .collect::<Result<_, _>>()?)
+    }
+
+    async fn append_events(
+        &self,
+        id: &str,
+        first_seq: u64,
+        events: &[String],
+    ) -> Result<(), StoreError> {
+        if events.is_empty() {
+            return Ok(());
+        }
+        let seqs: Vec<i64> = (0..events.len())
+            .map(|i| (first_seq + i as u64) as i64)
+            .collect();
+        let client = self.pool.get().await?;
+        client
+            .execute(
+                "INSERT INTO job_events (job_id, seq, event)
+                 SELECT $1, seq, event FROM UNNEST($2::BIGINT[], $3::TEXT[]) AS e(seq, event)
+                 ON CONFLICT (job_id, seq) DO UPDATE SET event = EXCLUDED.event",
+                &[&id, &seqs, &events],
+            )
+            .await?;
+        Ok(())
+    }
+
+    async fn events(
+        &self,
+        id: &str,
+        from: u64,
+        limit: usize,
+    ) -> Result<Vec<(u64, String)>, StoreError> {
+        let client = self.pool.get().await?;
+        let rows = client
+            .query(
+                "SELECT seq, event FROM job_events WHERE job_id = $1 AND seq >= $2
+                 ORDER BY seq LIMIT $3",
+                &[&id, &(from as i64), &(limit as i64)],
+            )
+            .await?;
+        rows.iter()
+            .map(|r| Ok((r.try_get::<_, i64>(0)?.max(0) as u64, r.try_get(1)?)))
+            .collect()
+    }
+
+    async fn next_event_seq(&self, id: &str) -> Result<u64, StoreError> {
+        let client = self.pool.get().await?;
+        let row = client
+            .query_one(
+                "SELECT COALESCE(MAX(seq) + 1, 0) FROM job_events WHERE job_id = $1",
+                &[&id],
+            )
+            .await?;
+        Ok(row.try_get::<_, i64>(0)?.max(0) as u64)
     }
 
     async fn take_webhook(

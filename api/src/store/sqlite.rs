@@ -45,6 +45,12 @@ CREATE TABLE IF NOT EXISTS jobs (
     account TEXT
 );
 CREATE INDEX IF NOT EXISTS jobs_by_state ON jobs(state, created_at);
+CREATE TABLE IF NOT EXISTS job_events (
+    job_id TEXT NOT NULL,
+    seq INTEGER NOT NULL,
+    event TEXT NOT NULL,
+    PRIMARY KEY (job_id, seq)
+);
 CREATE INDEX IF NOT EXISTS jobs_by_capture ON jobs(capture_id, state);
 ";
 
@@ -356,6 +362,7 @@ impl Store for SqliteStore {
                 return Ok(DeleteOutcome::InUse);
             }
             tx.execute("DELETE FROM jobs WHERE id = ?1", params![id])?;
+            tx.execute("DELETE FROM job_events WHERE job_id = ?1", params![id])?;
             tx.commit()?;
             Ok(DeleteOutcome::Deleted)
         })
@@ -553,6 +560,58 @@ impl Store for SqliteStore {
             }
             tx.commit()?;
             Ok(ids)
+        })
+    }
+
+    async fn append_events(
+        &self,
+        id: &str,
+        first_seq: u64,
+        events: &[String],
+    ) -> Result<(), StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            {
+                let mut insert = tx.prepare_cached(
+                    "INSERT OR REPLACE INTO job_events (job_id, seq, event) VALUES (?1, ?2, ?3)",
+                )?;
+                for (i, event) in events.iter().enumerate() {
+                    insert.execute(params![id, (first_seq + i as u64) as i64, event])?;
+                }
+            }
+            tx.commit()?;
+            Ok(())
+        })
+    }
+
+    async fn events(
+        &self,
+        id: &str,
+        from: u64,
+        limit: usize,
+    ) -> Result<Vec<(u64, String)>, StoreError> {
+        self.with(|c| {
+            let mut stmt = c.prepare_cached(
+                "SELECT seq, event FROM job_events WHERE job_id = ?1 AND seq >= ?2
+                 ORDER BY seq LIMIT ?3",
+            )?;
+            let rows = stmt
+                .query_map(params![id, from as i64, limit as i64], |r| {
+                    Ok((r.get::<_, i64>(0)?.max(0) as u64, r.get(1)?))
+                })?
+                .collect::<Result<_, _>>()?;
+            Ok(rows)
+        })
+    }
+
+    async fn next_event_seq(&self, id: &str) -> Result<u64, StoreError> {
+        self.with(|c| {
+            let next: i64 = c.query_row(
+                "SELECT COALESCE(MAX(seq) + 1, 0) FROM job_events WHERE job_id = ?1",
+                params![id],
+                |r| r.get(0),
+            )?;
+            Ok(next.max(0) as u64)
         })
     }
 

@@ -26,3 +26,11 @@ ALTER TABLE jobs ADD COLUMN webhook_next_at BIGINT;
 ALTER TABLE jobs ADD COLUMN webhook_done BOOLEAN NOT NULL DEFAULT FALSE;
 CREATE INDEX jobs_with_webhooks_to_send ON jobs (webhook_next_at)
     WHERE webhook_url IS NOT NULL AND NOT webhook_done;
+-- Progress events of each job (as its run reported them), read back by
+-- GET /v1/jobs/{id}/progress?from=N.
+CREATE TABLE job_events (
+    job_id TEXT NOT NULL,
+    seq BIGINT NOT NULL,
+    event TEXT NOT NULL,
+    PRIMARY KEY (job_id, seq)
+);

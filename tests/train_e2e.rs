@@ -372,3 +372,72 @@ fn a_capture_trains_at_its_working_resolution_and_evaluates_at_both() {
     assert!(full.psnr.unwrap() > working.psnr.unwrap() - 3.0);
     assert_ne!(working.psnr, full.psnr, "two resolutions, two comparisons");
 }
+
+/// `phygap diagnose`'s budget on a trained synthetic capture: every variant is scored, the
+/// ground truth of everything is the best of them, and the normals' tail is reported.
+#[test]
+fn the_loss_budget_scores_every_replacement() {
+    use phygap::io::model::Model;
+    use phygap::pipeline::diagnose::{diagnose, DiagnoseTruth};
+    use phygap::pipeline::reconstruction::Reconstruction;
+    let dir = tempfile::tempdir().unwrap();
+    let capture = synthetic_capture(dir.path(), 9, 32);
+    let model_dir = dir.path().join("model");
+    let config = TrainConfig {
+        gridmap: false,
+        ..small_config(200)
+    };
+    run(&capture, &model_dir, &config, false, None);
+    let reconstruction = Reconstruction::new(Model::load(&model_dir).unwrap()).unwrap();
+    let truth = DiagnoseTruth::discover(dir.path());
+    assert!(
+        truth.light.is_some() && truth.relight.is_some(),
+        "{truth:?}"
+    );
+    let report = diagnose(&reconstruction, &capture, &truth).unwrap();
+    let names: Vec<&str> = report.variants.iter().map(|v| v.name).collect();
+    assert_eq!(
+        names,
+        [
+            "learned",
+            "geometry",
+            "albedo",
+            "roughness",
+            "ior",
+            "light",
+            "albedo+light",
+            "materials+light",
+            "all"
+        ]
+    );
+    let psnr = |name: &str| {
+        report
+            .variants
+            .iter()
+            .find(|v| v.name == name)
+            .unwrap()
+            .s0_psnr
+    };
+    println!("{report:#?}");
+    assert!(
+        psnr("all") > psnr("learned"),
+        "the truth of everything is the ceiling"
+    );
+    assert!(report.variants[0].relit_psnr.is_some());
+    assert!(report
+        .variants
+        .iter()
+        .find(|v| v.name == "light")
+        .unwrap()
+        .relit_psnr
+        .is_none());
+    let normals = &report.normals;
+    assert!(normals.pixels > 100 && normals.p99_degrees >= normals.p90_degrees);
+    assert!(normals.p90_degrees >= normals.median_degrees);
+    let banded: usize = normals
+        .by_silhouette_distance
+        .iter()
+        .map(|b| b.pixels)
+        .sum();
+    assert_eq!(banded, normals.pixels);
+}

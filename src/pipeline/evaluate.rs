@@ -73,7 +73,7 @@ pub fn relight_metrics(
             view: view.name.clone(),
             source,
         };
-        let target = read_f64(path, 3, capture, Truth::Radiance)?;
+        let target = read_truth(path, 3, capture, Truth::Radiance)?;
         let rendered = relit.render(&view.camera)?;
         let pred = rendered.premultiplied(&rendered.shaded.s0);
         let g = rendered.gbuffers();
@@ -122,7 +122,7 @@ impl Means {
 
 /// What a ground-truth file holds, which decides how it is shrunk to a working resolution.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Truth {
+pub(crate) enum Truth {
     /// Radiance (Stokes, relit S0): block means, as the views themselves.
     Radiance,
     /// A G-buffer, zero on the background: means over the object's pixels.
@@ -133,7 +133,7 @@ enum Truth {
 
 /// A ground-truth image of a view of `capture` as `channels` f64 per pixel, at the capture's
 /// working resolution (shrunk by `capture.downscale` as its views were).
-fn read_f64(
+pub(crate) fn read_truth(
     path: &Path,
     channels: usize,
     capture: &Capture,
@@ -177,7 +177,7 @@ fn ground_truth_stokes(
     let gt = &view.ground_truth;
     match (&gt.s0, &gt.s1, &gt.s2) {
         (Some(a), Some(b), Some(c)) => {
-            let read = |path| read_f64(path, 3, capture, Truth::Radiance);
+            let read = |path| read_truth(path, 3, capture, Truth::Radiance);
             Ok(Some([read(a)?, read(b)?, read(c)?]))
         }
         _ => Ok(None),
@@ -279,7 +279,7 @@ pub fn evaluate(
         }
         let gt = &view.ground_truth;
         if let Some(path) = &gt.normal {
-            let truth = read_f64(path, 3, capture, Truth::Normal)?;
+            let truth = read_truth(path, 3, capture, Truth::Normal)?;
             let errors = metrics::normal_errors(g.normal.as_flattened(), &truth, mask);
             if let Ok(e) = errors {
                 means.add("normal_mae_deg", Some(e.mae_degrees));
@@ -290,13 +290,18 @@ pub fn evaluate(
             let pred = g.albedo.as_flattened();
             means.add(
                 "albedo_mae",
-                metrics::masked_mae(pred, &read_f64(path, 3, capture, Truth::GBuffer)?, 3, mask)
-                    .ok(),
+                metrics::masked_mae(
+                    pred,
+                    &read_truth(path, 3, capture, Truth::GBuffer)?,
+                    3,
+                    mask,
+                )
+                .ok(),
             );
         }
         if let Some(path) = &gt.roughness {
             // Ground truth stores GGX α; our roughness r has α = r².
-            let gt_r: Vec<f64> = read_f64(path, 1, capture, Truth::GBuffer)?
+            let gt_r: Vec<f64> = read_truth(path, 1, capture, Truth::GBuffer)?
                 .iter()
                 .map(|a| a.max(0.0).sqrt())
                 .collect();
@@ -310,7 +315,7 @@ pub fn evaluate(
                 "ior_mae",
                 metrics::masked_mae(
                     &g.ior,
-                    &read_f64(path, 1, capture, Truth::GBuffer)?,
+                    &read_truth(path, 1, capture, Truth::GBuffer)?,
                     1,
                     mask,
                 )

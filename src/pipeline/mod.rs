@@ -5,6 +5,7 @@
 pub mod allocator;
 pub mod backend;
 pub mod bench;
+pub mod diagnose;
 pub mod evaluate;
 pub mod export;
 pub mod mesh_extraction;

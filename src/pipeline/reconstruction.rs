@@ -135,6 +135,11 @@ impl Reconstruction {
         });
     }
 
+    /// The model it renders.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
     /// The mesh GridMap traces against, when the model renders with GridMap.
     pub fn mesh(&self) -> Option<&TriangleMesh> {
         self.mesh.as_ref()

@@ -2,6 +2,7 @@
 
 mod bench;
 mod check_shading;
+mod diagnose;
 mod eval;
 mod export;
 mod info;
@@ -35,6 +36,10 @@ enum Command {
     Render(render::RenderArgs),
     /// Evaluate a model on a capture's test views (JSON metrics).
     Eval(eval::EvalArgs),
+    /// The loss budget of a model: its test views with each learned component (geometry,
+    /// albedo, roughness, IoR, light) replaced by the capture's ground truth, and its normal
+    /// errors' distribution.
+    Diagnose(diagnose::DiagnoseArgs),
     /// Render a model under another environment map (relighting).
     Relight(relight::RelightArgs),
     /// Extract a model's surface as a triangle mesh (PLY or OBJ).
@@ -85,6 +90,7 @@ fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {
         }
         Command::Render(args) => render::run(&args),
         Command::Eval(args) => eval::run(&args),
+        Command::Diagnose(args) => diagnose::run(&args),
         Command::Relight(args) => relight::run(&args),
         Command::Mesh(args) => mesh::run(&args),
         Command::Export(args) => export::run(&args),

@@ -65,7 +65,13 @@ pub fn run(args: &SynthArgs) -> Result<()> {
     if let Some(sensor) = args.raw {
         let reference = args.out.join("reference");
         synth::synth(&reference, &options)?;
-        let capture = capture::load(&reference)?;
+        // The rendering is ours and the user asked for its size: no budget on its decoded bytes
+        // (48 views of 2448 × 2048 hold 9 GB).
+        let limits = capture::CaptureLimits {
+            max_decoded_bytes: u64::MAX,
+            ..capture::CaptureLimits::DEFAULT
+        };
+        let capture = capture::load_within(&reference, &limits)?;
         let full_scale = capture
             .views
             .iter()

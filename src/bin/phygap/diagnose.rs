@@ -1,0 +1,94 @@
+//! `phygap diagnose MODEL CAPTURE [--json]`: the loss budget of a trained model — its test
+//! views rendered with each learned component (geometry, albedo, roughness, IoR, light) in turn
+//! replaced by the capture's ground truth, the S0 and relit PSNR of each, and the distribution of
+//! its normals' errors (mean, median, 90th and 99th percentiles, by distance to the silhouette).
+//! The lighting and relighting maps come from the capture's `scene.json`.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use clap::Args;
+
+use phygap::core::resolution::Resolution;
+use phygap::io::capture::{self, LoadOptions};
+use phygap::io::model::Model;
+use phygap::pipeline::diagnose::{diagnose, DiagnoseTruth, Diagnosis};
+use phygap::pipeline::reconstruction::Reconstruction;
+
+#[derive(Args, Debug)]
+pub struct DiagnoseArgs {
+    /// Model folder written by `phygap train`.
+    pub model: PathBuf,
+    /// The capture it was trained on, with ground-truth G-buffers (normal, depth, albedo,
+    /// roughness, ior) on its test views.
+    pub capture: PathBuf,
+    /// Print only the JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+pub fn run(args: &DiagnoseArgs) -> Result<()> {
+    let model = Model::load(&args.model)?;
+    let downscale = model.info.working_resolution.map_or(1, |r| r.downscale);
+    let options = LoadOptions {
+        resolution: Resolution::Downscale(downscale),
+        ..LoadOptions::default()
+    };
+    let capture = capture::load_with(&args.capture, &options)?;
+    let truth = DiagnoseTruth::discover(&capture.root);
+    let reconstruction = Reconstruction::new(model)?;
+    let report = diagnose(&reconstruction, &capture, &truth)?;
+    if !args.json {
+        print!("{}", describe(&report));
+    }
+    println!("{}", serde_json::to_string_pretty(&report)?);
+    Ok(())
+}
+
+/// The budget as a table for people: each variant's PSNR and what the replacement gains.
+fn describe(report: &Diagnosis) -> String {
+    let learned = report.variants.first();
+    let gain = |value: f64, base: Option<f64>| match base {
+        Some(base) => format!("{:+.2}", value - base),
+        None => "–".to_owned(),
+    };
+    let mut text = format!(
+        "loss budget over {} test views (S0 PSNR dB; relit PSNR dB; the gain of each ground truth)\n\
+         {:<10} {:>8} {:>8} {:>8} {:>8}\n",
+        report.test_views, "replaced", "S0", "gain", "relit", "gain"
+    );
+    for v in &report.variants {
+        let relit = v.relit_psnr.map_or("–".to_owned(), |r| format!("{r:.2}"));
+        let relit_gain = match (v.relit_psnr, learned.and_then(|l| l.relit_psnr)) {
+            (Some(r), Some(base)) => format!("{:+.2}", r - base),
+            _ => "–".to_owned(),
+        };
+        text.push_str(&format!(
+            "{:<10} {:>8.2} {:>8} {:>8} {:>8}\n",
+            v.name,
+            v.s0_psnr,
+            gain(v.s0_psnr, learned.map(|l| l.s0_psnr)),
+            relit,
+            relit_gain
+        ));
+    }
+    let n = &report.normals;
+    text.push_str(&format!(
+        "normals over {} pixels: MAE {:.2}°, median {:.2}°, p90 {:.2}°, p99 {:.2}°, cosine distance {:.4}\n",
+        n.pixels, n.mae_degrees, n.median_degrees, n.p90_degrees, n.p99_degrees, n.cosine_distance
+    ));
+    for band in &n.by_silhouette_distance {
+        text.push_str(&format!(
+            "  {:>4.1}–{:<4} px from the silhouette: {:>7} pixels, MAE {:.2}°\n",
+            band.from,
+            if band.to.is_finite() {
+                format!("{:.1}", band.to)
+            } else {
+                "∞".to_owned()
+            },
+            band.pixels,
+            band.mae_degrees
+        ));
+    }
+    text
+}

@@ -1,0 +1,546 @@
+//! The loss budget of a trained model (`phygap diagnose`): where its error comes from. Each
+//! test view is rendered as the model renders it, then again with one learned component
+//! replaced by the capture's ground truth — the geometry (normals, depth and coverage), the
+//! albedo, the roughness, the IoR, the light — and with all of them; the S0 PSNR of each
+//! variant against the captured view, and against the relit ground truth under the relighting
+//! map, says what each component costs. The normals' errors are given as a distribution (mean,
+//! median, 90th and 99th percentiles, cosine distance) and by distance to the silhouette, where
+//! heavy tails live.
+//!
+//! Every variant shades through the same path as rendering (`Backend::shade` on G-buffers, the
+//! light GridMap over an environment with the model's mesh for occlusion), so a variant differs
+//! from the learned render only in what it replaces.
+
+use std::path::PathBuf;
+
+use glam::DVec3;
+use serde::Serialize;
+use thiserror::Error;
+
+use crate::core::camera::Camera;
+use crate::core::envmap::{CubeMap, EnvMapError};
+use crate::core::light::LightProbe;
+use crate::core::metrics::{self, MetricsError};
+use crate::core::raster::{GBuffers, RasterError};
+use crate::core::render::ShadingInputs;
+use crate::core::shading::ShadingError;
+use crate::formats::image_io::ImageError;
+use crate::io::capture::{Capture, Measurement, View};
+use crate::pipeline::evaluate::{read_truth, Truth};
+use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
+
+/// Ground truth a diagnosis uses beyond the capture's views.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DiagnoseTruth {
+    /// The lat-long map that lit the capture (`scene.json` → `env_map.train_test`).
+    pub light: Option<PathBuf>,
+    /// The lat-long map of the views' `relight_s0` (`scene.json` → `env_map.relight`).
+    pub relight: Option<PathBuf>,
+}
+
+impl DiagnoseTruth {
+    /// The maps `capture_dir/scene.json` names, where they exist.
+    pub fn discover(capture_dir: &std::path::Path) -> DiagnoseTruth {
+        let scene = std::fs::read_to_string(capture_dir.join("scene.json"))
+            .ok()
+            .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok());
+        let map = |key: &str| {
+            scene
+                .as_ref()
+                .and_then(|s| s["env_map"][key].as_str())
+                .map(|relative| capture_dir.join(relative))
+                .filter(|path| path.is_file())
+        };
+        DiagnoseTruth {
+            light: map("train_test"),
+            relight: map("relight"),
+        }
+    }
+}
+
+#[derive(Debug, Error)]
+pub enum DiagnoseError {
+    #[error(transparent)]
+    Reconstruction(#[from] ReconstructionError),
+    #[error(transparent)]
+    Raster(#[from] RasterError),
+    #[error(transparent)]
+    Shading(#[from] ShadingError),
+    #[error(transparent)]
+    Image(#[from] ImageError),
+    #[error(transparent)]
+    EnvMap(#[from] EnvMapError),
+    #[error("{view}: {source}")]
+    Metrics { view: String, source: MetricsError },
+    #[error("the capture has no test view with full Stokes and ground-truth G-buffers (normal, depth, albedo, roughness, ior)")]
+    NoGroundTruth,
+}
+
+/// One variant of the renders: what was replaced, and its S0 PSNR against the captured views
+/// and against the relit ground truth.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Variant {
+    pub name: &'static str,
+    pub s0_psnr: f64,
+    /// Under the relighting map (where the capture has one and relit ground truth).
+    pub relit_psnr: Option<f64>,
+}
+
+/// Normal errors at pixels within a band of distances to the silhouette.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SilhouetteBand {
+    /// Distances to the nearest background pixel, pixels: `[from, to)`.
+    pub from: f64,
+    pub to: f64,
+    pub pixels: usize,
+    pub mae_degrees: f64,
+}
+
+/// How the learned normals err against the ground truth, over every test view's object pixels.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NormalStats {
+    pub pixels: usize,
+    pub mae_degrees: f64,
+    pub median_degrees: f64,
+    pub p90_degrees: f64,
+    pub p99_degrees: f64,
+    pub cosine_distance: f64,
+    pub by_silhouette_distance: Vec<SilhouetteBand>,
+}
+
+/// The loss budget.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Diagnosis {
+    pub test_views: usize,
+    /// `learned` first, then each replacement.
+    pub variants: Vec<Variant>,
+    pub normals: NormalStats,
+}
+
+/// Distance bands of [`NormalStats::by_silhouette_distance`], pixels.
+const BANDS: [(f64, f64); 5] = [
+    (0.0, 1.5),
+    (1.5, 3.0),
+    (3.0, 6.0),
+    (6.0, 12.0),
+    (12.0, f64::INFINITY),
+];
+
+/// What a variant replaces.
+#[derive(Clone, Copy, Debug, Default)]
+struct Replace {
+    geometry: bool,
+    albedo: bool,
+    roughness: bool,
+    ior: bool,
+    light: bool,
+}
+
+/// Every variant: the learned render, each component alone, the two that trade off (albedo and
+/// light: a learned albedo too dark is compensated by a brighter learned light, so replacing
+/// either alone can look worse than both), the materials with the light, and everything.
+const VARIANTS: [(&str, Replace); 9] = [
+    ("learned", Replace::NONE),
+    (
+        "geometry",
+        Replace {
+            geometry: true,
+            ..Replace::NONE
+        },
+    ),
+    (
+        "albedo",
+        Replace {
+            albedo: true,
+            ..Replace::NONE
+        },
+    ),
+    (
+        "roughness",
+        Replace {
+            roughness: true,
+            ..Replace::NONE
+        },
+    ),
+    (
+        "ior",
+        Replace {
+            ior: true,
+            ..Replace::NONE
+        },
+    ),
+    (
+        "light",
+        Replace {
+            light: true,
+            ..Replace::NONE
+        },
+    ),
+    (
+        "albedo+light",
+        Replace {
+            albedo: true,
+            light: true,
+            ..Replace::NONE
+        },
+    ),
+    (
+        "materials+light",
+        Replace {
+            albedo: true,
+            roughness: true,
+            ior: true,
+            light: true,
+            geometry: false,
+        },
+    ),
+    (
+        "all",
+        Replace {
+            geometry: true,
+            albedo: true,
+            roughness: true,
+            ior: true,
+            light: true,
+        },
+    ),
+];
+
+impl Replace {
+    const NONE: Replace = Replace {
+        geometry: false,
+        albedo: false,
+        roughness: false,
+        ior: false,
+        light: false,
+    };
+}
+
+/// A test view's ground truth at the capture's working resolution.
+struct TruthView<'a> {
+    view: &'a View,
+    normal: Vec<f64>,
+    depth: Vec<f64>,
+    albedo: Vec<f64>,
+    /// Disney r (= √ of the GGX α the files hold).
+    roughness: Vec<f64>,
+    ior: Vec<f64>,
+    s0: Vec<f64>,
+    relit: Option<Vec<f64>>,
+    mask: Vec<bool>,
+}
+
+impl<'a> TruthView<'a> {
+    fn read(view: &'a View, capture: &Capture) -> Result<Option<Self>, ImageError> {
+        let gt = &view.ground_truth;
+        let (Some(normal), Some(depth), Some(albedo), Some(roughness), Some(ior)) =
+            (&gt.normal, &gt.depth, &gt.albedo, &gt.roughness, &gt.ior)
+        else {
+            return Ok(None);
+        };
+        let Measurement::Stokes { s0, .. } = &view.measurement else {
+            return Ok(None);
+        };
+        Ok(Some(TruthView {
+            view,
+            normal: read_truth(normal, 3, capture, Truth::Normal)?,
+            depth: read_truth(depth, 1, capture, Truth::GBuffer)?,
+            albedo: read_truth(albedo, 3, capture, Truth::GBuffer)?,
+            roughness: read_truth(roughness, 1, capture, Truth::GBuffer)?
+                .into_iter()
+                .map(|a| a.max(0.0).sqrt())
+                .collect(),
+            ior: read_truth(ior, 1, capture, Truth::GBuffer)?,
+            s0: s0.data.iter().map(|&v| f64::from(v)).collect(),
+            relit: gt
+                .relight_s0
+                .as_ref()
+                .map(|path| read_truth(path, 3, capture, Truth::Radiance))
+                .transpose()?,
+            mask: view.mask.data.iter().map(|&m| m > 0.5).collect(),
+        }))
+    }
+
+    /// `g` with the replaced components taken from the ground truth (object pixels only).
+    fn apply(&self, g: &GBuffers, replace: Replace) -> GBuffers {
+        let mut g = g.clone();
+        for p in 0..g.alpha.len() {
+            if !self.mask[p] {
+                continue;
+            }
+            let rgb = |v: &[f64]| [v[3 * p], v[3 * p + 1], v[3 * p + 2]];
+            if replace.geometry {
+                g.normal[p] = rgb(&self.normal);
+                g.depth[p] = self.depth[p];
+                g.alpha[p] = 1.0;
+            }
+            if replace.albedo {
+                g.albedo[p] = rgb(&self.albedo);
+            }
+            if replace.roughness {
+                g.roughness[p] = self.roughness[p];
+            }
+            if replace.ior {
+                g.ior[p] = self.ior[p];
+            }
+        }
+        g
+    }
+}
+
+/// The loss budget of `reconstruction` on `capture`'s test views that have full Stokes and
+/// ground-truth G-buffers (the capture loaded at the model's working resolution).
+pub fn diagnose(
+    reconstruction: &Reconstruction,
+    capture: &Capture,
+    truth: &DiagnoseTruth,
+) -> Result<Diagnosis, DiagnoseError> {
+    let _span = tracing::info_span!("diagnose").entered();
+    let views: Vec<TruthView> = capture
+        .test_views()
+        .map(|view| TruthView::read(view, capture))
+        .collect::<Result<Vec<_>, _>>()?
+        .into_iter()
+        .flatten()
+        .collect();
+    if views.is_empty() {
+        return Err(DiagnoseError::NoGroundTruth);
+    }
+    let up = reconstruction.model().world_up()?;
+    let size = reconstruction.model().envmap.size;
+    let load = |path: &PathBuf| CubeMap::load_latlong(path, up, size);
+    let truth_lit = truth
+        .light
+        .as_ref()
+        .map(|path| {
+            reconstruction
+                .relit(load(path)?)
+                .map_err(DiagnoseError::from)
+        })
+        .transpose()?;
+    let relit = truth
+        .relight
+        .as_ref()
+        .map(|path| {
+            reconstruction
+                .relit(load(path)?)
+                .map_err(DiagnoseError::from)
+        })
+        .transpose()?;
+    let scene = reconstruction.scene();
+    // Per variant: summed S0 PSNR and views, summed relit PSNR and views.
+    let mut sums = [(0.0, 0usize, 0.0, 0usize); VARIANTS.len()];
+    let mut normal_errors: Vec<(f64, f64, f64)> = Vec::new();
+    for truth_view in &views {
+        let camera = &truth_view.view.camera;
+        let raster = scene
+            .backend
+            .forward(scene.surfels, camera, &scene.settings)?;
+        let g = &raster.gbuffers;
+        collect_normal_errors(truth_view, g, &mut normal_errors);
+        for ((name, replace), sum) in VARIANTS.iter().zip(sums.iter_mut()) {
+            let light: &dyn LightProbe = match (replace.light, &truth_lit) {
+                (true, Some(lit)) => lit.light(),
+                (true, None) => continue,
+                (false, _) => scene.light,
+            };
+            let variant_g = truth_view.apply(g, *replace);
+            let psnr = |light: &dyn LightProbe, target: &[f64]| {
+                shaded_psnr(
+                    reconstruction,
+                    camera,
+                    &variant_g,
+                    light,
+                    target,
+                    truth_view,
+                )
+            };
+            sum.0 += psnr(light, &truth_view.s0)?;
+            sum.1 += 1;
+            // Relit, the light is the relighting map's: the light alone has no relit
+            // counterpart; the variants that replace more keep their replacements under it.
+            if let (Some(relit), Some(target)) = (&relit, &truth_view.relit) {
+                if *name != "light" {
+                    sum.2 += psnr(relit.light(), target)?;
+                    sum.3 += 1;
+                }
+            }
+        }
+    }
+    let variants = VARIANTS
+        .iter()
+        .zip(sums)
+        .filter(|(_, sum)| sum.1 > 0)
+        .map(|((name, _), (s0, n, relit, relit_n))| Variant {
+            name,
+            s0_psnr: s0 / n as f64,
+            relit_psnr: (relit_n > 0).then(|| relit / relit_n as f64),
+        })
+        .collect();
+    Ok(Diagnosis {
+        test_views: views.len(),
+        variants,
+        normals: normal_stats(normal_errors),
+    })
+}
+
+/// S0 PSNR (sRGB 8-bit inside the mask, as `phygap eval`) of `g` shaded under `light`.
+fn shaded_psnr(
+    reconstruction: &Reconstruction,
+    camera: &Camera,
+    g: &GBuffers,
+    light: &dyn LightProbe,
+    target: &[f64],
+    truth: &TruthView,
+) -> Result<f64, DiagnoseError> {
+    let scene = reconstruction.scene();
+    let inputs = ShadingInputs::new(g, camera);
+    let shaded = scene
+        .backend
+        .shade(camera, &inputs.buffers(g), light, scene.lut)?;
+    let pred: Vec<f64> = shaded
+        .s0
+        .iter()
+        .zip(&g.alpha)
+        .flat_map(|(v, &a)| (*v * a.clamp(0.0, 1.0)).to_array())
+        .collect();
+    metrics::psnr_srgb8(&pred, target, 3, Some(&truth.mask)).map_err(|source| {
+        DiagnoseError::Metrics {
+            view: truth.view.name.clone(),
+            source,
+        }
+    })
+}
+
+/// Each object pixel's normal error (degrees), cosine distance and distance to the silhouette.
+fn collect_normal_errors(truth: &TruthView, g: &GBuffers, out: &mut Vec<(f64, f64, f64)>) {
+    let distance = silhouette_distance(&truth.mask, g.width, g.height);
+    let pixels = truth
+        .normal
+        .chunks_exact(3)
+        .zip(&g.normal)
+        .zip(&truth.mask)
+        .zip(distance);
+    for (((gt, learned), &object), distance) in pixels {
+        let (gt, learned) = (DVec3::new(gt[0], gt[1], gt[2]), DVec3::from_array(*learned));
+        if !object || gt.length_squared() == 0.0 || learned.length_squared() == 0.0 {
+            continue;
+        }
+        let cos = gt.normalize().dot(learned.normalize()).abs().min(1.0);
+        out.push((cos.acos().to_degrees(), 1.0 - cos, distance));
+    }
+}
+
+/// Each pixel's distance to the nearest background pixel (two-pass chamfer distance, 1 and √2
+/// steps; the image border counts as background).
+fn silhouette_distance(mask: &[bool], width: usize, height: usize) -> Vec<f64> {
+    let big = (width + height) as f64;
+    let mut d: Vec<f64> = mask.iter().map(|&m| if m { big } else { 0.0 }).collect();
+    let at = |x: isize, y: isize, d: &[f64]| {
+        if x < 0 || y < 0 || x >= width as isize || y >= height as isize {
+            0.0
+        } else {
+            d[y as usize * width + x as usize]
+        }
+    };
+    let diagonal = std::f64::consts::SQRT_2;
+    for y in 0..height as isize {
+        for x in 0..width as isize {
+            let i = y as usize * width + x as usize;
+            let best = [
+                at(x - 1, y, &d) + 1.0,
+                at(x, y - 1, &d) + 1.0,
+                at(x - 1, y - 1, &d) + diagonal,
+                at(x + 1, y - 1, &d) + diagonal,
+            ]
+            .into_iter()
+            .fold(d[i], f64::min);
+            d[i] = best;
+        }
+    }
+    for y in (0..height as isize).rev() {
+        for x in (0..width as isize).rev() {
+            let i = y as usize * width + x as usize;
+            let best = [
+                at(x + 1, y, &d) + 1.0,
+                at(x, y + 1, &d) + 1.0,
+                at(x + 1, y + 1, &d) + diagonal,
+                at(x - 1, y + 1, &d) + diagonal,
+            ]
+            .into_iter()
+            .fold(d[i], f64::min);
+            d[i] = best;
+        }
+    }
+    d
+}
+
+fn normal_stats(mut errors: Vec<(f64, f64, f64)>) -> NormalStats {
+    let n = errors.len().max(1);
+    let mean = |f: &dyn Fn(&(f64, f64, f64)) -> f64| errors.iter().map(f).sum::<f64>() / n as f64;
+    let mae_degrees = mean(&|e| e.0);
+    let cosine_distance = mean(&|e| e.1);
+    let by_silhouette_distance = BANDS
+        .iter()
+        .map(|&(from, to)| {
+            let band: Vec<f64> = errors
+                .iter()
+                .filter(|e| e.2 >= from && e.2 < to)
+                .map(|e| e.0)
+                .collect();
+            SilhouetteBand {
+                from,
+                to,
+                pixels: band.len(),
+                mae_degrees: band.iter().sum::<f64>() / band.len().max(1) as f64,
+            }
+        })
+        .collect();
+    errors.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let quantile = |q: f64| {
+        errors
+            .get(((errors.len() as f64 - 1.0) * q).round().max(0.0) as usize)
+            .map_or(0.0, |e| e.0)
+    };
+    NormalStats {
+        pixels: errors.len(),
+        mae_degrees,
+        median_degrees: quantile(0.5),
+        p90_degrees: quantile(0.9),
+        p99_degrees: quantile(0.99),
+        cosine_distance,
+        by_silhouette_distance,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn silhouette_distances_grow_inwards() {
+        // A 7 × 5 image, object in the 5 × 3 middle.
+        let (w, h) = (7, 5);
+        let mask: Vec<bool> = (0..w * h)
+            .map(|p| (1..6).contains(&(p % w)) && (1..4).contains(&(p / w)))
+            .collect();
+        let d = silhouette_distance(&mask, w, h);
+        assert_eq!(d[0], 0.0);
+        assert_eq!(d[w + 1], 1.0, "an edge pixel");
+        assert_eq!(d[2 * w + 3], 2.0, "the centre");
+    }
+
+    #[test]
+    fn normal_statistics_report_the_tail() {
+        let mut errors: Vec<(f64, f64, f64)> =
+            (0..100).map(|i| (1.0, 0.0, 10.0 + i as f64)).collect();
+        errors[0] = (91.0, 1.0, 0.5);
+        let stats = normal_stats(errors);
+        assert_eq!(stats.pixels, 100);
+        assert!((stats.mae_degrees - 1.9).abs() < 1e-9);
+        assert_eq!((stats.median_degrees, stats.p99_degrees), (1.0, 1.0));
+        assert_eq!(stats.by_silhouette_distance[0].pixels, 1);
+        assert_eq!(stats.by_silhouette_distance[0].mae_degrees, 91.0);
+        assert_eq!(stats.by_silhouette_distance[4].pixels, 99);
+    }
+}

@@ -533,7 +533,7 @@ mod tests {
     #[test]
     fn normal_statistics_report_the_tail() {
         let mut errors: Vec<(f64, f64, f64)> =
-            (0..100).map(|i| (1.0, 0.0, 10.0 + i as f64)).collect();
+            (0..100).map(|i| (1.0, 0.0, 12.0 + i as f64)).collect();
         errors[0] = (91.0, 1.0, 0.5);
         let stats = normal_stats(errors);
         assert_eq!(stats.pixels, 100);

@@ -250,6 +250,23 @@ impl Bucket {
         Ok(count)
     }
 
+    /// Stores one file as the object `path`.
+    pub async fn upload_file(&self, path: &str, file: &Path) -> Result<(), BucketError> {
+        let bytes = tokio::fs::read(file).await.map_err(io_err(file))?;
+        self.store
+            .put(&self.key(path)?, PutPayload::from(bytes))
+            .await?;
+        Ok(())
+    }
+
+    /// Removes the object `path` (none there is no error).
+    pub async fn delete(&self, path: &str) -> Result<(), BucketError> {
+        match self.store.delete(&self.key(path)?).await {
+            Ok(()) | Err(object_store::Error::NotFound { .. }) => Ok(()),
+            Err(e) => Err(e.into()),
+        }
+    }
+
     /// Removes every object below `folder`.
     pub async fn delete_folder(&self, folder: &str) -> Result<(), BucketError> {
         let root = self.key(folder)?;

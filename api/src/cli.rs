@@ -131,6 +131,10 @@ pub struct ServeArgs {
     #[arg(long, env = "PHYGAP_RETENTION_DAYS",
           value_parser = clap::value_parser!(u32).range(1..=36_500))]
     pub retention_days: Option<u32>,
+    /// Remove resumable uploads (and their parts) untouched for this many hours.
+    #[arg(long, default_value_t = 24, env = "PHYGAP_UPLOAD_EXPIRY_HOURS",
+          value_parser = clap::value_parser!(u64).range(1..=8_760))]
+    pub upload_expiry_hours: u64,
     /// Largest upload (capture archive, environment map) in MiB; larger ones get 413.
     #[arg(long, default_value_t = 1024, env = "PHYGAP_MAX_UPLOAD_MB",
           value_parser = clap::value_parser!(u64).range(1..=1_048_576))]
@@ -231,6 +235,7 @@ impl ServeArgs {
         config.workers = self.workers;
         config.token = self.token.clone().filter(|t| !t.is_empty());
         config.max_upload_bytes = self.max_upload_mb << 20;
+        config.upload_expiry = std::time::Duration::from_secs(self.upload_expiry_hours * 3600);
         config.database_url = self.database_url.clone().filter(|url| !url.is_empty());
         config.artifact_url = self.artifact_url.clone().filter(|url| !url.is_empty());
         config.lease = std::time::Duration::from_secs(self.lease_seconds);

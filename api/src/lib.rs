@@ -9,8 +9,9 @@
 //! Layout of `--data-dir`: `phygap.sqlite3` (captures, jobs, queue, progress; unless a PostgreSQL
 //! `--database-url` holds them), `captures/ID/` (extracted captures), `jobs/ID/model/`
 //! (checkpoints), `jobs/ID/input/` (relight inputs), `artifacts/ID/` (downloadable results, unless
-//! an `--artifact-url` holds them), `tmp/` (uploads in progress; leftovers removed at start). With
-//! an object store, the folders other than `tmp/` are working copies of its objects.
+//! an `--artifact-url` holds them), `uploads/ID/` (parts of resumable uploads, unless the object
+//! store holds them), `tmp/` (uploads in progress; leftovers removed at start). With an object
+//! store, the folders other than `tmp/` are working copies of its objects.
 
 pub mod admission;
 pub mod archive;
@@ -33,6 +34,7 @@ pub mod routes;
 pub mod security_headers;
 pub mod slow_body;
 pub mod store;
+pub mod uploads;
 pub mod web;
 pub mod webhooks;
 
@@ -67,8 +69,10 @@ pub struct ServiceConfig {
     pub account_tokens: Vec<auth::AccountToken>,
     /// Jobs that ended, and unused captures uploaded, longer ago than this are removed.
     pub retention: Option<Duration>,
-    /// How often the retention sweeper runs.
+    /// How often the sweeper runs (retention, idle uploads).
     pub retention_sweep: Duration,
+    /// Resumable uploads untouched for this long are removed with their parts.
+    pub upload_expiry: Duration,
     /// Largest accepted request body (capture archive, environment map), bytes.
     pub max_upload_bytes: u64,
     pub extract_limits: ExtractLimits,
@@ -137,6 +141,7 @@ impl ServiceConfig {
             account_tokens: Vec::new(),
             retention: None,
             retention_sweep: Duration::from_secs(3600),
+            upload_expiry: Duration::from_secs(24 * 3600),
             max_upload_bytes: 1024 << 20,
             extract_limits: ExtractLimits::default(),
             lease: Duration::from_secs(30),

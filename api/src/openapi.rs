@@ -11,7 +11,7 @@ use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement
 use utoipa::openapi::{ContentBuilder, Ref, ResponseBuilder};
 use utoipa::{Modify, OpenApi, ToSchema};
 
-use crate::routes::{artifacts, captures, health, info, jobs, viewer};
+use crate::routes::{artifacts, captures, health, info, jobs, uploads, viewer};
 
 /// The command that rewrites the committed document.
 pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out api/openapi.yaml";
@@ -41,6 +41,11 @@ pub const REGENERATE: &str = "cargo run --release -p phygap-api -- openapi --out
         captures::upload,
         captures::show,
         captures::remove,
+        uploads::create,
+        uploads::show,
+        uploads::put_part,
+        uploads::commit,
+        uploads::remove,
         jobs::submit,
         jobs::list,
         jobs::show,

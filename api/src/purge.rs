@@ -1,7 +1,8 @@
 //! Removing captures and jobs together with everything stored for them — records, extracted
 //! captures, relight inputs, checkpoints, artifacts, in the data dir and in the object store —
 //! on request (`DELETE`) and by the retention sweeper, which removes jobs that ended more than
-//! `--retention-days` ago and captures that old that no job uses any more.
+//! `--retention-days` ago and captures that old that no job uses any more, and resumable uploads
+//! idle for `--upload-expiry-hours` ([`crate::uploads::sweep_idle`]).
 
 use std::time::Duration;
 
@@ -89,17 +90,27 @@ pub async fn sweep(
     Ok((jobs, captures))
 }
 
-/// The retention sweeper: a pass every `config.retention_sweep` until shutdown (none without a
-/// retention setting).
+/// The sweeper: a pass every `config.retention_sweep` until shutdown, removing idle uploads,
+/// and old jobs and captures when there is a retention setting. Only processes serving the API
+/// run it (they hold the uploads' parts when there is no object store).
 pub fn spawn_sweeper(state: &AppState) -> Option<JoinHandle<()>> {
-    let retention = state.config.retention?;
+    if !state.config.api {
+        return None;
+    }
     let state = state.clone();
     Some(tokio::spawn(async move {
         loop {
-            match sweep(&state, retention, now_ms()).await {
-                Ok((0, 0)) => {}
-                Ok((jobs, captures)) => tracing::info!(jobs, captures, "retention: removed"),
-                Err(e) => tracing::error!(error = %e, "retention sweep failed"),
+            if let Some(retention) = state.config.retention {
+                match sweep(&state, retention, now_ms()).await {
+                    Ok((0, 0)) => {}
+                    Ok((jobs, captures)) => tracing::info!(jobs, captures, "retention: removed"),
+                    Err(e) => tracing::error!(error = %e, "retention sweep failed"),
+                }
+            }
+            match crate::uploads::sweep_idle(&state, now_ms()).await {
+                Ok(0) => {}
+                Ok(uploads) => tracing::info!(uploads, "idle uploads removed"),
+                Err(e) => tracing::error!(error = %e, "sweeping idle uploads failed"),
             }
             tokio::select! {
                 _ = state.shutdown.cancelled() => break,

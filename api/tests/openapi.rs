@@ -6,11 +6,13 @@ mod common;
 
 use std::collections::{BTreeMap, BTreeSet};
 
+use base64::Engine as _;
 use common::*;
 use phygap_api::auth::AccountToken;
 use phygap_api::openapi::REGENERATE;
 use reqwest::Method;
 use serde_json::{json, Value};
+use sha2::Digest as _;
 
 const ADMIN: &str = "admin-token-for-the-openapi-test";
 const ACCOUNT: &str = "account-token-for-the-openapi-test";
@@ -585,6 +587,125 @@ async fn live_answers_match_the_declared_schemas() {
         .check(Method::POST, restart, post(json!({})).await.unwrap())
         .await;
     assert_eq!(answer.error(), (409, "job_not_restartable"));
+
+    // A resumable upload: created, a part refused and sent, incomplete, committed twice; one
+    // abandoned.
+    let archive = capture_zip();
+    let create = |body: Value| {
+        admin
+            .client
+            .post(admin.url("/v1/uploads"))
+            .json(&body)
+            .send()
+    };
+    let answer = spec
+        .check(
+            Method::POST,
+            "/v1/uploads",
+            create(json!({"size": 0})).await.unwrap(),
+        )
+        .await;
+    assert_eq!(answer.error(), (422, "invalid_upload"));
+    let answer = spec
+        .check(
+            Method::POST,
+            "/v1/uploads",
+            create(json!({"size": archive.len(), "part_size": 65536}))
+                .await
+                .unwrap(),
+        )
+        .await;
+    assert_eq!(answer.status, 201);
+    let upload_id = answer.json["id"].as_str().unwrap().to_owned();
+    let parts: Vec<&[u8]> = archive.chunks(65536).collect();
+    let put = |index: usize, bytes: &[u8], digest_of: &[u8]| {
+        admin
+            .client
+            .put(admin.url(&format!("/v1/uploads/{upload_id}/parts/{index}")))
+            .header(
+                "content-digest",
+                format!(
+                    "sha-256=:{}:",
+                    base64::engine::general_purpose::STANDARD
+                        .encode(sha2::Sha256::digest(digest_of))
+                ),
+            )
+            .body(bytes.to_vec())
+            .send()
+    };
+    let part_route = "/v1/uploads/{id}/parts/{index}";
+    let answer = spec
+        .check(
+            Method::PUT,
+            part_route,
+            put(0, parts[0], b"other").await.unwrap(),
+        )
+        .await;
+    assert_eq!(answer.error(), (400, "digest_mismatch"));
+    let commit_route = "/v1/uploads/{id}/commit";
+    let commit_path = format!("/v1/uploads/{upload_id}/commit");
+    if parts.len() > 1 {
+        let answer = spec
+            .request(&admin, Method::POST, commit_route, &commit_path)
+            .await;
+        assert_eq!(answer.error(), (409, "upload_incomplete"));
+    }
+    for (index, part) in parts.iter().enumerate() {
+        let answer = spec
+            .check(
+                Method::PUT,
+                part_route,
+                put(index, part, part).await.unwrap(),
+            )
+            .await;
+        assert_eq!(answer.status, 200);
+    }
+    let answer = spec
+        .request(
+            &admin,
+            Method::GET,
+            "/v1/uploads/{id}",
+            &format!("/v1/uploads/{upload_id}"),
+        )
+        .await;
+    assert_eq!(
+        answer.json["received"].as_array().unwrap().len(),
+        parts.len()
+    );
+    let answer = spec
+        .request(&admin, Method::POST, commit_route, &commit_path)
+        .await;
+    assert_eq!((answer.status, &answer.json["views"]), (201, &json!(10)));
+    let answer = spec
+        .request(&admin, Method::POST, commit_route, &commit_path)
+        .await;
+    assert_eq!(answer.status, 200);
+    let answer = spec
+        .request(
+            &admin,
+            Method::GET,
+            "/v1/uploads/{id}",
+            "/v1/uploads/upl_none",
+        )
+        .await;
+    assert_eq!(answer.error(), (404, "not_found"));
+    let answer = spec
+        .check(
+            Method::POST,
+            "/v1/uploads",
+            create(json!({"size": 10})).await.unwrap(),
+        )
+        .await;
+    let abandoned = answer.json["id"].as_str().unwrap().to_owned();
+    let answer = spec
+        .request(
+            &admin,
+            Method::DELETE,
+            "/v1/uploads/{id}",
+            &format!("/v1/uploads/{abandoned}"),
+        )
+        .await;
+    assert_eq!(answer.status, 204);
 
     // What the deployment offers, to the admin and to an account.
     for client in [&admin, &account] {

@@ -1,5 +1,5 @@
 //! The Python client (`clients/python`) against a real service: `clients/python/tests/
-//! test_client.py` uploads, trains, follows the progress, downloads (and resumes a download),
+//! test_client.py` uploads (in resumable parts, interrupted and resumed), trains, follows the progress, downloads (and resumes a download),
 //! relights and meets the service's errors. Needs `python3` with `httpx` (`.ci/run` installs
 //! it); skips with a notice without them, except under `CI=true`.
 
@@ -28,8 +28,8 @@ async fn the_python_client_drives_a_whole_session() {
     }
     let (_dir, t) = TestServer::start_fresh().await;
     let scratch = tempfile::tempdir().unwrap();
-    let capture = scratch.path().join("capture.zip");
-    std::fs::write(&capture, capture_zip()).unwrap();
+    let capture = scratch.path().join("capture.tar");
+    std::fs::write(&capture, padded_capture_tar()).unwrap();
     let envmap = scratch.path().join("studio.exr");
     let sky = phygap::formats::image_io::Image::filled(32, 16, 3, 0.8);
     phygap::formats::image_io::write_exr(&envmap, &sky).unwrap();

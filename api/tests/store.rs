@@ -10,8 +10,9 @@ use std::sync::Arc;
 use common::postgres::TempPostgres;
 use phygap::core::config::TrainConfig;
 use phygap_api::store::{
-    CaptureRecord, DeleteOutcome, Finish, JobSpec, JobState, NewJob, PostgresStore, Progress,
-    QueueCounts, SqliteStore, Store, StoreError,
+    CaptureRecord, DeleteOutcome, Finish, JobSpec, JobState, NewJob, PartOutcome, PostgresStore,
+    Progress, QueueCounts, SqliteStore, Store, StoreError, UploadEnd, UploadPart, UploadRecord,
+    UploadState,
 };
 
 fn new_job(id: &str, created_at: i64) -> NewJob {
@@ -550,6 +551,105 @@ async fn accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use
 }
 
 /// Runs every check, each on a fresh store from `fresh`.
+fn part(index: u32, sha: char) -> UploadPart {
+    UploadPart {
+        index,
+        size: 100,
+        sha256: sha.to_string().repeat(64),
+    }
+}
+
+async fn uploads_take_parts_until_one_commit_settles_them(s: &dyn Store) {
+    let upload = UploadRecord {
+        id: "upl_1".into(),
+        account: Some("alice".into()),
+        size: 250,
+        part_size: 100,
+        sha256: Some("f".repeat(64)),
+        state: UploadState::Open,
+        parts: Vec::new(),
+        created_at: 10,
+        updated_at: 10,
+    };
+    s.create_upload(&upload).await.unwrap();
+    assert_eq!(s.upload("upl_1").await.unwrap().as_ref(), Some(&upload));
+    assert_eq!(s.upload("upl_none").await.unwrap(), None);
+    // Parts in any order; one sent again replaces the first, which is handed back.
+    for (p, now) in [(part(2, 'a'), 11), (part(0, 'b'), 12), (part(0, 'c'), 13)] {
+        let outcome = s.record_part("upl_1", &p, now).await.unwrap();
+        let replaced = (p.sha256.starts_with('c')).then(|| part(0, 'b'));
+        assert_eq!(outcome, PartOutcome::Recorded { replaced });
+    }
+    let stored = s.upload("upl_1").await.unwrap().unwrap();
+    assert_eq!(stored.parts, [part(0, 'c'), part(2, 'a')]);
+    assert_eq!(stored.updated_at, 13);
+    assert_eq!(
+        s.record_part("upl_none", &part(0, 'a'), 14).await.unwrap(),
+        PartOutcome::NotFound
+    );
+
+    // One commit at a time; parts are refused meanwhile; a lease that ran out is taken over.
+    let taken = s.begin_commit("upl_1", 20, 100).await.unwrap().unwrap();
+    assert_eq!(taken.state, UploadState::Committing { until: 100 });
+    assert_eq!(taken.parts.len(), 2);
+    assert_eq!(s.begin_commit("upl_1", 50, 130).await.unwrap(), None);
+    assert_eq!(
+        s.record_part("upl_1", &part(1, 'd'), 51).await.unwrap(),
+        PartOutcome::Closed
+    );
+    assert!(s.begin_commit("upl_1", 101, 200).await.unwrap().is_some());
+    // Reopened by a failure of the service: parts again, then committed for good.
+    s.end_commit("upl_1", &UploadEnd::Reopened, 102)
+        .await
+        .unwrap();
+    assert!(matches!(
+        s.record_part("upl_1", &part(1, 'd'), 103).await.unwrap(),
+        PartOutcome::Recorded { replaced: None }
+    ));
+    s.begin_commit("upl_1", 104, 300).await.unwrap().unwrap();
+    let end = UploadEnd::Committed {
+        capture_id: "cap_9".into(),
+    };
+    s.end_commit("upl_1", &end, 105).await.unwrap();
+    let committed = s.upload("upl_1").await.unwrap().unwrap();
+    assert_eq!(
+        committed.state,
+        UploadState::Committed {
+            capture_id: "cap_9".into()
+        }
+    );
+    assert!(committed.parts.is_empty());
+    assert_eq!(s.begin_commit("upl_1", 106, 400).await.unwrap(), None);
+
+    // A refused one keeps its answer; idle ones are found by their last touch; deletion.
+    s.create_upload(&UploadRecord {
+        id: "upl_2".into(),
+        created_at: 200,
+        updated_at: 200,
+        ..upload.clone()
+    })
+    .await
+    .unwrap();
+    s.begin_commit("upl_2", 201, 500).await.unwrap().unwrap();
+    let refused = UploadEnd::Failed {
+        code: "invalid_archive".into(),
+        message: "corrupt".into(),
+    };
+    s.end_commit("upl_2", &refused, 202).await.unwrap();
+    assert_eq!(
+        s.upload("upl_2").await.unwrap().unwrap().state,
+        UploadState::Failed {
+            code: "invalid_archive".into(),
+            message: "corrupt".into()
+        }
+    );
+    assert_eq!(s.uploads_idle_before(150).await.unwrap(), ["upl_1"]);
+    assert!(s.delete_upload("upl_1").await.unwrap());
+    assert!(!s.delete_upload("upl_1").await.unwrap());
+    assert_eq!(s.upload("upl_1").await.unwrap(), None);
+    assert_eq!(s.uploads_idle_before(i64::MAX).await.unwrap(), ["upl_2"]);
+}
+
 async fn the_suite<F, Fut>(fresh: F)
 where
     F: Fn() -> Fut,
@@ -569,6 +669,7 @@ where
     progress_events_are_kept_in_order_and_go_with_their_job(fresh().await.as_ref()).await;
     concurrent_submits_with_one_key_create_one_job(fresh().await).await;
     cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;
+    uploads_take_parts_until_one_commit_settles_them(fresh().await.as_ref()).await;
     accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use(fresh().await.as_ref())
         .await;
 }

@@ -34,3 +34,26 @@ CREATE TABLE job_events (
     event TEXT NOT NULL,
     PRIMARY KEY (job_id, seq)
 );
+-- Resumable uploads (api/src/uploads.rs): what each declared, where it stands, and its parts.
+CREATE TABLE uploads (
+    id TEXT PRIMARY KEY,
+    account TEXT,
+    size BIGINT NOT NULL,
+    part_size BIGINT NOT NULL,
+    sha256 TEXT,
+    state TEXT NOT NULL,
+    lease_until BIGINT,
+    capture_id TEXT,
+    error_code TEXT,
+    error TEXT,
+    created_at BIGINT NOT NULL,
+    updated_at BIGINT NOT NULL
+);
+CREATE INDEX uploads_by_update ON uploads (updated_at);
+CREATE TABLE upload_parts (
+    upload_id TEXT NOT NULL REFERENCES uploads (id) ON DELETE CASCADE,
+    idx INTEGER NOT NULL,
+    size BIGINT NOT NULL,
+    sha256 TEXT NOT NULL,
+    PRIMARY KEY (upload_id, idx)
+);

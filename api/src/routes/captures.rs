@@ -52,6 +52,12 @@ pub struct CapturePath {
     id: String,
 }
 
+impl CaptureView {
+    pub fn id(&self) -> &str {
+        &self.id
+    }
+}
+
 impl From<CaptureRecord> for CaptureView {
     fn from(c: CaptureRecord) -> Self {
         CaptureView {
@@ -266,7 +272,7 @@ fn extract_and_file(
 /// Extracts and validates an upload on the blocking pool, copies it to the deployment's object
 /// store where there is one (so workers elsewhere can fetch it), then records it; a capture
 /// that cannot be stored or recorded is removed again.
-async fn ingest(
+pub(crate) async fn ingest(
     state: AppState,
     staging: TempDir,
     id: String,

@@ -893,17 +893,9 @@ pub async fn restart(
     Path(JobPath { id }): Path<JobPath>,
     body: Result<Bytes, BytesRejection>,
 ) -> Result<Json<JobView>, ApiError> {
-    let body = body.map_err(|e| match e.status() {
-        StatusCode::PAYLOAD_TOO_LARGE => ApiError::too_large(e.body_text()),
-        status => ApiError::new(status, "invalid_body", e.body_text()),
-    })?;
-    let request: RestartRequest = if body.iter().all(u8::is_ascii_whitespace) {
-        RestartRequest::default()
-    } else {
-        let value: serde_json::Value = serde_json::from_slice(&body)
-            .map_err(|e| ApiError::bad_request("invalid_json", format!("request body: {e}")))?;
-        serde_json::from_value(value)
-            .map_err(|e| ApiError::unprocessable("invalid_request", e.to_string()))?
+    let request: RestartRequest = match body {
+        Ok(bytes) if bytes.iter().all(u8::is_ascii_whitespace) => RestartRequest::default(),
+        body => crate::routes::json_request(body)?,
     };
     let job = load_job(&state, &caller, &id).await?;
     if !matches!(job.state, JobState::Failed | JobState::Cancelled) {

@@ -8,11 +8,12 @@ pub(crate) mod conditional;
 pub(crate) mod health;
 pub(crate) mod info;
 pub(crate) mod jobs;
+pub(crate) mod uploads;
 pub(crate) mod viewer;
 
 use axum::extract::DefaultBodyLimit;
 use axum::http::Method;
-use axum::routing::{delete, get, post, MethodRouter};
+use axum::routing::{delete, get, post, put, MethodRouter};
 use axum::Router;
 use tower_http::catch_panic::CatchPanicLayer;
 
@@ -21,6 +22,24 @@ use crate::error::{
     panic_response,
 };
 use crate::AppState;
+
+/// A small JSON request body, read whole: 413 past the route's body limit, 408 when too slow,
+/// 400 `invalid_json` when it does not parse, 422 `invalid_request` when it is not a `T` (an
+/// unknown field included).
+pub(crate) fn json_request<T: serde::de::DeserializeOwned>(
+    body: Result<axum::body::Bytes, axum::extract::rejection::BytesRejection>,
+) -> Result<T, crate::error::ApiError> {
+    use crate::error::ApiError;
+    let body = body.map_err(|e| match e.status() {
+        axum::http::StatusCode::PAYLOAD_TOO_LARGE => ApiError::too_large(e.body_text()),
+        _ if crate::slow_body::is_too_slow(&e) => captures::body_error(&e),
+        status => ApiError::new(status, "invalid_body", e.body_text()),
+    })?;
+    let value: serde_json::Value = serde_json::from_slice(&body)
+        .map_err(|e| ApiError::bad_request("invalid_json", format!("request body: {e}")))?;
+    serde_json::from_value(value)
+        .map_err(|e| ApiError::unprocessable("invalid_request", e.to_string()))
+}
 
 /// One route: method, path template (axum syntax), and whether the bearer token guards it.
 pub struct RouteEntry {
@@ -59,6 +78,31 @@ pub fn route_table(max_upload_bytes: u64) -> Vec<RouteEntry> {
             post(captures::upload).layer(DefaultBodyLimit::disable()),
         ),
         entry(Method::GET, "/v1/captures/{id}", true, get(captures::show)),
+        entry(
+            Method::POST,
+            "/v1/uploads",
+            true,
+            post(uploads::create).layer(DefaultBodyLimit::max(jobs::MAX_SUBMIT_BYTES)),
+        ),
+        entry(Method::GET, "/v1/uploads/{id}", true, get(uploads::show)),
+        entry(
+            Method::DELETE,
+            "/v1/uploads/{id}",
+            true,
+            delete(uploads::remove),
+        ),
+        entry(
+            Method::PUT,
+            "/v1/uploads/{id}/parts/{index}",
+            true,
+            put(uploads::put_part).layer(DefaultBodyLimit::disable()),
+        ),
+        entry(
+            Method::POST,
+            "/v1/uploads/{id}/commit",
+            true,
+            post(uploads::commit),
+        ),
         entry(
             Method::DELETE,
             "/v1/captures/{id}",

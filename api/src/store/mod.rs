@@ -254,6 +254,76 @@ pub enum Finish {
     },
 }
 
+/// A resumable upload as stored ([`crate::uploads`]): what it declared, where it stands, and
+/// the parts received (ascending by number).
+#[derive(Clone, Debug, PartialEq)]
+pub struct UploadRecord {
+    /// `upl_…`.
+    pub id: String,
+    pub account: Option<String>,
+    /// The archive's size, bytes.
+    pub size: u64,
+    /// Bytes a part (the last may be shorter).
+    pub part_size: u64,
+    /// The whole archive's declared SHA-256 (lower-case hexadecimal).
+    pub sha256: Option<String>,
+    pub state: UploadState,
+    pub parts: Vec<UploadPart>,
+    /// Unix ms.
+    pub created_at: i64,
+    /// The last part or commit (unix ms): an upload idle for the expiry is removed.
+    pub updated_at: i64,
+}
+
+/// Where an upload stands.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum UploadState {
+    /// Receiving parts.
+    Open,
+    /// A commit holds it until `until` (unix ms); after that another may take it over.
+    Committing { until: i64 },
+    /// It became this capture.
+    Committed { capture_id: String },
+    /// Its commit was refused with this answer.
+    Failed { code: String, message: String },
+}
+
+/// One received part.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UploadPart {
+    /// From 0.
+    pub index: u32,
+    pub size: u64,
+    /// Lower-case hexadecimal SHA-256.
+    pub sha256: String,
+}
+
+/// What recording a part did.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PartOutcome {
+    /// Recorded; `replaced` is the part of that number recorded before, if any.
+    Recorded {
+        replaced: Option<UploadPart>,
+    },
+    /// The upload no longer takes parts (being committed, committed or failed).
+    Closed,
+    NotFound,
+}
+
+/// How a commit ended.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum UploadEnd {
+    Committed {
+        capture_id: String,
+    },
+    Failed {
+        code: String,
+        message: String,
+    },
+    /// A failure of the service's own: open again, to be committed again.
+    Reopened,
+}
+
 /// Result of deleting a capture or a job.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DeleteOutcome {
@@ -377,6 +447,32 @@ pub trait Store: Send + Sync + 'static {
         status: &str,
         next_at: Option<i64>,
     ) -> Result<(), StoreError>;
+    /// Records a new upload (open, without parts).
+    async fn create_upload(&self, upload: &UploadRecord) -> Result<(), StoreError>;
+    /// An upload with its parts.
+    async fn upload(&self, id: &str) -> Result<Option<UploadRecord>, StoreError>;
+    /// Records a received part of an open upload (replacing one of the same number) and marks
+    /// the upload touched at `now`.
+    async fn record_part(
+        &self,
+        id: &str,
+        part: &UploadPart,
+        now: i64,
+    ) -> Result<PartOutcome, StoreError>;
+    /// Takes an open upload (or one whose commit lease ended before `now`) for a commit until
+    /// `until`; `None` when it is not open or another commit holds it.
+    async fn begin_commit(
+        &self,
+        id: &str,
+        now: i64,
+        until: i64,
+    ) -> Result<Option<UploadRecord>, StoreError>;
+    /// Settles a commit: committed or failed (its parts forgotten), or open again.
+    async fn end_commit(&self, id: &str, end: &UploadEnd, now: i64) -> Result<(), StoreError>;
+    /// Deletes an upload's record and parts' records; whether there was one.
+    async fn delete_upload(&self, id: &str) -> Result<bool, StoreError>;
+    /// Uploads last touched before `before` (unix ms), in any state.
+    async fn uploads_idle_before(&self, before: i64) -> Result<Vec<String>, StoreError>;
 }
 
 pub(crate) fn corrupt(id: &str, column: &'static str, problem: impl ToString) -> StoreError {
@@ -478,6 +574,74 @@ impl RawCapture {
 }
 
 /// Message of a job failed because its workers kept dying.
+/// An upload's row as read, before its state is parsed.
+pub(crate) struct RawUpload {
+    pub id: String,
+    pub account: Option<String>,
+    pub size: i64,
+    pub part_size: i64,
+    pub sha256: Option<String>,
+    pub state: String,
+    pub lease_until: Option<i64>,
+    pub capture_id: Option<String>,
+    pub error_code: Option<String>,
+    pub error: Option<String>,
+    pub created_at: i64,
+    pub updated_at: i64,
+}
+
+/// The columns of `uploads` in [`RawUpload`]'s order.
+pub(crate) const UPLOAD_COLUMNS: &str = "id, account, size, part_size, sha256, state, \
+                                          lease_until, capture_id, error_code, error, \
+                                          created_at, updated_at";
+
+impl RawUpload {
+    pub fn parse(self, parts: Vec<UploadPart>) -> Result<UploadRecord, StoreError> {
+        let bad = |problem: &str| corrupt(&self.id, "state", problem);
+        let state = match self.state.as_str() {
+            "open" => UploadState::Open,
+            "committing" => UploadState::Committing {
+                until: self
+                    .lease_until
+                    .ok_or_else(|| bad("committing without a lease"))?,
+            },
+            "committed" => UploadState::Committed {
+                capture_id: self
+                    .capture_id
+                    .clone()
+                    .ok_or_else(|| bad("committed without a capture"))?,
+            },
+            "failed" => UploadState::Failed {
+                code: self.error_code.clone().unwrap_or_default(),
+                message: self.error.clone().unwrap_or_default(),
+            },
+            other => return Err(bad(&format!("unknown upload state `{other}`"))),
+        };
+        Ok(UploadRecord {
+            size: u64::try_from(self.size).map_err(|_| bad("negative size"))?,
+            part_size: u64::try_from(self.part_size).map_err(|_| bad("negative part size"))?,
+            id: self.id,
+            account: self.account,
+            sha256: self.sha256,
+            state,
+            parts,
+            created_at: self.created_at,
+            updated_at: self.updated_at,
+        })
+    }
+}
+
+impl UploadEnd {
+    /// The `state`, `capture_id`, `error_code` and `error` columns it writes.
+    pub(crate) fn columns(&self) -> (&'static str, Option<&str>, Option<&str>, Option<&str>) {
+        match self {
+            UploadEnd::Committed { capture_id } => ("committed", Some(capture_id), None, None),
+            UploadEnd::Failed { code, message } => ("failed", None, Some(code), Some(message)),
+            UploadEnd::Reopened => ("open", None, None, None),
+        }
+    }
+}
+
 pub(crate) fn abandoned_message(max_attempts: u32) -> String {
     format!("abandoned: the worker running it died {max_attempts} times (lease expired)")
 }

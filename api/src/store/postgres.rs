@@ -14,8 +14,8 @@ use tokio_postgres::{NoTls, Row};
 
 use super::{
     abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, JobSpec,
-    NewJob, Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, WebhookDelivery,
-    ABANDONED,
+    NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Store, StoreError,
+    UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
 };
 
 /// The schema's versions, oldest first; each runs once, in a transaction.
@@ -101,6 +101,53 @@ fn raw_job(row: &Row) -> Result<RawJob, StoreError> {
 
 fn job_of(row: &Row) -> Result<JobRecord, StoreError> {
     raw_job(row)?.parse()
+}
+
+fn raw_upload(row: &Row) -> Result<RawUpload, StoreError> {
+    Ok(RawUpload {
+        id: row.try_get(0)?,
+        account: row.try_get(1)?,
+        size: row.try_get(2)?,
+        part_size: row.try_get(3)?,
+        sha256: row.try_get(4)?,
+        state: row.try_get(5)?,
+        lease_until: row.try_get(6)?,
+        capture_id: row.try_get(7)?,
+        error_code: row.try_get(8)?,
+        error: row.try_get(9)?,
+        created_at: row.try_get(10)?,
+        updated_at: row.try_get(11)?,
+    })
+}
+
+/// An upload and its parts, read by `client` (a connection or a transaction).
+async fn upload_with<C: tokio_postgres::GenericClient>(
+    client: &C,
+    id: &str,
+) -> Result<Option<UploadRecord>, StoreError> {
+    let sql = format!("SELECT {UPLOAD_COLUMNS} FROM uploads WHERE id = $1");
+    let Some(row) = client.query_opt(&sql, &[&id]).await? else {
+        return Ok(None);
+    };
+    let raw = raw_upload(&row)?;
+    let parts = client
+        .query(
+            "SELECT idx, size, sha256 FROM upload_parts WHERE upload_id = $1 ORDER BY idx",
+            &[&id],
+        )
+        .await?
+        .iter()
+        .map(part_of)
+        .collect::<Result<Vec<_>, _>>()?;
+    raw.parse(parts).map(Some)
+}
+
+fn part_of(row: &Row) -> Result<UploadPart, StoreError> {
+    Ok(UploadPart {
+        index: row.try_get::<_, i32>(0)?.max(0) as u32,
+        size: row.try_get::<_, i64>(1)?.max(0) as u64,
+        sha256: row.try_get(2)?,
+    })
 }
 
 impl PostgresStore {
@@ -702,6 +749,138 @@ impl Store for PostgresStore {
             )
             .await?;
         Ok(())
+    }
+
+    async fn create_upload(&self, upload: &UploadRecord) -> Result<(), StoreError> {
+        let client = self.pool.get().await?;
+        client
+            .execute(
+                "INSERT INTO uploads (id, account, size, part_size, sha256, state, created_at,
+                                      updated_at)
+                 VALUES ($1, $2, $3, $4, $5, 'open', $6, $6)",
+                &[
+                    &upload.id,
+                    &upload.account,
+                    &(upload.size as i64),
+                    &(upload.part_size as i64),
+                    &upload.sha256,
+                    &upload.created_at,
+                ],
+            )
+            .await?;
+        Ok(())
+    }
+
+    async fn upload(&self, id: &str) -> Result<Option<UploadRecord>, StoreError> {
+        let client = self.pool.get().await?;
+        let client: &tokio_postgres::Client = &client;
+        upload_with(client, id).await
+    }
+
+    async fn record_part(
+        &self,
+        id: &str,
+        part: &UploadPart,
+        now: i64,
+    ) -> Result<PartOutcome, StoreError> {
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        let state: Option<String> = tx
+            .query_opt("SELECT state FROM uploads WHERE id = $1 FOR UPDATE", &[&id])
+            .await?
+            .map(|row| row.try_get(0))
+            .transpose()?;
+        match state.as_deref() {
+            None => return Ok(PartOutcome::NotFound),
+            Some("open") => {}
+            Some(_) => return Ok(PartOutcome::Closed),
+        }
+        let index = part.index as i32;
+        let replaced = tx
+            .query_opt(
+                "SELECT idx, size, sha256 FROM upload_parts WHERE upload_id = $1 AND idx = $2",
+                &[&id, &index],
+            )
+            .await?
+            .map(|row| part_of(&row))
+            .transpose()?;
+        tx.execute(
+            "INSERT INTO upload_parts (upload_id, idx, size, sha256) VALUES ($1, $2, $3, $4)
+             ON CONFLICT (upload_id, idx) DO UPDATE SET size = $3, sha256 = $4",
+            &[&id, &index, &(part.size as i64), &part.sha256],
+        )
+        .await?;
+        tx.execute(
+            "UPDATE uploads SET updated_at = $2 WHERE id = $1",
+            &[&id, &now],
+        )
+        .await?;
+        tx.commit().await?;
+        Ok(PartOutcome::Recorded { replaced })
+    }
+
+    async fn begin_commit(
+        &self,
+        id: &str,
+        now: i64,
+        until: i64,
+    ) -> Result<Option<UploadRecord>, StoreError> {
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        let taken = tx
+            .execute(
+                "UPDATE uploads SET state = 'committing', lease_until = $3, updated_at = $2
+                 WHERE id = $1 AND (state = 'open' OR (state = 'committing' AND lease_until < $2))",
+                &[&id, &now, &until],
+            )
+            .await?;
+        if taken == 0 {
+            return Ok(None);
+        }
+        let upload = {
+            let tx: &tokio_postgres::Transaction<'_> = &tx;
+            upload_with(tx, id).await?
+        };
+        tx.commit().await?;
+        Ok(upload)
+    }
+
+    async fn end_commit(&self, id: &str, end: &UploadEnd, now: i64) -> Result<(), StoreError> {
+        let (state, capture_id, code, error) = end.columns();
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        tx.execute(
+            "UPDATE uploads SET state = $2, capture_id = $3, error_code = $4, error = $5,
+                    lease_until = NULL, updated_at = $6
+             WHERE id = $1",
+            &[&id, &state, &capture_id, &code, &error, &now],
+        )
+        .await?;
+        if state != "open" {
+            tx.execute("DELETE FROM upload_parts WHERE upload_id = $1", &[&id])
+                .await?;
+        }
+        tx.commit().await?;
+        Ok(())
+    }
+
+    async fn delete_upload(&self, id: &str) -> Result<bool, StoreError> {
+        let client = self.pool.get().await?;
+        // Its parts' records go with it (ON DELETE CASCADE).
+        let deleted = client
+            .execute("DELETE FROM uploads WHERE id = $1", &[&id])
+            .await?;
+        Ok(deleted > 0)
+    }
+
+    async fn uploads_idle_before(&self, before: i64) -> Result<Vec<String>, StoreError> {
+        let client = self.pool.get().await?;
+        let rows = client
+            .query("SELECT id FROM uploads WHERE updated_at < $1", &[&before])
+            .await?;
+        rows.iter()
+            .map(|row| row.try_get(0).map_err(StoreError::from))
+            .collect()
     }
 
     async fn counts(&self, account: Option<&str>) -> Result<QueueCounts, StoreError> {

@@ -8,8 +8,8 @@ use rusqlite::{params, Connection, OptionalExtension, Row};
 
 use super::{
     abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, JobSpec,
-    NewJob, Progress, QueueCounts, RawCapture, RawJob, Store, StoreError, WebhookDelivery,
-    ABANDONED,
+    NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Store, StoreError,
+    UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
 };
 
 /// The embedded SQLite store.
@@ -52,6 +52,28 @@ CREATE TABLE IF NOT EXISTS job_events (
     PRIMARY KEY (job_id, seq)
 );
 CREATE INDEX IF NOT EXISTS jobs_by_capture ON jobs(capture_id, state);
+CREATE TABLE IF NOT EXISTS uploads (
+    id TEXT PRIMARY KEY,
+    account TEXT,
+    size INTEGER NOT NULL,
+    part_size INTEGER NOT NULL,
+    sha256 TEXT,
+    state TEXT NOT NULL,
+    lease_until INTEGER,
+    capture_id TEXT,
+    error_code TEXT,
+    error TEXT,
+    created_at INTEGER NOT NULL,
+    updated_at INTEGER NOT NULL
+);
+CREATE INDEX IF NOT EXISTS uploads_by_update ON uploads(updated_at);
+CREATE TABLE IF NOT EXISTS upload_parts (
+    upload_id TEXT NOT NULL,
+    idx INTEGER NOT NULL,
+    size INTEGER NOT NULL,
+    sha256 TEXT NOT NULL,
+    PRIMARY KEY (upload_id, idx)
+);
 ";
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
@@ -129,6 +151,23 @@ fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
     })
 }
 
+fn raw_upload(row: &Row<'_>) -> rusqlite::Result<RawUpload> {
+    Ok(RawUpload {
+        id: row.get(0)?,
+        account: row.get(1)?,
+        size: row.get(2)?,
+        part_size: row.get(3)?,
+        sha256: row.get(4)?,
+        state: row.get(5)?,
+        lease_until: row.get(6)?,
+        capture_id: row.get(7)?,
+        error_code: row.get(8)?,
+        error: row.get(9)?,
+        created_at: row.get(10)?,
+        updated_at: row.get(11)?,
+    })
+}
+
 impl SqliteStore {
     /// Opens (creating if needed) the database file.
     pub fn open(path: &Path) -> Result<Self, StoreError> {
@@ -158,6 +197,26 @@ impl SqliteStore {
     ) -> Result<T, StoreError> {
         let mut conn = self.conn.lock().map_err(|_| StoreError::Poisoned)?;
         f(&mut conn)
+    }
+
+    fn upload_in(conn: &Connection, id: &str) -> Result<Option<UploadRecord>, StoreError> {
+        let sql = format!("SELECT {UPLOAD_COLUMNS} FROM uploads WHERE id = ?1");
+        let Some(raw) = conn.query_row(&sql, params![id], raw_upload).optional()? else {
+            return Ok(None);
+        };
+        let mut stmt = conn.prepare(
+            "SELECT idx, size, sha256 FROM upload_parts WHERE upload_id = ?1 ORDER BY idx",
+        )?;
+        let parts = stmt
+            .query_map(params![id], |r| {
+                Ok(UploadPart {
+                    index: r.get(0)?,
+                    size: r.get::<_, i64>(1)?.max(0) as u64,
+                    sha256: r.get(2)?,
+                })
+            })?
+            .collect::<Result<Vec<_>, _>>()?;
+        raw.parse(parts).map(Some)
     }
 
     fn job_in(conn: &Connection, id: &str) -> Result<Option<JobRecord>, StoreError> {
@@ -655,6 +714,133 @@ impl Store for SqliteStore {
                 params![id, attempts, status, next_at],
             )?;
             Ok(())
+        })
+    }
+
+    async fn create_upload(&self, upload: &UploadRecord) -> Result<(), StoreError> {
+        self.with(|c| {
+            c.execute(
+                "INSERT INTO uploads (id, account, size, part_size, sha256, state, created_at,
+                                      updated_at)
+                 VALUES (?1, ?2, ?3, ?4, ?5, 'open', ?6, ?6)",
+                params![
+                    upload.id,
+                    upload.account,
+                    upload.size as i64,
+                    upload.part_size as i64,
+                    upload.sha256,
+                    upload.created_at
+                ],
+            )?;
+            Ok(())
+        })
+    }
+
+    async fn upload(&self, id: &str) -> Result<Option<UploadRecord>, StoreError> {
+        self.with(|c| Self::upload_in(c, id))
+    }
+
+    async fn record_part(
+        &self,
+        id: &str,
+        part: &UploadPart,
+        now: i64,
+    ) -> Result<PartOutcome, StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            let state: Option<String> = tx
+                .query_row(
+                    "SELECT state FROM uploads WHERE id = ?1",
+                    params![id],
+                    |r| r.get(0),
+                )
+                .optional()?;
+            match state.as_deref() {
+                None => return Ok(PartOutcome::NotFound),
+                Some("open") => {}
+                Some(_) => return Ok(PartOutcome::Closed),
+            }
+            let replaced = tx
+                .query_row(
+                    "SELECT size, sha256 FROM upload_parts WHERE upload_id = ?1 AND idx = ?2",
+                    params![id, part.index],
+                    |r| {
+                        Ok(UploadPart {
+                            index: part.index,
+                            size: r.get::<_, i64>(0)?.max(0) as u64,
+                            sha256: r.get(1)?,
+                        })
+                    },
+                )
+                .optional()?;
+            tx.execute(
+                "INSERT INTO upload_parts (upload_id, idx, size, sha256) VALUES (?1, ?2, ?3, ?4)
+                 ON CONFLICT (upload_id, idx) DO UPDATE SET size = ?3, sha256 = ?4",
+                params![id, part.index, part.size as i64, part.sha256],
+            )?;
+            tx.execute(
+                "UPDATE uploads SET updated_at = ?2 WHERE id = ?1",
+                params![id, now],
+            )?;
+            tx.commit()?;
+            Ok(PartOutcome::Recorded { replaced })
+        })
+    }
+
+    async fn begin_commit(
+        &self,
+        id: &str,
+        now: i64,
+        until: i64,
+    ) -> Result<Option<UploadRecord>, StoreError> {
+        self.with(|c| {
+            let taken = c.execute(
+                "UPDATE uploads SET state = 'committing', lease_until = ?3, updated_at = ?2
+                 WHERE id = ?1 AND (state = 'open' OR (state = 'committing' AND lease_until < ?2))",
+                params![id, now, until],
+            )?;
+            if taken == 0 {
+                return Ok(None);
+            }
+            Self::upload_in(c, id)
+        })
+    }
+
+    async fn end_commit(&self, id: &str, end: &UploadEnd, now: i64) -> Result<(), StoreError> {
+        let (state, capture_id, code, error) = end.columns();
+        self.with(|c| {
+            let tx = c.transaction()?;
+            tx.execute(
+                "UPDATE uploads SET state = ?2, capture_id = ?3, error_code = ?4, error = ?5,
+                        lease_until = NULL, updated_at = ?6
+                 WHERE id = ?1",
+                params![id, state, capture_id, code, error, now],
+            )?;
+            if state != "open" {
+                tx.execute("DELETE FROM upload_parts WHERE upload_id = ?1", params![id])?;
+            }
+            tx.commit()?;
+            Ok(())
+        })
+    }
+
+    async fn delete_upload(&self, id: &str) -> Result<bool, StoreError> {
+        self.with(|c| {
+            let tx = c.transaction()?;
+            tx.execute("DELETE FROM upload_parts WHERE upload_id = ?1", params![id])?;
+            let deleted = tx.execute("DELETE FROM uploads WHERE id = ?1", params![id])?;
+            tx.commit()?;
+            Ok(deleted > 0)
+        })
+    }
+
+    async fn uploads_idle_before(&self, before: i64) -> Result<Vec<String>, StoreError> {
+        self.with(|c| {
+            let mut stmt = c.prepare("SELECT id FROM uploads WHERE updated_at < ?1")?;
+            let ids = stmt
+                .query_map(params![before], |r| r.get(0))?
+                .collect::<Result<Vec<String>, _>>()?;
+            Ok(ids)
         })
     }
 

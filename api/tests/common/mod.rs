@@ -103,6 +103,19 @@ pub fn capture_tar() -> Vec<u8> {
     tar_of(&files_of(dir.path()))
 }
 
+/// The test capture as a tar with an extra file of 300 kB of noise, so that it spans several
+/// parts of a resumable upload (the loader ignores files transforms.json does not name).
+pub fn padded_capture_tar() -> Vec<u8> {
+    let dir = tempfile::tempdir().unwrap();
+    write_capture(dir.path());
+    let mut entries = files_of(dir.path());
+    let noise: Vec<u8> = (0..300_000u32)
+        .map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8)
+        .collect();
+    entries.push(("notes/noise.bin".into(), noise));
+    tar_of(&entries)
+}
+
 /// A small training config: `iterations` steps, checkpoints every `checkpoint_interval`.
 pub fn train_config(iterations: u32, checkpoint_interval: u32) -> Value {
     json!({
@@ -204,6 +217,9 @@ impl ApiClient {
             base,
             client: reqwest::Client::builder()
                 .timeout(Duration::from_secs(30))
+                // The service closes connections idle for its header timeout (15 s); a pooled
+                // one reused just as it closes fails, so clients expire theirs sooner.
+                .pool_idle_timeout(Duration::from_secs(5))
                 .build()
                 .unwrap(),
         }
@@ -220,6 +236,9 @@ impl ApiClient {
             base,
             client: reqwest::Client::builder()
                 .timeout(Duration::from_secs(30))
+                // The service closes connections idle for its header timeout (15 s); a pooled
+                // one reused just as it closes fails, so clients expire theirs sooner.
+                .pool_idle_timeout(Duration::from_secs(5))
                 .default_headers(headers)
                 .build()
                 .unwrap(),

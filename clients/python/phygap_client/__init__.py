@@ -3,7 +3,7 @@
     from phygap_client import Client
 
     with Client("http://127.0.0.1:8080", token="…") as phygap:
-        capture = phygap.upload("capture.zip")
+        capture = phygap.upload("capture.zip")        # resumable parts when it is large
         job = phygap.train(capture["id"], config={"iterations": 6000})
         job = phygap.wait(job["id"], on_event=print)     # progress events as they come
         phygap.download(job["id"], "model.glb", "model.glb")
@@ -17,6 +17,9 @@ service raises `PhygapError` with its stable `code`.
 
 from __future__ import annotations
 
+import base64
+import hashlib
+import json
 import os
 import time
 from pathlib import Path
@@ -28,6 +31,9 @@ __all__ = ["Client", "PhygapError"]
 
 #: The states a job ends in.
 ENDED = ("succeeded", "failed", "cancelled")
+
+#: Bytes a part of a resumable upload (the service takes 64 KiB to 128 MiB).
+PART_BYTES = 64 << 20
 
 
 class PhygapError(Exception):
@@ -66,9 +72,49 @@ class Client:
         """Version, engines, limits and the queue (`GET /v1/info`)."""
         return self._json("GET", "/v1/info")
 
-    def upload(self, archive: str | os.PathLike, chunk_bytes: int = 1 << 20) -> dict:
-        """Uploads a capture archive (.zip or .tar), streamed from disk; returns the capture."""
+    def upload(
+        self,
+        archive: str | os.PathLike,
+        part_bytes: int = PART_BYTES,
+        retries: int = 5,
+        on_part: Optional[Callable[[int, int], None]] = None,
+    ) -> dict:
+        """Uploads a capture archive (.zip or .tar); returns the capture.
+
+        An archive of one part goes in one request. A larger one goes in resumable parts of
+        `part_bytes`, each with its SHA-256: a part whose connection breaks is sent again (up to
+        `retries` times in a row, backing off), and the upload's id is kept beside the archive
+        (`ARCHIVE.phygap-upload`) until it commits, so calling `upload` again after an
+        interruption sends only the parts the service lacks. `on_part(index, count)` is called
+        after each part is stored."""
         path = Path(archive)
+        size = path.stat().st_size
+        if size <= part_bytes:
+            return self._upload_whole(path)
+        state_file = path.with_name(path.name + ".phygap-upload")
+        upload = self._resumable_upload(path, size, part_bytes, state_file)
+        count = upload["parts"]
+        have = set(upload["received"])
+        with path.open("rb") as file:
+            for index in range(count):
+                if index in have:
+                    continue
+                file.seek(index * upload["part_size"])
+                part = file.read(upload["part_size"])
+                self._retrying(retries, lambda: self._put_part(upload["id"], index, part))
+                if on_part is not None:
+                    on_part(index, count)
+        capture = self._retrying(
+            retries, lambda: self._json("POST", f"/v1/uploads/{upload['id']}/commit", timeout=None)
+        )
+        state_file.unlink(missing_ok=True)
+        return capture
+
+    def upload_status(self, upload_id: str) -> dict:
+        """A resumable upload: its parts, which arrived, its state (`GET /v1/uploads/{id}`)."""
+        return self._json("GET", f"/v1/uploads/{upload_id}")
+
+    def _upload_whole(self, path: Path, chunk_bytes: int = 1 << 20) -> dict:
         kind = "application/zip" if path.suffix.lower() == ".zip" else "application/x-tar"
 
         def chunks() -> Iterator[bytes]:
@@ -78,6 +124,56 @@ class Client:
 
         headers = {"content-type": kind, "content-length": str(path.stat().st_size)}
         return self._json("POST", "/v1/captures", content=chunks(), headers=headers, timeout=None)
+
+    def _resumable_upload(self, path: Path, size: int, part_bytes: int, state_file: Path) -> dict:
+        """The open upload recorded beside the archive for this very file, or a new one."""
+        stamp = {"size": size, "mtime_ns": path.stat().st_mtime_ns}
+        if state_file.exists():
+            try:
+                saved = json.loads(state_file.read_text())
+                if saved.get("file") == stamp:
+                    upload = self.upload_status(saved["id"])
+                    if upload["state"] in ("open", "committing", "committed"):
+                        return upload
+            except (PhygapError, ValueError, KeyError):
+                pass
+        digest = hashlib.sha256()
+        with path.open("rb") as file:
+            while chunk := file.read(1 << 20):
+                digest.update(chunk)
+        upload = self._json(
+            "POST",
+            "/v1/uploads",
+            json={"size": size, "part_size": part_bytes, "sha256": digest.hexdigest()},
+        )
+        state_file.write_text(json.dumps({"id": upload["id"], "file": stamp}))
+        return upload
+
+    def _put_part(self, upload_id: str, index: int, part: bytes) -> dict:
+        digest = base64.b64encode(hashlib.sha256(part).digest()).decode()
+        headers = {
+            "content-digest": f"sha-256=:{digest}:",
+            "content-type": "application/octet-stream",
+        }
+        return self._json(
+            "PUT", f"/v1/uploads/{upload_id}/parts/{index}", content=part, headers=headers,
+            timeout=None,
+        )
+
+    @staticmethod
+    def _retrying(retries: int, call: Callable[[], Any]) -> Any:
+        """`call()`, again after a broken connection or a 5xx, at most `retries` more times."""
+        for attempt in range(retries + 1):
+            try:
+                return call()
+            except httpx.TransportError:
+                if attempt == retries:
+                    raise
+            except PhygapError as error:
+                if error.status < 500 or attempt == retries:
+                    raise
+            time.sleep(min(30.0, 0.5 * 2**attempt))
+        raise AssertionError("unreachable")
 
     def train(
         self,

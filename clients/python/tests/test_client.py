@@ -18,7 +18,31 @@ def main(base_url: str, capture: str, envmap: str) -> None:
         assert info["limits"]["max_views"] > 0, info
         assert "cpu" in info["engines"]["backends"], info
 
-        uploaded = phygap.upload(capture)
+        # In resumable parts: an upload interrupted after two parts sends only the rest.
+        class Interrupted(Exception):
+            pass
+
+        first: list[int] = []
+
+        def interrupt_after_two(index: int, count: int) -> None:
+            first.append(index)
+            if len(first) == 2:
+                raise Interrupted()
+
+        try:
+            phygap.upload(capture, part_bytes=64 << 10, on_part=interrupt_after_two)
+        except Interrupted:
+            pass
+        else:
+            raise AssertionError("the upload was not interrupted")
+        assert Path(capture + ".phygap-upload").exists()
+        second: list[tuple[int, int]] = []
+        uploaded = phygap.upload(capture, part_bytes=64 << 10,
+                                 on_part=lambda index, count: second.append((index, count)))
+        count = second[0][1]
+        assert count > 2 and sorted(first + [i for i, _ in second]) == list(range(count)), (
+            first, second)
+        assert not Path(capture + ".phygap-upload").exists()
         assert uploaded["views"] == 10, uploaded
         config = {"iterations": 20, "checkpoint_interval": 10, "eval_interval": 10,
                   "initial_surfels": 100, "max_surfels": 1000, "gridmap": False}

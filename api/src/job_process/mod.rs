@@ -79,12 +79,18 @@ const ALLOCATION_FAILED: &str = "memory allocation of";
 /// How often the waiting thread looks at the cancel flag and the clock.
 const POLL: Duration = Duration::from_millis(50);
 
+/// How long a child has to answer a cancel (it checkpoints at its next step) before it is
+/// stopped: a stage still loading its capture or building its engine does not look at the flag,
+/// and a user who pressed cancel expects the job to end.
+const CANCEL_GRACE: Duration = Duration::from_secs(20);
+
 /// Runs every stage in a child process: `executable stage …` (the `phygap-api` binary itself).
 #[derive(Clone, Debug)]
 pub struct ProcessPipeline {
     executable: PathBuf,
     limits: JobLimits,
     capture_limits: CaptureLimits,
+    cancel_grace: Duration,
 }
 
 impl ProcessPipeline {
@@ -93,6 +99,7 @@ impl ProcessPipeline {
             executable,
             limits,
             capture_limits,
+            cancel_grace: CANCEL_GRACE,
         }
     }
 
@@ -160,7 +167,8 @@ impl ProcessPipeline {
         let _ = send_line(&mut stdin, &request_line);
         let deadline = self.limits.max_runtime.map(|limit| Instant::now() + limit);
         let mut answer = None;
-        let mut cancel_sent = false;
+        let mut cancel_sent_at: Option<Instant> = None;
+        let mut stopped = false;
         let mut timed_out = false;
         loop {
             match messages.recv_timeout(POLL) {
@@ -170,9 +178,19 @@ impl ProcessPipeline {
                 Err(RecvTimeoutError::Disconnected) => break,
                 Err(RecvTimeoutError::Timeout) => {}
             }
-            if !cancel_sent && cancel.is_some_and(|c| c.load(Ordering::SeqCst)) {
-                cancel_sent = true;
-                let _ = send_line(&mut stdin, CANCEL_LINE);
+            match cancel_sent_at {
+                None if cancel.is_some_and(|c| c.load(Ordering::SeqCst)) => {
+                    cancel_sent_at = Some(Instant::now());
+                    let _ = send_line(&mut stdin, CANCEL_LINE);
+                }
+                Some(sent)
+                    if !stopped && answer.is_none() && sent.elapsed() >= self.cancel_grace =>
+                {
+                    tracing::warn!("the job's process did not answer its cancel; stopping it");
+                    stopped = true;
+                    let _ = child.kill();
+                }
+                _ => {}
             }
             if deadline.is_some_and(|d| Instant::now() >= d) && !timed_out {
                 timed_out = true;
@@ -388,5 +406,46 @@ fn unexpected(request: &Request, answer: &Answer) -> PipelineError {
             "the job's process answered {answer:?} to a {} request",
             request.stage()
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::os::unix::fs::PermissionsExt;
+
+    /// A child that reads its request and then neither answers nor looks at its input again.
+    fn deaf_child(dir: &Path) -> PathBuf {
+        let path = dir.join("deaf-stage");
+        std::fs::write(&path, "#!/bin/sh\nread request\nexec sleep 600\n").unwrap();
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
+        path
+    }
+
+    #[test]
+    fn a_child_deaf_to_its_cancel_is_stopped_after_the_grace() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut pipeline = ProcessPipeline::new(
+            deaf_child(dir.path()),
+            JobLimits::NONE,
+            CaptureLimits::DEFAULT,
+        );
+        pipeline.cancel_grace = Duration::from_millis(300);
+        let cancel = AtomicBool::new(true);
+        let started = Instant::now();
+        let result = pipeline.train(
+            dir.path(),
+            dir.path(),
+            &TrainConfig::default(),
+            false,
+            &cancel,
+            &mut |_| {},
+        );
+        match result {
+            Err(PipelineError::Died { reason, .. }) => assert_eq!(reason, DeathReason::Killed),
+            other => panic!("expected the child killed, got {other:?}"),
+        }
+        // Stopped after the grace, long before the child's own 600 s.
+        assert!(started.elapsed() < Duration::from_secs(60));
     }
 }

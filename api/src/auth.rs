@@ -11,6 +11,7 @@ use axum::middleware::Next;
 use axum::response::{IntoResponse, Response};
 
 use crate::error::ApiError;
+use crate::quotas::AccountLimits;
 use crate::AppState;
 
 /// Constant-time equality of two byte strings (length is not secret).
@@ -50,11 +51,24 @@ impl Caller {
     }
 }
 
-/// One account's token.
+/// One account's token, and the limits the tokens file gives the account.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct AccountToken {
     pub account: String,
     pub token: String,
+    /// Its own limits; those it does not set are the server's defaults ([`crate::quotas`]).
+    pub limits: AccountLimits,
+}
+
+impl AccountToken {
+    /// An account's token with the server's default limits.
+    pub fn new(account: &str, token: &str) -> AccountToken {
+        AccountToken {
+            account: account.to_owned(),
+            token: token.to_owned(),
+            limits: AccountLimits::default(),
+        }
+    }
 }
 
 /// A tokens file that cannot be used.
@@ -72,8 +86,9 @@ pub enum TokensFileError {
 /// Fewest characters of any token, the admin's and the accounts'.
 pub const MIN_TOKEN_CHARS: usize = 16;
 
-/// Reads a tokens file: one `ACCOUNT TOKEN` pair a line (account names of `[A-Za-z0-9._-]`,
-/// tokens of at least [`MIN_TOKEN_CHARS`] characters, each once); blank lines and `#` comments
+/// Reads a tokens file: one `ACCOUNT TOKEN [LIMIT=VALUE …]` a line (account names of
+/// `[A-Za-z0-9._-]`, tokens of at least [`MIN_TOKEN_CHARS`] characters, each once; limits
+/// `max_running`, `max_queued`, `max_storage_mb`, `max_priority`); blank lines and `#` comments
 /// are skipped.
 pub fn read_tokens_file(path: &Path) -> Result<Vec<AccountToken>, TokensFileError> {
     let text = std::fs::read_to_string(path).map_err(|source| TokensFileError::Io {
@@ -95,9 +110,13 @@ fn parse_tokens(text: &str) -> Result<Vec<AccountToken>, TokensFileError> {
             problem: problem.to_owned(),
         };
         let mut words = line.split_whitespace();
-        let (Some(account), Some(token), None) = (words.next(), words.next(), words.next()) else {
-            return Err(bad("expected `ACCOUNT TOKEN`"));
+        let (Some(account), Some(token)) = (words.next(), words.next()) else {
+            return Err(bad("expected `ACCOUNT TOKEN [LIMIT=VALUE …]`"));
         };
+        let mut limits = AccountLimits::default();
+        for word in words {
+            limits.set(word).map_err(|problem| bad(&problem))?;
+        }
         let valid_name = |c: char| c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-');
         if account.len() > 64 || !account.chars().all(valid_name) {
             return Err(bad("account names are 1 to 64 of A-Z a-z 0-9 . _ -"));
@@ -114,8 +133,8 @@ fn parse_tokens(text: &str) -> Result<Vec<AccountToken>, TokensFileError> {
             return Err(bad("each account and each token may appear once"));
         }
         tokens.push(AccountToken {
-            account: account.to_owned(),
-            token: token.to_owned(),
+            limits,
+            ..AccountToken::new(account, token)
         });
     }
     Ok(tokens)
@@ -193,10 +212,17 @@ mod tests {
     #[test]
     fn tokens_name_their_callers() {
         let accounts = parse_tokens(
-            "# studio accounts\nalice  aaaaaaaaaaaaaaaa-1\n\nbob bbbbbbbbbbbbbbbb-2\n",
+            "# studio accounts\nalice  aaaaaaaaaaaaaaaa-1\n\nbob bbbbbbbbbbbbbbbb-2 max_running=1 \
+             max_storage_mb=512\n",
         )
         .unwrap();
         assert_eq!(accounts.len(), 2);
+        assert_eq!(accounts[0].limits, AccountLimits::default());
+        let bobs = accounts[1].limits;
+        assert_eq!(
+            (bobs.max_running, bobs.max_storage_bytes),
+            (Some(1), Some(512 << 20))
+        );
         let admin = Some("admin-token-xxxxxxxx");
         assert_eq!(
             caller_of("admin-token-xxxxxxxx", admin, &accounts),
@@ -218,6 +244,7 @@ mod tests {
         for (text, line) in [
             ("alice short", 1),
             ("# c\nalice aaaaaaaaaaaaaaaa extra", 2),
+            ("alice aaaaaaaaaaaaaaaa max_queued=many", 1),
             ("alice aaaaaaaaaaaaaaaa\nalice bbbbbbbbbbbbbbbb", 2),
             ("alice aaaaaaaaaaaaaaaa\nbob aaaaaaaaaaaaaaaa", 2),
             ("al/ice aaaaaaaaaaaaaaaa", 1),

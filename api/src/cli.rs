@@ -11,6 +11,7 @@ use phygap::io::capture::CaptureLimits;
 use crate::auth::{read_tokens_file, TokensFileError, MIN_TOKEN_CHARS};
 use crate::connections::HttpLimits;
 use crate::job_process::JobLimits;
+use crate::quotas::AccountLimits;
 use crate::webhooks::WebhookSettings;
 use crate::{ServiceConfig, ServiceLimits};
 
@@ -203,6 +204,25 @@ pub struct ServeArgs {
           env = "PHYGAP_UPLOAD_WINDOW_SECONDS",
           value_parser = clap::value_parser!(u64).range(1..=3600))]
     pub upload_window_seconds: u64,
+    /// Jobs an account runs at once unless its line in the tokens file says `max_running=N`;
+    /// more wait in the queue. Default: no limit.
+    #[arg(long, env = "PHYGAP_ACCOUNT_MAX_RUNNING",
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub account_max_running: Option<u32>,
+    /// Jobs an account may have queued unless its line says `max_queued=N`; a submit beyond
+    /// answers 429. Default: no limit.
+    #[arg(long, env = "PHYGAP_ACCOUNT_MAX_QUEUED")]
+    pub account_max_queued: Option<u32>,
+    /// MiB of captures and open uploads an account may store unless its line says
+    /// `max_storage_mb=N`. Default: no limit.
+    #[arg(long, env = "PHYGAP_ACCOUNT_MAX_STORAGE_MB",
+          value_parser = clap::value_parser!(u64).range(1..=1 << 40))]
+    pub account_max_storage_mb: Option<u64>,
+    /// Highest job priority an account may ask for unless its line says `max_priority=N`
+    /// (-100 to 100; the admin may use up to 100).
+    #[arg(long, default_value_t = 0, env = "PHYGAP_ACCOUNT_MAX_PRIORITY",
+          value_parser = clap::value_parser!(i32).range(-100..=100))]
+    pub account_max_priority: i32,
     /// URL every job's end is POSTed to when the job names none of its own.
     #[arg(long, env = "PHYGAP_WEBHOOK")]
     pub webhook: Option<String>,
@@ -228,6 +248,12 @@ impl ServeArgs {
         if let Some(path) = &self.tokens_file {
             config.account_tokens = read_tokens_file(path)?;
         }
+        config.account_defaults = AccountLimits {
+            max_running: self.account_max_running,
+            max_queued: self.account_max_queued,
+            max_storage_bytes: self.account_max_storage_mb.map(|mb| mb << 20),
+            max_priority: Some(self.account_max_priority),
+        };
         config.retention = self
             .retention_days
             .map(|days| std::time::Duration::from_secs(u64::from(days) * 86_400));

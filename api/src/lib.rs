@@ -30,6 +30,7 @@ pub mod openapi;
 pub mod pipeline;
 pub mod purge;
 pub mod queue;
+pub mod quotas;
 pub mod routes;
 pub mod security_headers;
 pub mod slow_body;
@@ -67,6 +68,8 @@ pub struct ServiceConfig {
     pub token: Option<String>,
     /// Account tokens: each sees only its own account's captures and jobs ([`auth`]).
     pub account_tokens: Vec<auth::AccountToken>,
+    /// Limits of accounts whose tokens set none of their own ([`quotas`]).
+    pub account_defaults: quotas::AccountLimits,
     /// Jobs that ended, and unused captures uploaded, longer ago than this are removed.
     pub retention: Option<Duration>,
     /// How often the sweeper runs (retention, idle uploads).
@@ -139,6 +142,7 @@ impl ServiceConfig {
             workers: 1,
             token: None,
             account_tokens: Vec::new(),
+            account_defaults: quotas::AccountLimits::default(),
             retention: None,
             retention_sweep: Duration::from_secs(3600),
             upload_expiry: Duration::from_secs(24 * 3600),
@@ -154,6 +158,20 @@ impl ServiceConfig {
             limits: ServiceLimits::default(),
             http: connections::HttpLimits::DEFAULT,
             webhooks: webhooks::WebhookSettings::default(),
+        }
+    }
+}
+
+impl ServiceConfig {
+    /// Every account's limits: the tokens file's over the defaults.
+    pub fn quotas(&self) -> quotas::Quotas {
+        quotas::Quotas {
+            defaults: self.account_defaults,
+            accounts: self
+                .account_tokens
+                .iter()
+                .map(|t| (t.account.clone(), t.limits))
+                .collect(),
         }
     }
 }

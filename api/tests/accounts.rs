@@ -16,10 +16,7 @@ const BOB: &str = "bob-token-0123456789ab";
 fn with_accounts(config: &mut phygap_api::ServiceConfig) {
     config.token = Some(ADMIN.into());
     config.account_tokens = [("alice", ALICE), ("bob", BOB)]
-        .map(|(account, token)| AccountToken {
-            account: account.into(),
-            token: token.into(),
-        })
+        .map(|(account, token)| AccountToken::new(account, token))
         .to_vec();
 }
 

@@ -293,10 +293,7 @@ fn sse_events(text: &str) -> Vec<(String, Value)> {
 async fn live_answers_match_the_declared_schemas() {
     let (dir, t) = TestServer::start_fresh_with(|config| {
         config.token = Some(ADMIN.into());
-        config.account_tokens = vec![AccountToken {
-            account: "acme".into(),
-            token: ACCOUNT.into(),
-        }];
+        config.account_tokens = vec![AccountToken::new("acme", ACCOUNT)];
         config.max_upload_bytes = 4 << 20;
     })
     .await;

@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use common::postgres::TempPostgres;
 use phygap::core::config::TrainConfig;
+use phygap_api::quotas::RunningLimits;
 use phygap_api::store::{
     CaptureRecord, DeleteOutcome, Finish, JobSpec, JobState, NewJob, PartOutcome, PostgresStore,
     Progress, QueueCounts, SqliteStore, Store, StoreError, UploadEnd, UploadPart, UploadRecord,
@@ -26,6 +27,8 @@ fn new_job(id: &str, created_at: i64) -> NewJob {
         created_at,
         account: None,
         webhook_url: None,
+        priority: 0,
+        max_runtime_seconds: None,
     }
 }
 
@@ -396,6 +399,18 @@ async fn idempotency_keys_are_per_account(s: &dyn Store) {
         .submit(&of("job_alice", Some("alice")), Some(("k7", "h")))
         .await
         .unwrap();
+    for (account, key, found) in [
+        (Some("bob"), "k7", true),
+        (None, "bob/k7", true),
+        (None, "k7", false),
+        (Some("carol"), "k7", false),
+    ] {
+        assert_eq!(
+            s.has_request_key(account, key).await.unwrap(),
+            found,
+            "{account:?} {key}"
+        );
+    }
     assert!(new_bob && new_alice);
     assert_eq!(
         (admin.id.as_str(), bob.id.as_str(), alice.id.as_str()),
@@ -650,12 +665,88 @@ async fn uploads_take_parts_until_one_commit_settles_them(s: &dyn Store) {
     assert_eq!(s.uploads_idle_before(i64::MAX).await.unwrap(), ["upl_2"]);
 }
 
+/// Claims take the highest priority first, then the oldest; an account running its limit of
+/// jobs waits while others' jobs are claimed. What an account holds is counted.
+async fn claims_follow_priority_and_running_limits(s: &dyn Store) {
+    let job = |id: &str, account: &str, priority: i32, at: i64| NewJob {
+        account: Some(account.into()),
+        priority,
+        max_runtime_seconds: Some(60),
+        ..new_job(id, at)
+    };
+    for new in [
+        job("job_a1", "alice", 0, 1),
+        job("job_a2", "alice", 5, 2),
+        job("job_a3", "alice", 5, 3),
+        job("job_b1", "bob", 0, 4),
+        job("job_c1", "carol", -1, 0),
+    ] {
+        s.submit(&new, None).await.unwrap();
+    }
+    let stored = s.job("job_a2").await.unwrap().unwrap();
+    assert_eq!((stored.priority, stored.max_runtime_seconds), (5, Some(60)));
+    // alice may run one job at once, bob two, everyone else (carol) one.
+    let limits = RunningLimits {
+        default: Some(1),
+        accounts: [("alice".to_owned(), 1), ("bob".to_owned(), 2)].into(),
+    };
+    let mut order = Vec::new();
+    while let Some(job) = s.claim_within("w", 10, 1000, &limits).await.unwrap() {
+        order.push(job.id);
+    }
+    // alice's priority-5 job first, then (alice at her limit) bob's, then carol's priority -1.
+    assert_eq!(order, ["job_a2", "job_b1", "job_c1"]);
+    let usage = s.account_usage("alice").await.unwrap();
+    assert_eq!((usage.running, usage.queued, usage.stored_bytes), (1, 2, 0));
+    // alice's job ends: her next is the older of the two left at priority 5.
+    s.finish("job_a2", "w", &Finish::Succeeded, 20)
+        .await
+        .unwrap();
+    let next = s
+        .claim_within("w", 21, 1000, &limits)
+        .await
+        .unwrap()
+        .unwrap();
+    assert_eq!(next.id, "job_a3");
+    // Without limits the last one is claimed at once.
+    assert_eq!(s.claim("w", 22, 1000).await.unwrap().unwrap().id, "job_a1");
+
+    // Stored bytes: the account's captures and its open uploads (as declared).
+    let capture = CaptureRecord {
+        id: "cap_alice".into(),
+        views: 1,
+        width: 8,
+        height: 8,
+        kinds: vec![],
+        warnings: vec![],
+        size_bytes: 1000,
+        created_at: 1,
+        account: Some("alice".into()),
+    };
+    s.insert_capture(&capture).await.unwrap();
+    let upload = UploadRecord {
+        id: "upl_alice".into(),
+        account: Some("alice".into()),
+        size: 250,
+        part_size: 100,
+        sha256: None,
+        state: UploadState::Open,
+        parts: Vec::new(),
+        created_at: 10,
+        updated_at: 10,
+    };
+    s.create_upload(&upload).await.unwrap();
+    assert_eq!(s.account_usage("alice").await.unwrap().stored_bytes, 1250);
+    assert_eq!(s.account_usage("bob").await.unwrap().stored_bytes, 0);
+}
+
 async fn the_suite<F, Fut>(fresh: F)
 where
     F: Fn() -> Fut,
     Fut: std::future::Future<Output = Arc<dyn Store>>,
 {
     claim_is_exclusive_and_fifo(fresh().await.as_ref()).await;
+    claims_follow_priority_and_running_limits(fresh().await.as_ref()).await;
     concurrent_claims_take_each_job_once(fresh().await).await;
     only_the_owner_can_heartbeat_and_finish(fresh().await.as_ref()).await;
     a_requeued_job_keeps_its_progress_and_is_claimed_again(fresh().await.as_ref()).await;

@@ -287,14 +287,8 @@ async fn idle_uploads_expire_with_their_parts() {
 async fn accounts_see_only_their_uploads() {
     let (_dir, t) = TestServer::start_fresh_with(|c| {
         c.account_tokens = vec![
-            phygap_api::auth::AccountToken {
-                account: "alice".into(),
-                token: "alice-token-0123456789".into(),
-            },
-            phygap_api::auth::AccountToken {
-                account: "bob".into(),
-                token: "bob-token-0123456789ab".into(),
-            },
+            phygap_api::auth::AccountToken::new("alice", "alice-token-0123456789"),
+            phygap_api::auth::AccountToken::new("bob", "bob-token-0123456789ab"),
         ];
     })
     .await;

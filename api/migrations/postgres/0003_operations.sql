@@ -57,3 +57,8 @@ CREATE TABLE upload_parts (
     sha256 TEXT NOT NULL,
     PRIMARY KEY (upload_id, idx)
 );
+-- Fair sharing (api/src/quotas.rs): queued jobs of higher priority are claimed first, then the
+-- oldest; a job's own time limit, seconds (NULL: the server's).
+ALTER TABLE jobs ADD COLUMN priority INTEGER NOT NULL DEFAULT 0;
+ALTER TABLE jobs ADD COLUMN max_runtime_s BIGINT;
+CREATE INDEX jobs_by_claim_order ON jobs (state, priority DESC, created_at);

@@ -21,6 +21,8 @@ pub enum CancelReason {
     Shutdown = 2,
     /// Another worker took over the job after this one's lease expired: stop without writing.
     LeaseLost = 3,
+    /// The job ran past its own `max_runtime_seconds`: it checkpoints and fails `time_limit`.
+    TimeLimit = 4,
 }
 
 /// The cancel flag handed to the pipeline, with the reason it was raised.
@@ -43,6 +45,7 @@ impl JobControl {
             1 => Some(CancelReason::User),
             2 => Some(CancelReason::Shutdown),
             3 => Some(CancelReason::LeaseLost),
+            4 => Some(CancelReason::TimeLimit),
             _ => None,
         }
     }

@@ -47,7 +47,12 @@ async fn worker_loop(state: AppState, index: usize) {
         wake.as_mut().enable();
         match state
             .store
-            .claim(state.runtime.owner(), now_ms(), lease_deadline(&state))
+            .claim_within(
+                state.runtime.owner(),
+                now_ms(),
+                lease_deadline(&state),
+                &state.config.quotas().running(),
+            )
             .await
         {
             Ok(Some(job)) => {
@@ -285,6 +290,13 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
         dirty: Notify::new(),
     });
     let done = CancellationToken::new();
+    if let Some(limit) = job.max_runtime_seconds {
+        tokio::spawn(stop_at_time_limit(
+            Duration::from_secs(limit),
+            control.clone(),
+            done.clone(),
+        ));
+    }
     let heartbeat = tokio::spawn(
         heartbeat_loop(
             state.clone(),
@@ -315,12 +327,14 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
         }
         Ok(Ok(Executed::Interrupted)) => match control.reason() {
             Some(CancelReason::User) => Some(Finish::Cancelled),
+            Some(CancelReason::TimeLimit) => Some(past_time_limit(&job, true)),
             Some(CancelReason::LeaseLost) => None,
             Some(CancelReason::Shutdown) | None => Some(Finish::Requeue),
         },
         Ok(Ok(Executed::Died { reason, message })) => match control.reason() {
             // Stopped on purpose (a cancel or shutdown the process could not answer in time).
             Some(CancelReason::User) => Some(Finish::Cancelled),
+            Some(CancelReason::TimeLimit) => Some(past_time_limit(&job, false)),
             Some(CancelReason::LeaseLost) => None,
             Some(CancelReason::Shutdown) => Some(Finish::Requeue),
             None => Some(Finish::Died { reason, message }),
@@ -375,6 +389,36 @@ async fn run_job(state: &AppState, job: JobRecord, span: tracing::Span) {
         .observe_job(job.spec.kind(), outcome, started.elapsed());
     state.runtime.unregister(&job.id);
     state.runtime.changed(&job.id);
+}
+
+/// Raises the job's cancel flag (as [`CancelReason::TimeLimit`]) when `limit` has passed,
+/// unless the job ended first.
+async fn stop_at_time_limit(limit: Duration, control: Arc<JobControl>, done: CancellationToken) {
+    tokio::select! {
+        _ = tokio::time::sleep(limit) => {
+            tracing::warn!(seconds = limit.as_secs(), "the job ran past its time limit; stopping it");
+            control.cancel(CancelReason::TimeLimit);
+        }
+        _ = done.cancelled() => {}
+    }
+}
+
+/// How a job stopped at its own time limit ends: failed `time_limit`, resumable by a restart
+/// when it checkpointed first.
+fn past_time_limit(job: &JobRecord, checkpointed: bool) -> Finish {
+    let seconds = job.max_runtime_seconds.unwrap_or_default();
+    let after = if checkpointed {
+        format!(
+            "; its model was checkpointed (POST /v1/jobs/{}/restart goes on from there)",
+            job.id
+        )
+    } else {
+        String::new()
+    };
+    Finish::Failed {
+        code: "time_limit",
+        message: format!("the job ran past its max_runtime_seconds of {seconds} s{after}"),
+    }
 }
 
 async fn heartbeat_loop(

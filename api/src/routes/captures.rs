@@ -150,13 +150,17 @@ pub fn body_error(e: &(dyn std::error::Error + 'static)) -> ApiError {
 /// Bytes of an oversized upload read (and dropped) before answering 413.
 const DRAIN_BEFORE_REJECT: usize = 8 << 20;
 
-/// Rejects early when the declared length is already over the limit.
-pub fn check_content_length(headers: &HeaderMap, limit: u64) -> Result<(), ApiError> {
-    let declared = headers
+/// The request's declared `Content-Length`, when it has a valid one.
+fn content_length(headers: &HeaderMap) -> Option<u64> {
+    headers
         .get(header::CONTENT_LENGTH)
         .and_then(|v| v.to_str().ok())
-        .and_then(|v| v.parse::<u64>().ok());
-    match declared {
+        .and_then(|v| v.parse::<u64>().ok())
+}
+
+/// Rejects early when the declared length is already over the limit.
+pub fn check_content_length(headers: &HeaderMap, limit: u64) -> Result<(), ApiError> {
+    match content_length(headers) {
         Some(len) if len > limit => Err(too_large(limit)),
         _ => Ok(()),
     }
@@ -332,6 +336,8 @@ pub(crate) async fn ingest(
         (status = PAYLOAD_TOO_LARGE, description = "An upload over --max-upload-mb, or an \
             archive expanding past the limits: decompression bomb, too many entries \
             (payload_too_large)", body = ErrorBody),
+        (status = FORBIDDEN, description = "The account's stored bytes would pass its quota \
+            (storage_quota_exceeded)", body = ErrorBody),
         (status = UNSUPPORTED_MEDIA_TYPE, description = "Not a .zip or .tar archive \
             (unsupported_archive)", body = ErrorBody),
         (status = UNPROCESSABLE_ENTITY, description = "The capture breaks the capture format \
@@ -352,6 +358,11 @@ pub async fn upload(
         let _ = axum::body::to_bytes(body, DRAIN_BEFORE_REJECT).await;
         return Err(too_large);
     }
+    let declared = content_length(&headers).unwrap_or(0);
+    if let Err(over_quota) = crate::quotas::admit_bytes(&state, &caller, declared).await {
+        let _ = axum::body::to_bytes(body, DRAIN_BEFORE_REJECT).await;
+        return Err(over_quota);
+    }
     let id = new_id("cap");
     let staging = TempDir::create(state.paths.tmp.join(&id))?;
     let archive = staging.path().join("upload");
@@ -362,6 +373,8 @@ pub async fn upload(
             "the request body is empty; send a .zip or .tar archive",
         ));
     }
+    // A body sent without a length is held to the quota once its size is known.
+    crate::quotas::admit_bytes(&state, &caller, size).await?;
     // The rest runs to completion in its own task even if the client disconnects, so the
     // capture is either recorded or removed, and the temporary folder always cleaned up.
     let account = caller.account().map(str::to_owned);

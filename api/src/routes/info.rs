@@ -10,6 +10,7 @@ use utoipa::ToSchema;
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
 use crate::pipeline::Engines;
+use crate::quotas::{AccountLimits, AccountUsage};
 use crate::AppState;
 
 /// What the deployment offers.
@@ -26,6 +27,19 @@ pub struct Info {
     queue: Queue,
     /// Jobs this process runs at once (`--workers`; 0: an API without workers).
     workers: usize,
+    /// The token's account: what it may hold and ask for, and what it holds; null for the
+    /// admin token (held only to the limits above).
+    #[schema(required = true)]
+    account: Option<AccountInfo>,
+}
+
+/// An account's share of the deployment.
+#[derive(Serialize, ToSchema)]
+pub struct AccountInfo {
+    name: String,
+    /// Its limits (null: none).
+    limits: AccountLimits,
+    usage: AccountUsage,
 }
 
 /// Every limit an input or a job is held to (README, "Jobs in their own processes, and
@@ -86,6 +100,14 @@ pub async fn info(
     Extension(caller): Extension<Caller>,
 ) -> Result<Json<Info>, ApiError> {
     let counts = state.store.counts(caller.account()).await?;
+    let account = match caller.account() {
+        Some(name) => Some(AccountInfo {
+            name: name.to_owned(),
+            limits: state.config.quotas().of(name),
+            usage: state.store.account_usage(name).await?,
+        }),
+        None => None,
+    };
     let engines = state
         .engines
         .get_or_try_init(|| async {
@@ -121,5 +143,6 @@ pub async fn info(
             running: counts.running,
         },
         workers: config.workers,
+        account,
     }))
 }

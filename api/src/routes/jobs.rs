@@ -21,6 +21,7 @@ use utoipa::{IntoParams, ToSchema};
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
 use crate::queue::{new_id, CancelReason};
+use crate::quotas::JobRequestLimits;
 use crate::routes::captures::TempDir;
 use crate::store::{
     now_ms, rfc3339, DeleteOutcome, JobRecord, JobSpec, JobState, NewJob, StoreError, WebhookRecord,
@@ -96,6 +97,12 @@ pub struct JobView {
     /// Where the job's end is reported, and how that goes; null without a webhook.
     #[schema(required = true)]
     webhook: Option<WebhookRecord>,
+    /// Queued jobs of higher priority start first, then the oldest.
+    priority: i32,
+    /// The job's own time limit per attempt, seconds; null: the server's
+    /// (`GET /v1/info`).
+    #[schema(required = true)]
+    max_runtime_seconds: Option<u64>,
 }
 
 /// What a job does.
@@ -147,6 +154,8 @@ impl From<JobRecord> for JobView {
             cancel_requested: job.cancel_requested,
             config,
             webhook: job.webhook,
+            priority: job.priority,
+            max_runtime_seconds: job.max_runtime_seconds,
         }
     }
 }
@@ -166,6 +175,16 @@ pub struct SubmitRequest {
     /// signed: `Phygap-Signature`); default: the server's `--webhook`, if any.
     #[serde(default)]
     webhook: Option<String>,
+    /// Queued jobs of higher priority start first (-100 to the token's `max_priority`, 0 by
+    /// default for accounts; the admin may use up to 100).
+    #[serde(default)]
+    #[schema(minimum = -100, maximum = 100)]
+    priority: i32,
+    /// Longest one attempt of the job may run, seconds (at most the server's limit): past it the
+    /// job checkpoints and fails `time_limit`.
+    #[serde(default)]
+    #[schema(minimum = 1)]
+    max_runtime_seconds: Option<u64>,
 }
 
 /// Largest `POST /v1/jobs` body (axum's default body limit; a config is about 2 KB).
@@ -238,7 +257,11 @@ pub async fn load_job(state: &AppState, caller: &Caller, id: &str) -> Result<Job
             a webhook that is not an http(s) URL of an allowed host (invalid_webhook), \
             an unknown capture (unknown_capture), a job whose estimated memory at its working \
             resolution exceeds the job memory limit (capture_too_large, naming a resolution that \
-            fits), a reused idempotency key (idempotency_key_reused)", body = ErrorBody),
+            fits), a reused idempotency key (idempotency_key_reused), a priority above the \
+            token's (priority_not_allowed), a time limit of 0 or over the server's \
+            (invalid_max_runtime)", body = ErrorBody),
+        (status = TOO_MANY_REQUESTS, description = "The account has as many jobs queued as its \
+            limit allows (queued_job_limit)", body = ErrorBody),
     )
 )]
 pub async fn submit(
@@ -283,13 +306,40 @@ pub async fn submit(
     // The store keeps keys per account (the job's), so one account cannot reach another's
     // jobs through them.
     let key = idempotency_key(&headers)?;
-    let hash = serde_json::to_string(&(&request.capture_id, &request.config, &request.webhook))
-        .map_err(|e| ApiError::internal("hashing the request", e))?;
+    // Requests without a priority or time limit hash as they did before those existed, so a
+    // retry across an upgrade still finds its job.
+    let base = (&request.capture_id, &request.config, &request.webhook);
+    let hash = if request.priority == 0 && request.max_runtime_seconds.is_none() {
+        serde_json::to_string(&base)
+    } else {
+        serde_json::to_string(&(
+            base.0,
+            base.1,
+            base.2,
+            request.priority,
+            request.max_runtime_seconds,
+        ))
+    }
+    .map_err(|e| ApiError::internal("hashing the request", e))?;
     let webhook_url = state.config.webhooks.target(request.webhook.as_deref())?;
+    let asks = JobRequestLimits {
+        priority: request.priority,
+        max_runtime_seconds: request.max_runtime_seconds,
+    };
+    // A retry of a submit that was accepted answers its job, even with the queue full now.
+    let replay = match key.as_deref() {
+        Some(key) => state.store.has_request_key(caller.account(), key).await?,
+        None => false,
+    };
+    if !replay {
+        crate::quotas::admit_job(&state, &caller, asks).await?;
+    }
     let job = NewJob {
         id: new_id("job"),
         capture_id: request.capture_id,
         webhook_url,
+        priority: asks.priority,
+        max_runtime_seconds: asks.max_runtime_seconds,
         iterations: request.config.iterations,
         spec: JobSpec::Train {
             config: request.config,
@@ -614,6 +664,8 @@ pub struct RelightForm {
             (invalid_cameras) or more views or pixels than the capture limits allow \
             (cameras_too_large), a rotate_deg that is not a finite number (invalid_rotate_deg)",
             body = ErrorBody),
+        (status = TOO_MANY_REQUESTS, description = "The account has as many jobs queued as its \
+            limit allows (queued_job_limit)", body = ErrorBody),
     )
 )]
 pub async fn relight(
@@ -635,6 +687,12 @@ pub async fn relight(
             ),
         ));
     }
+    // A relight runs at its model's priority, under the server's time limit.
+    let asks = JobRequestLimits {
+        priority: parent.priority,
+        max_runtime_seconds: None,
+    };
+    crate::quotas::admit_job(&state, &caller, asks).await?;
     let mut multipart = multipart.map_err(|e| {
         ApiError::new(
             StatusCode::UNSUPPORTED_MEDIA_TYPE,
@@ -744,6 +802,8 @@ pub async fn relight(
         created_at: now_ms(),
         account: caller.account().map(str::to_owned),
         webhook_url,
+        priority: asks.priority,
+        max_runtime_seconds: asks.max_runtime_seconds,
     };
     let record = match state.store.submit(&job, None).await {
         Ok((record, _)) => record,
@@ -885,6 +945,8 @@ pub struct RestartRequest {
             (invalid_request), an invalid config (invalid_config), settings for a relight job \
             (invalid_request), a capture that cannot fit at the new resolution \
             (capture_too_large)", body = ErrorBody),
+        (status = TOO_MANY_REQUESTS, description = "The account has as many jobs queued as its \
+            limit allows (queued_job_limit)", body = ErrorBody),
     )
 )]
 pub async fn restart(
@@ -907,6 +969,11 @@ pub async fn restart(
             ),
         ));
     }
+    let asks = JobRequestLimits {
+        priority: job.priority,
+        max_runtime_seconds: job.max_runtime_seconds,
+    };
+    crate::quotas::admit_job(&state, &caller, asks).await?;
     let (spec, fresh) = match &job.spec {
         JobSpec::Train { config } => {
             let changed = match &request.config {

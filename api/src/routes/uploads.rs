@@ -231,6 +231,7 @@ pub async fn create(
             return Err(invalid_upload("sha256 must be 64 hexadecimal digits"));
         }
     }
+    crate::quotas::admit_bytes(&state, &caller, request.size).await?;
     let now = now_ms();
     let record = UploadRecord {
         id: new_id("upl"),

@@ -21,6 +21,8 @@ use phygap::core::config::TrainConfig;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::quotas::{AccountUsage, RunningLimits};
+
 /// Failures of the store.
 #[derive(Debug, Error)]
 pub enum StoreError {
@@ -184,6 +186,10 @@ pub struct JobRecord {
     pub account: Option<String>,
     /// Its webhook, when it has one.
     pub webhook: Option<WebhookRecord>,
+    /// Queued jobs of higher priority are claimed first (then the oldest).
+    pub priority: i32,
+    /// Longest one attempt may run before the job fails `time_limit`; `None`: the server's.
+    pub max_runtime_seconds: Option<u64>,
 }
 
 /// A job to enqueue.
@@ -197,6 +203,10 @@ pub struct NewJob {
     pub account: Option<String>,
     /// Where to report the job's end ([`crate::webhooks`]).
     pub webhook_url: Option<String>,
+    /// Claimed before queued jobs of lower priority.
+    pub priority: i32,
+    /// Its own time limit ([`JobRecord::max_runtime_seconds`]).
+    pub max_runtime_seconds: Option<u64>,
 }
 
 /// How a job's end is being reported to its webhook.
@@ -359,6 +369,8 @@ pub trait Store: Send + Sync + 'static {
         idempotency: Option<(&str, &str)>,
     ) -> Result<(JobRecord, bool), StoreError>;
     async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError>;
+    /// Whether `account` (`None`: the admin) submitted a job with this Idempotency-Key.
+    async fn has_request_key(&self, account: Option<&str>, key: &str) -> Result<bool, StoreError>;
     /// Newest first; only `account`'s jobs when one is given.
     async fn list_jobs(
         &self,
@@ -372,13 +384,30 @@ pub trait Store: Send + Sync + 'static {
     async fn jobs_ended_before(&self, before: i64) -> Result<Vec<String>, StoreError>;
     /// Captures uploaded before `before` (unix ms) that no job uses.
     async fn unused_captures_before(&self, before: i64) -> Result<Vec<String>, StoreError>;
-    /// Atomically takes the oldest queued job for `owner` until `lease_until` (unix ms).
+    /// Atomically takes a queued job for `owner` until `lease_until` (unix ms): the highest
+    /// priority, then the oldest, of the accounts running fewer jobs than `running` allows them.
+    /// (Two processes claiming at the same moment may each see an account one job under its
+    /// limit, so across processes it holds to within one job per claiming process.)
+    async fn claim_within(
+        &self,
+        owner: &str,
+        now: i64,
+        lease_until: i64,
+        running: &RunningLimits,
+    ) -> Result<Option<JobRecord>, StoreError>;
+    /// [`Store::claim_within`] with no account limited.
     async fn claim(
         &self,
         owner: &str,
         now: i64,
         lease_until: i64,
-    ) -> Result<Option<JobRecord>, StoreError>;
+    ) -> Result<Option<JobRecord>, StoreError> {
+        self.claim_within(owner, now, lease_until, &RunningLimits::default())
+            .await
+    }
+    /// What `account` holds: its running and queued jobs, and the bytes of its captures and
+    /// open uploads.
+    async fn account_usage(&self, account: &str) -> Result<AccountUsage, StoreError>;
     /// Writes progress and extends the lease; returns whether a cancel was requested.
     async fn heartbeat(
         &self,
@@ -503,6 +532,8 @@ pub(crate) struct RawJob {
     pub webhook_attempts: u32,
     pub webhook_status: Option<String>,
     pub webhook_done: bool,
+    pub priority: i32,
+    pub max_runtime_seconds: Option<i64>,
 }
 
 impl RawJob {
@@ -533,6 +564,8 @@ impl RawJob {
             attempts: self.attempts,
             cancel_requested: self.cancel_requested,
             account: self.account,
+            priority: self.priority,
+            max_runtime_seconds: self.max_runtime_seconds.and_then(|s| u64::try_from(s).ok()),
         })
     }
 }

@@ -17,6 +17,7 @@ use super::{
     NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Store, StoreError,
     UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
 };
+use crate::quotas::{AccountUsage, RunningLimits};
 
 /// The schema's versions, oldest first; each runs once, in a transaction.
 const MIGRATIONS: &[(i32, &str)] = &[
@@ -45,7 +46,9 @@ const POOL_TIMEOUT: Duration = Duration::from_secs(5);
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
                            finished_at, attempts, cancel_requested, account, error_code, \
                            last_death, webhook_url, webhook_attempts, webhook_status, \
-                           webhook_done";
+                           webhook_done, priority, max_runtime_s";
+/// How many columns [`JOB_COLUMNS`] names.
+const JOB_COLUMN_COUNT: usize = 20;
 
 /// The PostgreSQL store.
 pub struct PostgresStore {
@@ -96,6 +99,8 @@ fn raw_job(row: &Row) -> Result<RawJob, StoreError> {
         webhook_attempts: row.try_get::<_, i32>(15)?.max(0) as u32,
         webhook_status: row.try_get(16)?,
         webhook_done: row.try_get(17)?,
+        priority: row.try_get(18)?,
+        max_runtime_seconds: row.try_get(19)?,
     })
 }
 
@@ -346,6 +351,9 @@ impl Store for PostgresStore {
         });
         let spec = to_json(&job.spec);
         let (key, hash) = (idempotency.map(|(k, _)| k), idempotency.map(|(_, h)| h));
+        let max_runtime = job
+            .max_runtime_seconds
+            .map(|s| s.min(i64::MAX as u64) as i64);
         let client = self.pool.get().await?;
         // A key used before (even by a request still in flight on another replica) makes the
         // insert a no-op; the job it names is then read back below.
@@ -353,8 +361,9 @@ impl Store for PostgresStore {
             .query_opt(
                 &format!(
                     "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                       request_key, request_hash, account, webhook_url)
-                     VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7, $8, $9)
+                                       request_key, request_hash, account, webhook_url,
+                                       priority, max_runtime_s)
+                     VALUES ($1, $2, $3, 'queued', $4, $5, $6, $7, $8, $9, $10, $11)
                      ON CONFLICT ((COALESCE(account, '')), request_key)
                          WHERE request_key IS NOT NULL DO NOTHING
                      RETURNING {JOB_COLUMNS}"
@@ -369,6 +378,8 @@ impl Store for PostgresStore {
                     &hash,
                     &job.account,
                     &job.webhook_url,
+                    &job.priority,
+                    &max_runtime,
                 ],
             )
             .await?;
@@ -391,11 +402,24 @@ impl Store for PostgresStore {
                 &[&key, &job.account],
             )
             .await?;
-        let stored_hash: Option<String> = row.try_get(18)?;
+        // request_hash follows the job's columns.
+        let stored_hash: Option<String> = row.try_get(JOB_COLUMN_COUNT)?;
         if stored_hash.as_deref() != Some(hash) {
             return Err(StoreError::IdempotencyConflict(key.to_owned()));
         }
         Ok((job_of(&row)?, false))
+    }
+
+    async fn has_request_key(&self, account: Option<&str>, key: &str) -> Result<bool, StoreError> {
+        let client = self.pool.get().await?;
+        let row = client
+            .query_one(
+                "SELECT EXISTS (SELECT 1 FROM jobs
+                                WHERE request_key = $1 AND account IS NOT DISTINCT FROM $2)",
+                &[&key, &account],
+            )
+            .await?;
+        Ok(row.try_get(0)?)
     }
 
     async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError> {
@@ -487,25 +511,62 @@ impl Store for PostgresStore {
             .collect::<Result<_, _>>()?)
     }
 
-    async fn claim(
+    async fn claim_within(
         &self,
         owner: &str,
         now: i64,
         lease_until: i64,
+        running: &RunningLimits,
     ) -> Result<Option<JobRecord>, StoreError> {
+        // $4: {"account": limit, …}; $5: the limit of other accounts (NULL: none).
+        let default = running.default.map(i64::from);
         self.query_job(
             &format!(
                 "UPDATE jobs SET state = 'running', owner = $1, lease_until = $2,
                         started_at = COALESCE(started_at, $3), attempts = attempts + 1
                  WHERE id = (
-                     SELECT id FROM jobs WHERE state = 'queued'
-                     ORDER BY created_at, seq LIMIT 1
+                     SELECT id FROM jobs AS q WHERE state = 'queued'
+                       AND (q.account IS NULL
+                            OR COALESCE(($4::TEXT::JSONB ->> q.account)::BIGINT, $5) IS NULL
+                            OR (SELECT COUNT(*) FROM jobs AS busy
+                                WHERE busy.state = 'running' AND busy.account = q.account)
+                               < COALESCE(($4::TEXT::JSONB ->> q.account)::BIGINT, $5))
+                     ORDER BY priority DESC, created_at, seq LIMIT 1
                      FOR UPDATE SKIP LOCKED)
                  RETURNING {JOB_COLUMNS}"
             ),
-            &[&owner, &lease_until, &now],
+            &[
+                &owner,
+                &lease_until,
+                &now,
+                &running.accounts_json(),
+                &default,
+            ],
         )
         .await
+    }
+
+    async fn account_usage(&self, account: &str) -> Result<AccountUsage, StoreError> {
+        let client = self.pool.get().await?;
+        let row = client
+            .query_one(
+                "SELECT
+                    (SELECT COUNT(*) FROM jobs WHERE account = $1 AND state = 'running'),
+                    (SELECT COUNT(*) FROM jobs WHERE account = $1 AND state = 'queued'),
+                    ((SELECT COALESCE(SUM(size_bytes), 0) FROM captures WHERE account = $1)
+                     + (SELECT COALESCE(SUM(size), 0) FROM uploads
+                        WHERE account = $1 AND state IN ('open', 'committing')))::BIGINT",
+                &[&account],
+            )
+            .await?;
+        let count = |i: usize| -> Result<u32, StoreError> {
+            Ok(row.try_get::<_, i64>(i)?.clamp(0, u32::MAX as i64) as u32)
+        };
+        Ok(AccountUsage {
+            running: count(0)?,
+            queued: count(1)?,
+            stored_bytes: row.try_get::<_, i64>(2)?.max(0) as u64,
+        })
     }
 
     async fn heartbeat(
@@ -898,5 +959,15 @@ impl Store for PostgresStore {
             queued: row.try_get::<_, i64>(0)?.max(0) as u64,
             running: row.try_get::<_, i64>(1)?.max(0) as u64,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_job_column_count_is_the_columns_named() {
+        assert_eq!(JOB_COLUMNS.split(',').count(), JOB_COLUMN_COUNT);
     }
 }

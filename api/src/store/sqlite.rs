@@ -11,6 +11,7 @@ use super::{
     NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Store, StoreError,
     UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
 };
+use crate::quotas::{AccountUsage, RunningLimits};
 
 /// The embedded SQLite store.
 pub struct SqliteStore {
@@ -79,7 +80,7 @@ CREATE TABLE IF NOT EXISTS upload_parts (
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
                            finished_at, attempts, cancel_requested, account, error_code, \
                            last_death, webhook_url, webhook_attempts, webhook_status, \
-                           webhook_done";
+                           webhook_done, priority, max_runtime_s";
 
 /// Columns added after the first release, added to older files when they are opened.
 /// `request_key` is the client's Idempotency-Key, unique per account (the first release kept
@@ -98,6 +99,8 @@ const ADDED_COLUMNS: &[(&str, &str)] = &[
     ("jobs", "webhook_status TEXT"),
     ("jobs", "webhook_next_at INTEGER"),
     ("jobs", "webhook_done INTEGER NOT NULL DEFAULT 0"),
+    ("jobs", "priority INTEGER NOT NULL DEFAULT 0"),
+    ("jobs", "max_runtime_s INTEGER"),
 ];
 
 /// Moves keys of files written by the first release into `request_key`, dropping the
@@ -116,6 +119,7 @@ WHERE idempotency_key IS NOT NULL;
 const ADDED_INDEXES: &str = "
 CREATE UNIQUE INDEX IF NOT EXISTS jobs_by_request_key
     ON jobs (COALESCE(account, ''), request_key) WHERE request_key IS NOT NULL;
+CREATE INDEX IF NOT EXISTS jobs_by_claim_order ON jobs (state, priority DESC, created_at);
 CREATE INDEX IF NOT EXISTS jobs_with_webhooks_to_send
     ON jobs (webhook_next_at) WHERE webhook_url IS NOT NULL AND webhook_done = 0;
 ";
@@ -148,6 +152,8 @@ fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
         webhook_attempts: row.get(15)?,
         webhook_status: row.get(16)?,
         webhook_done: row.get(17)?,
+        priority: row.get(18)?,
+        max_runtime_seconds: row.get(19)?,
     })
 }
 
@@ -357,8 +363,9 @@ impl Store for SqliteStore {
             };
             tx.execute(
                 "INSERT INTO jobs (id, capture_id, spec, state, progress, created_at,
-                                   request_key, request_hash, account, webhook_url)
-                 VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7, ?8, ?9)",
+                                   request_key, request_hash, account, webhook_url, priority,
+                                   max_runtime_s)
+                 VALUES (?1, ?2, ?3, 'queued', ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
                 params![
                     job.id,
                     job.capture_id,
@@ -369,12 +376,24 @@ impl Store for SqliteStore {
                     idempotency.map(|(_, h)| h),
                     job.account,
                     job.webhook_url,
+                    job.priority,
+                    job.max_runtime_seconds.map(|s| s.min(i64::MAX as u64) as i64),
                 ],
             )?;
             let record = Self::job_in(&tx, &job.id)?
                 .ok_or_else(|| corrupt(&job.id, "id", "inserted job not found"))?;
             tx.commit()?;
             Ok((record, true))
+        })
+    }
+
+    async fn has_request_key(&self, account: Option<&str>, key: &str) -> Result<bool, StoreError> {
+        self.with(|c| {
+            Ok(c.query_row(
+                "SELECT EXISTS (SELECT 1 FROM jobs WHERE request_key = ?1 AND account IS ?2)",
+                params![key, account],
+                |r| r.get(0),
+            )?)
         })
     }
 
@@ -457,25 +476,62 @@ impl Store for SqliteStore {
         })
     }
 
-    async fn claim(
+    async fn claim_within(
         &self,
         owner: &str,
         now: i64,
         lease_until: i64,
+        running: &RunningLimits,
     ) -> Result<Option<JobRecord>, StoreError> {
         self.with(|c| {
+            // ?4: {"account": limit, …}; ?5: the limit of other accounts (NULL: none). Account
+            // names are [A-Za-z0-9._-], so a quoted JSON path names them exactly.
             let sql = format!(
                 "UPDATE jobs SET state = 'running', owner = ?1, lease_until = ?2,
                         started_at = COALESCE(started_at, ?3), attempts = attempts + 1
                  WHERE state = 'queued' AND id = (
-                     SELECT id FROM jobs WHERE state = 'queued'
-                     ORDER BY created_at, rowid LIMIT 1)
+                     SELECT id FROM (
+                         SELECT id, priority, created_at, rowid AS r,
+                                COALESCE(json_extract(?4, '$.\"' || account || '\"'), ?5) AS cap,
+                                account
+                         FROM jobs WHERE state = 'queued') AS q
+                     WHERE q.account IS NULL OR q.cap IS NULL
+                        OR (SELECT COUNT(*) FROM jobs AS busy
+                            WHERE busy.state = 'running' AND busy.account = q.account) < q.cap
+                     ORDER BY priority DESC, created_at, r LIMIT 1)
                  RETURNING {JOB_COLUMNS}"
             );
-            c.query_row(&sql, params![owner, lease_until, now], raw_job)
-                .optional()?
-                .map(RawJob::parse)
-                .transpose()
+            let default = running.default.map(i64::from);
+            let accounts = running.accounts_json();
+            c.query_row(
+                &sql,
+                params![owner, lease_until, now, accounts, default],
+                raw_job,
+            )
+            .optional()?
+            .map(RawJob::parse)
+            .transpose()
+        })
+    }
+
+    async fn account_usage(&self, account: &str) -> Result<AccountUsage, StoreError> {
+        self.with(|c| {
+            Ok(c.query_row(
+                "SELECT
+                    (SELECT COUNT(*) FROM jobs WHERE account = ?1 AND state = 'running'),
+                    (SELECT COUNT(*) FROM jobs WHERE account = ?1 AND state = 'queued'),
+                    (SELECT COALESCE(SUM(size_bytes), 0) FROM captures WHERE account = ?1)
+                  + (SELECT COALESCE(SUM(size), 0) FROM uploads
+                     WHERE account = ?1 AND state IN ('open', 'committing'))",
+                params![account],
+                |r| {
+                    Ok(AccountUsage {
+                        running: r.get(0)?,
+                        queued: r.get(1)?,
+                        stored_bytes: r.get::<_, i64>(2)?.max(0) as u64,
+                    })
+                },
+            )?)
         })
     }
 

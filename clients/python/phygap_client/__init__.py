@@ -181,11 +181,21 @@ class Client:
         config: Optional[dict] = None,
         webhook: Optional[str] = None,
         idempotency_key: Optional[str] = None,
+        priority: Optional[int] = None,
+        max_runtime_seconds: Optional[int] = None,
     ) -> dict:
-        """Queues a training job; a retry with the same `idempotency_key` returns the same job."""
+        """Queues a training job; a retry with the same `idempotency_key` returns the same job.
+
+        `priority` (higher starts first, within the token's bounds) and `max_runtime_seconds`
+        (past it the job checkpoints and fails `time_limit`) are the service's defaults when
+        left out."""
         body: dict[str, Any] = {"capture_id": capture_id, "config": config or {}}
         if webhook:
             body["webhook"] = webhook
+        if priority is not None:
+            body["priority"] = priority
+        if max_runtime_seconds is not None:
+            body["max_runtime_seconds"] = max_runtime_seconds
         headers = {"idempotency-key": idempotency_key} if idempotency_key else {}
         return self._json("POST", "/v1/jobs", json=body, headers=headers)
 

@@ -46,9 +46,12 @@ def main(base_url: str, capture: str, envmap: str) -> None:
         assert uploaded["views"] == 10, uploaded
         config = {"iterations": 20, "checkpoint_interval": 10, "eval_interval": 10,
                   "initial_surfels": 100, "max_surfels": 1000, "gridmap": False}
-        job = phygap.train(uploaded["id"], config=config, idempotency_key="client-test-1")
-        again = phygap.train(uploaded["id"], config=config, idempotency_key="client-test-1")
+        job = phygap.train(uploaded["id"], config=config, idempotency_key="client-test-1",
+                           max_runtime_seconds=600)
+        again = phygap.train(uploaded["id"], config=config, idempotency_key="client-test-1",
+                             max_runtime_seconds=600)
         assert again["id"] == job["id"], (job, again)
+        assert (job["priority"], job["max_runtime_seconds"]) == (0, 600), job
 
         events = []
         done = phygap.wait(job["id"], on_event=events.append, poll_seconds=0.2,

@@ -22,13 +22,23 @@ rm -rf "$sample"
 "$bin/phygap" synth --out "$sample" --shape sphere --views 24 --size 96
 (cd "$sample" && tar -cf ../sample-capture.tar -- *)
 
-"$bin/phygap-api" serve --bind "127.0.0.1:$port" --data-dir "$data" &
+# The service's log goes to a file, so that its lines do not break the progress line below.
+log="$data/service.log"
+"$bin/phygap-api" serve --bind "127.0.0.1:$port" --data-dir "$data" >"$log" 2>&1 &
 server=$!
 trap 'kill "$server" 2>/dev/null || true' EXIT INT TERM
+up=
 for _ in $(seq 1 100); do
-  curl -fsS "$base/healthz" >/dev/null 2>&1 && break
+  curl -fsS "$base/healthz" >/dev/null 2>&1 && { up=1; break; }
+  kill -0 "$server" 2>/dev/null || break
   sleep 0.2
 done
+if [ -z "$up" ]; then
+  echo "the service did not start; its log ($log) ends:" >&2
+  tail -n 20 "$log" >&2
+  exit 1
+fi
+echo "service started at $base; its log: $log (tail -f it to follow)"
 
 json_field() { sed -n "s/.*\"$1\":\"\\([^\"]*\\)\".*/\\1/p"; }
 capture=$(curl -fsS --data-binary @"$data/sample-capture.tar" "$base/v1/captures" | json_field id)

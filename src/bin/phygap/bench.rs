@@ -63,8 +63,10 @@ struct QualityBenchArgs {
 struct TrainBenchArgs {
     /// Capture folder (`transforms.json`).
     capture: PathBuf,
-    /// `gpu` trains whole steps on the device (any Vulkan/Metal/DX12 adapter, lavapipe included).
-    #[arg(long, value_enum, default_value = "cpu")]
+    /// As `phygap train`: `auto` is a real GPU when one is found, else `fast`; `gpu` trains whole
+    /// steps on the device (any Vulkan/Metal/DX12 adapter, lavapipe included); `cpu` is the f64
+    /// reference.
+    #[arg(long, value_enum, default_value = "auto")]
     backend: BackendChoice,
     /// Steps of the run (the schedule's intervals scale with it).
     #[arg(long, default_value_t = 200)]
@@ -103,8 +105,9 @@ struct GridMapBenchArgs {
 
 #[derive(Args)]
 struct RasterBenchArgs {
-    /// `gpu` runs on any Vulkan/Metal/DX12 adapter, lavapipe included.
-    #[arg(long, value_enum, default_value = "cpu")]
+    /// As `phygap train`: `auto` is a real GPU when one is found, else `fast`; `gpu` runs on any
+    /// Vulkan/Metal/DX12 adapter, lavapipe included.
+    #[arg(long, value_enum, default_value = "auto")]
     backend: BackendChoice,
     /// Print a JSON array of {surfels, width, height, fwd_ms, fwd_bwd_ms}.
     #[arg(long)]

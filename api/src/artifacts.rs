@@ -95,6 +95,16 @@ pub trait ArtifactStore: Send + Sync + 'static {
     ) -> Result<ArtifactReader, ArtifactError>;
     /// Removes the job's artifacts.
     async fn delete(&self, job_id: &str) -> Result<(), ArtifactError>;
+    /// A URL from which a client may GET the artifact itself for `expires` (a presigned bucket
+    /// URL), `None` where the store cannot give one.
+    async fn download_url(
+        &self,
+        _job_id: &str,
+        _info: &ArtifactInfo,
+        _expires: std::time::Duration,
+    ) -> Result<Option<String>, ArtifactError> {
+        Ok(None)
+    }
 }
 
 /// The job's folder name, checked like an artifact name without `/`.
@@ -317,8 +327,24 @@ impl ArtifactStore for BucketArtifacts {
             std::fs::remove_file(path).map_err(io_err(path))?;
         }
         self.bucket.delete_folder(&folder).await?;
-        self.bucket.upload_dir(&folder, staging).await?;
+        self.bucket
+            .upload_dir_typed(&folder, staging, content_type)
+            .await?;
         self.list(job_id).await
+    }
+
+    async fn download_url(
+        &self,
+        job_id: &str,
+        info: &ArtifactInfo,
+        expires: std::time::Duration,
+    ) -> Result<Option<String>, ArtifactError> {
+        let path = format!("{}/{}", Self::folder(job_id)?, info.name);
+        let file_name = info.name.rsplit('/').next().unwrap_or(&info.name);
+        Ok(self
+            .bucket
+            .presigned_get(&path, expires, info.content_type, file_name)
+            .await?)
     }
 
     async fn list(&self, job_id: &str) -> Result<Vec<ArtifactInfo>, ArtifactError> {

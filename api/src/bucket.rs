@@ -11,12 +11,16 @@
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
+use std::time::Duration;
 
 use futures_util::{StreamExt, TryStreamExt};
 use object_store::aws::AmazonS3Builder;
 use object_store::local::LocalFileSystem;
 use object_store::path::Path as Key;
-use object_store::{GetOptions, GetRange, ObjectStore, ObjectStoreExt, PutPayload};
+use object_store::signer::{Method, SignedUrlOptions, Signer};
+use object_store::{
+    Attribute, GetOptions, GetRange, ObjectStore, ObjectStoreExt, PutOptions, PutPayload,
+};
 use thiserror::Error;
 
 /// Files moved at once by [`Bucket::upload_dir`] and [`Bucket::download_dir`].
@@ -64,6 +68,8 @@ pub struct StoredFile {
 /// An object store with the service's prefix.
 pub struct Bucket {
     store: Arc<dyn ObjectStore>,
+    /// The same store where it can sign URLs (S3), for presigned downloads.
+    signer: Option<Arc<dyn Signer>>,
     prefix: Key,
 }
 
@@ -95,9 +101,10 @@ impl Bucket {
                     .map_err(|e| invalid(&format!("option `{key}`: {e}")))?;
                 builder = builder.with_config(key, value);
             }
-            let store = builder.build().map_err(|e| invalid(&e.to_string()))?;
+            let store = Arc::new(builder.build().map_err(|e| invalid(&e.to_string()))?);
             Ok(Bucket {
-                store: Arc::new(store),
+                store: store.clone(),
+                signer: Some(store),
                 prefix: parse_key(prefix)?,
             })
         } else if let Some(folder) = url.strip_prefix("file://") {
@@ -109,6 +116,7 @@ impl Bucket {
                 LocalFileSystem::new_with_prefix(folder).map_err(|e| invalid(&e.to_string()))?;
             Ok(Bucket {
                 store: Arc::new(store.with_automatic_cleanup(true)),
+                signer: None,
                 prefix: Key::default(),
             })
         } else {
@@ -161,6 +169,33 @@ impl Bucket {
         }
     }
 
+    /// A URL that lets anyone holding it GET one object for `expires`, its answer carrying
+    /// `content_type` and an attachment `file_name`; `None` where the store cannot sign (a
+    /// `file://` bucket).
+    pub async fn presigned_get(
+        &self,
+        path: &str,
+        expires: Duration,
+        content_type: &str,
+        file_name: &str,
+    ) -> Result<Option<String>, BucketError> {
+        let Some(signer) = &self.signer else {
+            return Ok(None);
+        };
+        // S3 answers with these headers in place of the object's own (they are signed too).
+        let options = SignedUrlOptions::default().with_query([
+            ("response-content-type", content_type.to_owned()),
+            (
+                "response-content-disposition",
+                format!("attachment; filename=\"{file_name}\""),
+            ),
+        ]);
+        let url = signer
+            .signed_url_opts(Method::GET, &self.key(path)?, expires, &options)
+            .await?;
+        Ok(Some(url.to_string()))
+    }
+
     /// `len` bytes of one object from byte `start`, as a stream.
     pub async fn read_range(
         &self,
@@ -182,6 +217,26 @@ impl Bucket {
     /// Uploads every file under `dir` (recursively) to `folder`, replacing objects of the same
     /// name; returns how many. Objects of `folder` that `dir` lacks are left alone.
     pub async fn upload_dir(&self, folder: &str, dir: &Path) -> Result<usize, BucketError> {
+        self.upload_files(folder, dir, None).await
+    }
+
+    /// [`Bucket::upload_dir`], each object stored with the content type `content_type` gives its
+    /// name (which the bucket answers a presigned GET with), where the store keeps one (S3).
+    pub async fn upload_dir_typed(
+        &self,
+        folder: &str,
+        dir: &Path,
+        content_type: fn(&str) -> &'static str,
+    ) -> Result<usize, BucketError> {
+        self.upload_files(folder, dir, Some(content_type)).await
+    }
+
+    async fn upload_files(
+        &self,
+        folder: &str,
+        dir: &Path,
+        content_type: Option<fn(&str) -> &'static str>,
+    ) -> Result<usize, BucketError> {
         let dir_owned = dir.to_owned();
         let files = tokio::task::spawn_blocking(move || local_files(&dir_owned))
             .await
@@ -190,11 +245,21 @@ impl Bucket {
                 source: std::io::Error::other(e),
             })??;
         let count = files.len();
+        // A local folder keeps no attributes (and refuses them).
+        let content_type = content_type.filter(|_| self.signer.is_some());
         futures_util::stream::iter(files)
             .map(|(name, path)| async move {
                 let key = self.key(&format!("{folder}/{name}"))?;
                 let bytes = tokio::fs::read(&path).await.map_err(io_err(&path))?;
-                self.store.put(&key, PutPayload::from(bytes)).await?;
+                let mut options = PutOptions::default();
+                if let Some(content_type) = content_type {
+                    options
+                        .attributes
+                        .insert(Attribute::ContentType, content_type(&name).into());
+                }
+                self.store
+                    .put_opts(&key, PutPayload::from(bytes), options)
+                    .await?;
                 Ok::<_, BucketError>(())
             })
             .buffer_unordered(CONCURRENT_TRANSFERS)

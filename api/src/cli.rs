@@ -223,6 +223,11 @@ pub struct ServeArgs {
     #[arg(long, default_value_t = 0, env = "PHYGAP_ACCOUNT_MAX_PRIORITY",
           value_parser = clap::value_parser!(i32).range(-100..=100))]
     pub account_max_priority: i32,
+    /// Artifact downloads answer 307 to a bucket URL valid for this many seconds (with an S3
+    /// --artifact-url), so the bytes come from the bucket, not through the API. Default: off.
+    #[arg(long, env = "PHYGAP_PRESIGNED_DOWNLOADS_SECONDS",
+          value_parser = clap::value_parser!(u64).range(1..=604_800))]
+    pub presigned_downloads_seconds: Option<u64>,
     /// URL every job's end is POSTed to when the job names none of its own.
     #[arg(long, env = "PHYGAP_WEBHOOK")]
     pub webhook: Option<String>,
@@ -254,6 +259,9 @@ impl ServeArgs {
             max_storage_bytes: self.account_max_storage_mb.map(|mb| mb << 20),
             max_priority: Some(self.account_max_priority),
         };
+        config.presigned_downloads = self
+            .presigned_downloads_seconds
+            .map(std::time::Duration::from_secs);
         config.retention = self
             .retention_days
             .map(|days| std::time::Duration::from_secs(u64::from(days) * 86_400));

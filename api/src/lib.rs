@@ -100,6 +100,9 @@ pub struct ServiceConfig {
     pub limits: ServiceLimits,
     /// Connections, timeouts and request sizes of the HTTP listener.
     pub http: connections::HttpLimits,
+    /// Artifact downloads answer 307 to a bucket URL presigned for this long (an S3
+    /// `--artifact-url` only); `None`: every byte streams through the API.
+    pub presigned_downloads: Option<Duration>,
     /// Where jobs' ends are reported, how they are signed, which hosts may be called.
     pub webhooks: webhooks::WebhookSettings,
 }
@@ -158,6 +161,7 @@ impl ServiceConfig {
             limits: ServiceLimits::default(),
             http: connections::HttpLimits::DEFAULT,
             webhooks: webhooks::WebhookSettings::default(),
+            presigned_downloads: None,
         }
     }
 }

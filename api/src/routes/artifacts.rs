@@ -149,6 +149,9 @@ fn header_value(text: &str) -> Result<HeaderValue, ApiError> {
         (status = PARTIAL_CONTENT, description = "The requested range", body = Binary, content_type = "*/*"),
         (status = NOT_MODIFIED, description = "The client's copy (If-None-Match, \
             If-Modified-Since) is this file"),
+        (status = TEMPORARY_REDIRECT, description = "With --presigned-downloads-seconds and an \
+            S3 bucket: the file's presigned bucket URL (Location), valid that long; a client \
+            sends its Range header there"),
         (status = NOT_FOUND, description = "No such job the token may see, or no such artifact \
             (not_found)", body = ErrorBody),
         (status = RANGE_NOT_SATISFIABLE, description = "The range starts past the end \
@@ -176,6 +179,16 @@ pub async fn download(
         let mut response = StatusCode::NOT_MODIFIED.into_response();
         caching_headers(response.headers_mut(), &validators)?;
         return Ok(response);
+    }
+    if let Some(expires) = state.config.presigned_downloads {
+        if let Some(url) = state.artifacts.download_url(&id, info, expires).await? {
+            // The client asks the bucket itself, its Range header with it.
+            let mut response = StatusCode::TEMPORARY_REDIRECT.into_response();
+            let h = response.headers_mut();
+            h.insert(header::LOCATION, header_value(&url)?);
+            h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+            return Ok(response);
+        }
     }
     let range = match validators.range_applies(&headers) {
         true => parse_range(

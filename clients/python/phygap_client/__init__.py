@@ -260,8 +260,14 @@ class Client:
         have = partial.stat().st_size if partial.exists() else 0
         if have and tag_file.exists():
             headers = {"range": f"bytes={have}-", "if-range": tag_file.read_text()}
+        # A service with presigned downloads answers 307 to the bucket; httpx drops the token on
+        # the way there (another origin) and keeps the Range.
         with self._http.stream(
-            "GET", f"/v1/jobs/{job_id}/artifacts/{name}", headers=headers, timeout=None
+            "GET",
+            f"/v1/jobs/{job_id}/artifacts/{name}",
+            headers=headers,
+            timeout=None,
+            follow_redirects=True,
         ) as response:
             if response.status_code >= 400:
                 response.read()

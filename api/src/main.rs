@@ -20,6 +20,13 @@ fn main() -> anyhow::Result<()> {
         .block_on(serve(config))
 }
 
+/// Colours in the log only on a terminal (a log file or a collector gets plain text) and never
+/// with `NO_COLOR` set.
+fn colour_log() -> bool {
+    use std::io::IsTerminal;
+    std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+}
+
 /// One stage of a job, in its own process: the memory cap comes first, before anything is read.
 fn stage(args: &phygap_api::cli::StageArgs) -> anyhow::Result<()> {
     if let Some(bytes) = args.memory_bytes {
@@ -46,6 +53,7 @@ async fn serve(config: phygap_api::ServiceConfig) -> anyhow::Result<()> {
             tracing_subscriber::EnvFilter::try_from_default_env()
                 .unwrap_or_else(|_| "info,wgpu_hal=error,wgpu_core=error".into()),
         )
+        .with_ansi(colour_log())
         .with_writer(std::io::stderr)
         .init();
     let executable = std::env::current_exe().context("finding the service's own executable")?;

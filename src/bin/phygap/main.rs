@@ -118,6 +118,12 @@ fn quiet_device_select() {
     }
 }
 
+/// Colours in the log only on a terminal and never with `NO_COLOR` set.
+fn colour_log() -> bool {
+    use std::io::IsTerminal;
+    std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+}
+
 fn main() {
     quiet_device_select();
     phygap::pipeline::allocator::keep_large_buffers();
@@ -126,6 +132,7 @@ fn main() {
             tracing_subscriber::EnvFilter::try_from_default_env()
                 .unwrap_or_else(|_| "warn,wgpu_hal=error,wgpu_core=error".into()),
         )
+        .with_ansi(colour_log())
         .with_writer(std::io::stderr)
         // With RUST_LOG=phygap=debug every pipeline span reports its busy time when it closes.
         .with_span_events(tracing_subscriber::fmt::format::FmtSpan::CLOSE)

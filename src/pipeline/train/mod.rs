@@ -21,6 +21,7 @@ mod angles;
 mod engine;
 mod eta;
 pub mod init;
+pub mod schedule;
 pub mod sparse;
 pub mod state;
 pub mod step;
@@ -62,8 +63,9 @@ use crate::pipeline::reconstruction::prefilter_plan;
 use sparse::init_for_capture;
 
 use crate::core::step::ViewTarget;
-use engine::{Pending, StepEngine};
+use engine::{Pending, StepEngine, StepOutcome};
 use eta::Eta;
+use schedule::{AfterStep, BeforeStep, Schedule};
 use state::{TrainState, CHECKPOINT_FILE};
 use targets::{learned_groups, resolve_mode, view_target};
 
@@ -119,13 +121,7 @@ pub enum TrainError {
 
 /// Stage of iteration `it` (0-based).
 pub fn stage_of(it: u32, config: &TrainConfig) -> Stage {
-    if it < config.material_stage_start() {
-        Stage::Geometry
-    } else if it < config.polar_stage_start() {
-        Stage::Material
-    } else {
-        Stage::Polar
-    }
+    Schedule::new(config).stage(it)
 }
 
 /// The most surfels densification may grow to: `surfels_per_mask_pixel` times the mean object
@@ -227,6 +223,30 @@ impl HostEnv {
             }
         }
         Ok(())
+    }
+}
+
+/// What changes during one session of a run (from its start or resume to its end or
+/// interruption).
+struct Session<'e> {
+    state: TrainState,
+    engine: StepEngine<'e>,
+    env: HostEnv,
+    /// The light's gradient summed over the steps since it was last applied.
+    pending: Pending,
+    occlusion: Occlusion,
+    eta: Eta,
+    started: Instant,
+    /// Training seconds of the sessions before this one.
+    earlier_seconds: f64,
+    checkpoint: PathBuf,
+    fingerprint: String,
+}
+
+impl Session<'_> {
+    /// Training seconds of the whole run so far.
+    fn elapsed(&self) -> f64 {
+        self.earlier_seconds + self.started.elapsed().as_secs_f64()
     }
 }
 
@@ -385,9 +405,28 @@ impl Run<'_> {
         cancel: &AtomicBool,
         reporter: &mut Reporter,
     ) -> Result<TrainOutcome, TrainError> {
+        let schedule = Schedule::new(self.config);
+        let mut session = self.start_session(resume, reporter)?;
+        while session.state.iteration < schedule.iterations() {
+            if cancel.load(Ordering::Relaxed) {
+                self.flush_env(&mut session)?;
+                let iteration = self.save_checkpoint(&mut session, reporter)?;
+                return Ok(TrainOutcome::Interrupted { iteration });
+            }
+            self.run_iteration(&schedule, &mut session, reporter)?;
+        }
+        self.end_session(&schedule, session, reporter)?;
+        Ok(TrainOutcome::Finished)
+    }
+
+    /// A session from the checkpoint (with `resume`, when there is one) or from a fresh state.
+    fn start_session(
+        &self,
+        resume: bool,
+        reporter: &mut Reporter,
+    ) -> Result<Session<'_>, TrainError> {
         let checkpoint = self.model_dir.join(CHECKPOINT_FILE);
-        let fp = fingerprint(self.config);
-        let (mut state, resumed_from) = if resume && checkpoint.exists() {
+        let (state, resumed_from) = if resume && checkpoint.exists() {
             let (state, saved_fp) = TrainState::load(&checkpoint)?;
             if !same_config(&saved_fp, self.config) {
                 return Err(TrainError::ConfigChanged(checkpoint));
@@ -407,163 +446,230 @@ impl Run<'_> {
             resumed_from,
             resolution: self.capture.working_resolution(),
         });
-        let session_start = Instant::now();
-        let earlier_sessions = state.elapsed_seconds;
-        let elapsed = || earlier_sessions + session_start.elapsed().as_secs_f64();
-        let mut env = HostEnv::new(&state, &self.plan)?;
+        let env = HostEnv::new(&state, &self.plan)?;
         engine.load(&state)?;
         engine.set_environment(&state.envmap, &self.plan)?;
-        let mut pending = Pending::default();
-        let mut occlusion = Occlusion::default();
-        let report_every = (self.config.iterations / 300).clamp(1, 25);
-        let iterations = self.config.iterations;
-        let mut eta = Eta::start(state.iteration);
-        while state.iteration < iterations {
-            if cancel.load(Ordering::Relaxed) {
-                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
-                engine.sync(&mut state)?;
-                let iteration = state.iteration;
-                state.elapsed_seconds = elapsed();
-                state.save(&checkpoint, &fp)?;
-                reporter.emit(TrainEvent::Checkpoint { iteration });
-                return Ok(TrainOutcome::Interrupted { iteration });
-            }
-            let it = state.iteration;
-            let stage = stage_of(it, self.config);
-            // Unknown polarizer angles are estimated when the PolarDR stage starts (a fixed
-            // iteration, so a resumed run does the same); until then the material and lighting
-            // are not fitted well enough to tell θ from θ + 90°.
-            if it == self.config.polar_stage_start() && !state.polarizer_angles.is_empty() {
-                engine.sync(&mut state)?;
-                env.refresh(&state, &self.plan, &mut occlusion)?;
-                state.polarizer_angles = angles::estimate(self, &state, &env.prepared)?;
-            }
-            // GridMap waits while the opacities recover from a reset: its mesh is fused from
-            // rendered opacity ≥ ½, which no surfel at opacity 0.01 gives.
-            if stage == Stage::Polar && self.config.gridmap && !self.recovering_from_reset(it) {
-                let since = it - self.config.polar_stage_start();
-                let due = |interval: u32| interval > 0 && since.is_multiple_of(interval);
-                let remesh = !occlusion.current
-                    || due(self.config.mesh_interval)
-                    || self.deferred_remesh_due(it);
-                if remesh || due(self.config.gridmap_interval) {
-                    engine.sync(&mut state)?;
-                    env.refresh(&state, &self.plan, &mut occlusion)?;
-                    let warning =
-                        self.rebuild_gridmap(&mut occlusion, &state, &env.prepared, remesh);
-                    if let Some(message) = warning {
-                        reporter.emit(TrainEvent::Warning {
-                            iteration: it,
-                            message,
-                        });
-                    }
-                    engine.set_gridmap(occlusion.grid.as_ref())?;
-                }
-            }
-            let mut rng = iteration_rng(self.config.seed, it);
-            let target = rng.random_range(0..self.targets.len());
-            if !engine.prefilters_on_device() {
-                // Host steps are lit by the host's prefilter (stale only after a fallback).
-                env.refresh(&state, &self.plan, &mut occlusion)?;
-            }
-            let light = self.light(&occlusion, &env.prepared, stage);
-            let outcome = match engine.step(self, &mut state, light, target, stage, &mut pending) {
-                Err(e) if StepEngine::is_oversized(&e) => {
-                    tracing::warn!("{e}: continuing with host steps (split into bands)");
-                    engine.fall_back_to_host(Some(&mut state), &mut pending)?;
-                    env.refresh(&state, &self.plan, &mut occlusion)?;
-                    let light = self.light(&occlusion, &env.prepared, stage);
-                    engine.step(self, &mut state, light, target, stage, &mut pending)?
-                }
-                other => other?,
-            };
-            if outcome.shaded
-                && (it + 1).is_multiple_of(self.config.envmap_prefilter_interval)
-                && self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?
-                && env.current
-            {
-                if let Some(grid) = &mut occlusion.grid {
-                    grid.set_global(env.prepared.clone());
-                }
-            }
-            self.apply_angle_gradients(&mut state, &outcome.angles, stage)?;
-            state.iteration += 1;
+        Ok(Session {
+            eta: Eta::start(state.iteration),
+            earlier_seconds: state.elapsed_seconds,
+            started: Instant::now(),
+            state,
+            engine,
+            env,
+            pending: Pending::default(),
+            occlusion: Occlusion::default(),
+            checkpoint,
+            fingerprint: fingerprint(self.config),
+        })
+    }
 
-            let done = state.iteration;
-            if done.is_multiple_of(report_every) || done == iterations {
-                let seconds = elapsed();
-                eta.observe(done, stage);
-                reporter.emit(TrainEvent::Step {
-                    iteration: done,
-                    iterations,
-                    stage,
-                    loss: outcome.total,
-                    losses: outcome.losses.clone(),
-                    num_surfels: state.surfels.len(),
-                    elapsed_seconds: seconds,
-                    eta_seconds: eta.remaining(done, self.config),
-                });
-            }
-            if self.config.eval_interval > 0
-                && done.is_multiple_of(self.config.eval_interval)
-                && done < iterations
-            {
-                engine.sync(&mut state)?;
-                env.refresh(&state, &self.plan, &mut occlusion)?;
-                if let Some(psnr) =
-                    self.test_psnr(&state, self.light(&occlusion, &env.prepared, stage))?
-                {
-                    reporter.emit(TrainEvent::Evaluated {
-                        iteration: done,
-                        test_psnr: psnr,
-                    });
-                }
-            }
-            // Densification and opacity resets come after the report and the test evaluation,
-            // so those show the model the step produced, not one whose opacities were just reset.
-            if self.densify_due(done, stage) || self.reset_due(done) {
-                engine.sync(&mut state)?;
-                self.refine(&mut state, stage, &mut rng)?;
-                match engine.load(&state) {
-                    Err(e) if StepEngine::is_oversized(&e) => {
-                        tracing::warn!("{e}: continuing with host steps");
-                        engine.fall_back_to_host(None, &mut pending)?;
-                    }
-                    other => other?,
-                }
-            }
-            let finite = match engine {
-                StepEngine::Host => state.surfels.is_finite(),
-                StepEngine::Device(_) => outcome.finite,
-            };
-            if !finite {
-                return Err(TrainError::Diverged(state.iteration));
-            }
-            if self.config.checkpoint_interval > 0
-                && done.is_multiple_of(self.config.checkpoint_interval)
-                && done < iterations
-            {
-                // A resumed run starts with no pending gradient and a freshly prefiltered map: do
-                // the same here, so the uninterrupted run and a resumed one stay bit-identical.
-                self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
-                env = HostEnv::new(&state, &self.plan)?;
-                engine.set_environment(&state.envmap, &self.plan)?;
-                occlusion = Occlusion::default();
-                engine.set_gridmap(None)?;
-                engine.sync(&mut state)?;
-                state.elapsed_seconds = elapsed();
-                state.save(&checkpoint, &fp)?;
-                reporter.emit(TrainEvent::Checkpoint { iteration: done });
+    /// One iteration: what is due before it, the step, and what is due after it.
+    fn run_iteration(
+        &self,
+        schedule: &Schedule,
+        session: &mut Session,
+        reporter: &mut Reporter,
+    ) -> Result<(), TrainError> {
+        let it = session.state.iteration;
+        let before = schedule.before(it);
+        self.prepare_iteration(&before, session, reporter)?;
+        let mut rng = iteration_rng(self.config.seed, it);
+        let target = rng.random_range(0..self.targets.len());
+        let outcome = self.step(session, target, before.stage)?;
+        let after = schedule.after(it);
+        if outcome.shaded && after.update_light && self.flush_env(session)? && session.env.current {
+            if let Some(grid) = &mut session.occlusion.grid {
+                grid.set_global(session.env.prepared.clone());
             }
         }
-        self.flush_env(&mut state, &mut env, &mut pending, &mut engine)?;
-        engine.sync(&mut state)?;
-        let env = PreparedEnv::new(&state.envmap, self.plan.clone())?;
-        state.elapsed_seconds = elapsed();
-        state.save(&checkpoint, &fp)?;
-        // The final evaluation lights the model as rendering it later will: GridMap rebuilt from
-        // the final state.
-        let last_stage = stage_of(iterations.saturating_sub(1), self.config);
+        self.apply_angle_gradients(&mut session.state, &outcome.angles, before.stage)?;
+        session.state.iteration += 1;
+        self.conclude_iteration(&after, before.stage, &outcome, &mut rng, session, reporter)
+    }
+
+    /// Before iteration `it`: the estimate of unknown polarizer angles when the PolarDR stage
+    /// starts, and GridMap's mesh and probes on their schedule.
+    fn prepare_iteration(
+        &self,
+        before: &BeforeStep,
+        session: &mut Session,
+        reporter: &mut Reporter,
+    ) -> Result<(), TrainError> {
+        let Session {
+            state,
+            engine,
+            env,
+            occlusion,
+            ..
+        } = session;
+        if before.estimate_angles && !state.polarizer_angles.is_empty() {
+            engine.sync(state)?;
+            env.refresh(state, &self.plan, occlusion)?;
+            state.polarizer_angles = angles::estimate(self, state, &env.prepared)?;
+        }
+        let Some(work) = before.gridmap else {
+            return Ok(());
+        };
+        let remesh = !occlusion.current || work.remesh;
+        if remesh || work.probes {
+            engine.sync(state)?;
+            env.refresh(state, &self.plan, occlusion)?;
+            if let Some(message) = self.rebuild_gridmap(occlusion, state, &env.prepared, remesh) {
+                reporter.emit(TrainEvent::Warning {
+                    iteration: state.iteration,
+                    message,
+                });
+            }
+            engine.set_gridmap(occlusion.grid.as_ref())?;
+        }
+        Ok(())
+    }
+
+    /// The step on view `target`: on the device when it fits, else on the host (a device step
+    /// that is too large falls back to host steps for the rest of the run).
+    fn step(
+        &self,
+        session: &mut Session,
+        target: usize,
+        stage: Stage,
+    ) -> Result<StepOutcome, TrainError> {
+        let Session {
+            state,
+            engine,
+            env,
+            pending,
+            occlusion,
+            ..
+        } = session;
+        if !engine.prefilters_on_device() {
+            // Host steps are lit by the host's prefilter (stale only after a fallback).
+            env.refresh(state, &self.plan, occlusion)?;
+        }
+        let light = self.light(occlusion, &env.prepared, stage);
+        match engine.step(self, state, light, target, stage, pending) {
+            Err(e) if StepEngine::is_oversized(&e) => {
+                tracing::warn!("{e}: continuing with host steps (split into bands)");
+                engine.fall_back_to_host(Some(state), pending)?;
+                env.refresh(state, &self.plan, occlusion)?;
+                let light = self.light(occlusion, &env.prepared, stage);
+                engine.step(self, state, light, target, stage, pending)
+            }
+            other => other,
+        }
+    }
+
+    /// After a step: its report, a test evaluation, densification and opacity resets (after
+    /// the report and the evaluation, so those show the model the step produced, not one whose
+    /// opacities were just reset), the divergence check, a checkpoint.
+    fn conclude_iteration(
+        &self,
+        after: &AfterStep,
+        stage: Stage,
+        outcome: &StepOutcome,
+        rng: &mut ChaCha8Rng,
+        session: &mut Session,
+        reporter: &mut Reporter,
+    ) -> Result<(), TrainError> {
+        let done = session.state.iteration;
+        if after.report {
+            session.eta.observe(done, stage);
+            reporter.emit(TrainEvent::Step {
+                iteration: done,
+                iterations: self.config.iterations,
+                stage,
+                loss: outcome.total,
+                losses: outcome.losses.clone(),
+                num_surfels: session.state.surfels.len(),
+                elapsed_seconds: session.elapsed(),
+                eta_seconds: session.eta.remaining(done, self.config),
+            });
+        }
+        if after.evaluate {
+            let Session {
+                state,
+                engine,
+                env,
+                occlusion,
+                ..
+            } = &mut *session;
+            engine.sync(state)?;
+            env.refresh(state, &self.plan, occlusion)?;
+            if let Some(psnr) =
+                self.test_psnr(state, self.light(occlusion, &env.prepared, stage))?
+            {
+                reporter.emit(TrainEvent::Evaluated {
+                    iteration: done,
+                    test_psnr: psnr,
+                });
+            }
+        }
+        if after.refines() {
+            session.engine.sync(&mut session.state)?;
+            self.refine(&mut session.state, after, rng)?;
+            match session.engine.load(&session.state) {
+                Err(e) if StepEngine::is_oversized(&e) => {
+                    tracing::warn!("{e}: continuing with host steps");
+                    session
+                        .engine
+                        .fall_back_to_host(None, &mut session.pending)?;
+                }
+                other => other?,
+            }
+        }
+        let finite = match session.engine {
+            StepEngine::Host => session.state.surfels.is_finite(),
+            StepEngine::Device(_) => outcome.finite,
+        };
+        if !finite {
+            return Err(TrainError::Diverged(done));
+        }
+        if after.checkpoint {
+            // A resumed run starts with no pending gradient and a freshly prefiltered map: do
+            // the same here, so the uninterrupted run and a resumed one stay bit-identical.
+            self.flush_env(session)?;
+            session.env = HostEnv::new(&session.state, &self.plan)?;
+            session
+                .engine
+                .set_environment(&session.state.envmap, &self.plan)?;
+            session.occlusion = Occlusion::default();
+            session.engine.set_gridmap(None)?;
+            self.save_checkpoint(session, reporter)?;
+        }
+        Ok(())
+    }
+
+    /// Writes the session's state (its light's gradient already applied) as the checkpoint;
+    /// returns its iteration.
+    fn save_checkpoint(
+        &self,
+        session: &mut Session,
+        reporter: &mut Reporter,
+    ) -> Result<u32, TrainError> {
+        session.engine.sync(&mut session.state)?;
+        session.state.elapsed_seconds = session.elapsed();
+        session
+            .state
+            .save(&session.checkpoint, &session.fingerprint)?;
+        let iteration = session.state.iteration;
+        reporter.emit(TrainEvent::Checkpoint { iteration });
+        Ok(iteration)
+    }
+
+    /// The last checkpoint, GridMap rebuilt from the final state (the final evaluation lights
+    /// the model as rendering it later will), the model folder and its metrics.
+    fn end_session(
+        &self,
+        schedule: &Schedule,
+        mut session: Session,
+        reporter: &mut Reporter,
+    ) -> Result<(), TrainError> {
+        self.flush_env(&mut session)?;
+        session.engine.sync(&mut session.state)?;
+        let env = PreparedEnv::new(&session.state.envmap, self.plan.clone())?;
+        session.state.elapsed_seconds = session.elapsed();
+        let state = session.state;
+        state.save(&session.checkpoint, &session.fingerprint)?;
+        let last_stage = schedule.final_stage();
         let mut occlusion = Occlusion::default();
         if last_stage == Stage::Polar && self.config.gridmap {
             if let Some(message) = self.rebuild_gridmap(&mut occlusion, &state, &env, true) {
@@ -573,8 +679,7 @@ impl Run<'_> {
                 });
             }
         }
-        self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)?;
-        Ok(TrainOutcome::Finished)
+        self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)
     }
 
     /// The learning rate of each surfel parameter group at iteration `it` (in the order of
@@ -627,13 +732,14 @@ impl Run<'_> {
     /// device for the device engine, which leaves `env` behind. Both the transpose of the
     /// prefilter and the rebuild cost about as much as a whole host step, hence the batching.
     /// Returns whether there was a gradient to apply.
-    fn flush_env(
-        &self,
-        state: &mut TrainState,
-        env: &mut HostEnv,
-        pending: &mut Pending,
-        engine: &mut StepEngine,
-    ) -> Result<bool, TrainError> {
+    fn flush_env(&self, session: &mut Session) -> Result<bool, TrainError> {
+        let Session {
+            state,
+            engine,
+            env,
+            pending,
+            ..
+        } = session;
         let count = pending.steps;
         let Some(sum) = engine.take_env_raw_grad(pending, &env.prepared)? else {
             return Ok(false);
@@ -655,70 +761,15 @@ impl Run<'_> {
         Ok(true)
     }
 
-    /// Whether densification (clone, split, prune) is due after `it` iterations.
-    fn densify_due(&self, it: u32, stage: Stage) -> bool {
-        let iterations = self.config.iterations;
-        let from = (self.config.densify_from * f64::from(iterations)).round() as u32;
-        let until = (self.config.densify_until * f64::from(iterations)).round() as u32;
-        let interval = match stage {
-            Stage::Geometry => self.config.densify_interval,
-            _ => self.config.densify_interval_polar,
-        }
-        .max(1);
-        it > from && it <= until && it.is_multiple_of(interval)
-    }
-
-    /// Whether an opacity reset is due after `it` iterations.
-    fn reset_due(&self, it: u32) -> bool {
-        let until = (self.config.densify_until * f64::from(self.config.iterations)).round() as u32;
-        let reset = self.config.opacity_reset_interval;
-        reset > 0 && it.is_multiple_of(reset) && it <= until
-    }
-
-    /// The last opacity reset the state at the start of iteration `it` has had: a reset "at r"
-    /// is applied after `r` steps, so iteration `r` is the first to see it.
-    fn last_reset(&self, it: u32) -> Option<u32> {
-        let interval = self.config.opacity_reset_interval;
-        if interval == 0 {
-            return None;
-        }
-        let until = (self.config.densify_until * f64::from(self.config.iterations)).round() as u32;
-        let last = it.min(until) / interval * interval;
-        (last > 0).then_some(last)
-    }
-
-    /// Whether iteration `it` falls in the `opacity_recovery_steps` after a reset.
-    fn recovering_from_reset(&self, it: u32) -> bool {
-        self.last_reset(it)
-            .is_some_and(|r| it < r + self.config.opacity_recovery_steps)
-    }
-
-    /// Whether iteration `it` ends a recovery window inside which a PolarDR-stage remesh fell
-    /// due (it runs now instead). A pure function of `it`, so a resumed run does the same.
-    fn deferred_remesh_due(&self, it: u32) -> bool {
-        let (recovery, interval) = (
-            self.config.opacity_recovery_steps,
-            self.config.mesh_interval,
-        );
-        let Some(reset) = self.last_reset(it) else {
-            return false;
-        };
-        if recovery == 0 || interval == 0 || it != reset + recovery {
-            return false;
-        }
-        let start = self.config.polar_stage_start();
-        (reset.max(start)..it).any(|i| (i - start).is_multiple_of(interval))
-    }
-
     /// Densify/prune and opacity reset on their schedules (METHOD.md §7).
     fn refine(
         &self,
         state: &mut TrainState,
-        stage: Stage,
+        due: &AfterStep,
         rng: &mut ChaCha8Rng,
     ) -> Result<(), TrainError> {
         let it = state.iteration;
-        if self.densify_due(it, stage) {
+        if due.densify {
             let _span = tracing::debug_span!("densify", iteration = it).entered();
             let plan = densify::plan(&state.surfels, &state.densify, &self.densify_rules);
             let final_keep = densify::apply(&mut state.surfels, &plan, rng);
@@ -727,7 +778,7 @@ impl Run<'_> {
             state.adam.retain_surfels(&final_keep)?;
             state.densify = DensifyStats::new(state.surfels.len());
         }
-        if self.reset_due(it) {
+        if due.reset_opacity {
             densify::reset_opacity(&mut state.surfels, 0.01);
             state.adam.reset_group("opacity");
         }
@@ -1010,53 +1061,6 @@ mod tests {
         );
         // Waiting 80 steps defers that remesh to step 190, which succeeds, as does the final one.
         assert_eq!(warnings(&run_with_reset_on_a_remesh(80)), []);
-    }
-
-    #[test]
-    fn the_recovery_window_and_the_deferred_remesh_are_functions_of_the_iteration() {
-        let dir = tempfile::tempdir().unwrap();
-        let (capture, _) = torus_run(dir.path());
-        let config = TrainConfig {
-            iterations: 1_000,
-            material_stage_end: 0.3,
-            densify_until: 0.8,
-            opacity_reset_interval: 300,
-            opacity_recovery_steps: 40,
-            mesh_interval: 100,
-            ..TrainConfig::default()
-        };
-        let targets: Vec<ViewTarget> = capture
-            .train_views()
-            .enumerate()
-            .map(|(i, v)| view_target(i, v, Mode::Full))
-            .collect();
-        let run = Run {
-            capture: &capture,
-            config: &config,
-            mode: Mode::Full,
-            backend: &Engine::Cpu(crate::core::raster::cpu::CpuBackend),
-            settings: RasterSettings::default(),
-            lut: BrdfLut::shared(),
-            plan: prefilter_plan(16, false).unwrap(),
-            targets,
-            learning_rates: LearningRates::from_config(&config, 1.0),
-            densify_rules: DensifyRules::for_extent(1.0, 2e-4, 0.05, 1_000),
-            model_dir: dir.path(),
-        };
-        // Resets after 300 and 600 steps (900 is past densify_until = 800).
-        assert_eq!(run.last_reset(299), None);
-        assert_eq!(run.last_reset(300), Some(300));
-        assert_eq!(run.last_reset(950), Some(600));
-        let waiting: Vec<u32> = (0..1_000)
-            .filter(|&i| run.recovering_from_reset(i))
-            .collect();
-        assert_eq!(
-            waiting,
-            [(300..340).collect::<Vec<_>>(), (600..640).collect()].concat()
-        );
-        // PolarDR from 300: remeshes due at 300 and 600 fall in the windows and run at 340, 640.
-        let deferred: Vec<u32> = (0..1_000).filter(|&i| run.deferred_remesh_due(i)).collect();
-        assert_eq!(deferred, [340, 640]);
     }
 
     #[test]

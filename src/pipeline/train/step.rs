@@ -17,9 +17,9 @@ use crate::core::envmap::EnvGrad;
 use crate::core::events::Stage;
 use crate::core::light::LightProbe;
 use crate::core::loss::{self, LossWeights};
-use crate::core::raster::{Backend, GBufferGrads, RasterSettings};
-use crate::core::render::{Scene, ShadingInputs};
-use crate::core::shading::StokesImageGrad;
+use crate::core::raster::{Backend, GBufferGrads, GBuffers, RasterSettings};
+use crate::core::render::ShadingInputs;
+use crate::core::shading::{SavedShading, StokesImage, StokesImageGrad};
 use crate::core::step::{StepPlan, ViewTarget};
 use crate::core::surfels::{SurfelGrads, Surfels};
 
@@ -68,57 +68,123 @@ pub fn run(
     stage: Stage,
 ) -> Result<StepResult, TrainError> {
     let _span = tracing::debug_span!("step", ?stage).entered();
-    let scene = Scene {
-        surfels,
-        light,
-        lut: inputs.lut,
-        backend: inputs.backend,
-        settings: inputs.settings,
-    };
     let raster = inputs.backend.forward(surfels, camera, &inputs.settings)?;
     let g = &raster.gbuffers;
-    let (w, h) = (g.width, g.height);
-    let pixels = w * h;
     let weights = &inputs.weights;
-    let mut up = GBufferGrads::zeros(w, h);
+    let mut up = GBufferGrads::zeros(g.width, g.height);
     let mut losses = BTreeMap::new();
-
     let plan = StepPlan::new(target, stage, angles, weights);
-    let (theta, unpolarized_scale) = (plan.theta, plan.unpolarized_scale);
 
     // Shading (not in the geometry stage, where colour = albedo).
     let shaded = if !plan.shaded {
         None
     } else {
-        let inputs = ShadingInputs::new(g, camera);
+        let shading = ShadingInputs::new(g, camera);
         let (image, saved) =
-            scene
+            inputs
                 .backend
-                .shade_saved(camera, &inputs.buffers(g), scene.light, scene.lut)?;
-        Some((inputs, image, saved))
+                .shade_saved(camera, &shading.buffers(g), light, inputs.lut)?;
+        Some(Shaded {
+            inputs: shading,
+            image,
+            saved,
+        })
+    };
+    let image_grads = image_losses(g, shaded.as_ref(), &plan, target, weights, &mut losses);
+    gbuffer_losses(g, &plan, target, weights, &mut up, &mut losses);
+
+    // Chain the image gradients into the G-buffers.
+    let (angle_grad, env_grad) = match &shaded {
+        None => {
+            chain_unshaded(g, &image_grads, plan.unpolarized_scale, &mut up);
+            (0.0, None)
+        }
+        Some(shaded) => {
+            let (angle_grad, env_grad) = chain_shaded(
+                inputs,
+                g,
+                camera,
+                light,
+                shaded,
+                &image_grads,
+                &plan,
+                &mut up,
+            )?;
+            (angle_grad, Some(env_grad))
+        }
     };
 
-    // Photometric prediction, α-premultiplied like the capture.
+    let grads = inputs
+        .backend
+        .backward(surfels, camera, &inputs.settings, &raster, &up)?;
+    let mut angle_grads = BTreeMap::new();
+    if let Some(name) = plan.learned_angle {
+        angle_grads.insert(name, angle_grad);
+    }
+    let total = losses.values().sum();
+    Ok(StepResult {
+        losses,
+        total,
+        surfels: grads.surfels,
+        mean2d_grad_norm: grads.mean2d_grad_norm,
+        env: env_grad,
+        angles: angle_grads,
+        width: g.width,
+        height: g.height,
+    })
+}
+
+/// A view shaded by PolarDR, with what its backward pass reuses.
+struct Shaded {
+    inputs: ShadingInputs,
+    image: StokesImage,
+    saved: Option<SavedShading>,
+}
+
+/// The gradients of the image losses: with respect to the photometric prediction, and to the
+/// α-premultiplied S1 and S2 (the Stokes loss of full views).
+struct ImageGrads {
+    pred: Vec<f64>,
+    s12: Option<(Vec<f64>, Vec<f64>)>,
+}
+
+/// The photometric prediction, α-premultiplied like the capture: the albedo (geometry stage),
+/// S0, or the intensity behind the view's polarizer angle θ.
+fn predict(g: &GBuffers, shaded: Option<&Shaded>, plan: &StepPlan) -> Vec<f64> {
+    let pixels = g.width * g.height;
     let mut pred = vec![0.0; pixels * 3];
     for p in 0..pixels {
         let a = g.alpha[p];
-        let colour = match &shaded {
-            None => DVec3::from_array(g.albedo[p]) * unpolarized_scale,
-            Some((_, s, _)) => match theta {
-                None => s.s0[p] * unpolarized_scale,
+        let colour = match shaded {
+            None => DVec3::from_array(g.albedo[p]) * plan.unpolarized_scale,
+            Some(Shaded { image: s, .. }) => match plan.theta {
+                None => s.s0[p] * plan.unpolarized_scale,
                 Some(t) => 0.5 * (s.s0[p] + s.s1[p] * (2.0 * t).cos() + s.s2[p] * (2.0 * t).sin()),
             },
         };
         pred[p * 3..p * 3 + 3].copy_from_slice(&(colour * a).to_array());
     }
+    pred
+}
+
+/// The photometric loss, and in the PolarDR stage the Stokes loss on S1/S2 (full views) or the
+/// extra L1 on I(θ) (partial views).
+fn image_losses(
+    g: &GBuffers,
+    shaded: Option<&Shaded>,
+    plan: &StepPlan,
+    target: &ViewTarget,
+    weights: &LossWeights,
+    losses: &mut BTreeMap<String, f64>,
+) -> ImageGrads {
+    let (w, h) = (g.width, g.height);
+    let pred = predict(g, shaded, plan);
     let photometric = loss::photometric(&pred, &target.photometric, w, h, 3, weights.lambda_ssim);
     losses.insert("photometric".to_owned(), photometric.value);
     let mut grad_pred = photometric.grad;
-
-    // Stokes loss on S1/S2 (full views) or the extra L1 on I(θ) (partial views), PolarDR stage only.
-    let mut grad_s12: Option<(Vec<f64>, Vec<f64>)> = None;
+    let mut grad_s12 = None;
     if plan.stokes_loss || plan.extra_l1 {
-        if let (Some((t1, t2)), Some((_, s, _))) = (&target.stokes, &shaded) {
+        if let (Some((t1, t2)), Some(Shaded { image: s, .. })) = (&target.stokes, shaded) {
             let premul = |v: &[DVec3]| -> Vec<f64> {
                 v.iter()
                     .zip(&g.alpha)
@@ -135,13 +201,31 @@ pub fn run(
             add_into(&mut grad_pred, &extra.grad, weights.lambda_stokes);
         }
     }
+    ImageGrads {
+        pred: grad_pred,
+        s12: grad_s12,
+    }
+}
 
-    // Mask, normal smoothness and depth–normal consistency act on the G-buffers directly.
+/// Mask, normal smoothness and depth–normal consistency, which act on the G-buffers directly.
+fn gbuffer_losses(
+    g: &GBuffers,
+    plan: &StepPlan,
+    target: &ViewTarget,
+    weights: &LossWeights,
+    up: &mut GBufferGrads,
+    losses: &mut BTreeMap<String, f64>,
+) {
     let mask = loss::mask_mse(&g.alpha, &target.mask);
     losses.insert("mask".to_owned(), weights.lambda_mask * mask.value);
     add_into(&mut up.alpha, &mask.grad, weights.lambda_mask);
     if plan.normal_smooth {
-        let smooth = loss::normal_smoothness(g.normal.as_flattened(), &target.photometric, w, h);
+        let smooth = loss::normal_smoothness(
+            g.normal.as_flattened(),
+            &target.photometric,
+            g.width,
+            g.height,
+        );
         losses.insert(
             "normal_smooth".to_owned(),
             weights.lambda_normal_smooth * smooth.value,
@@ -173,91 +257,83 @@ pub fn run(
             weights.lambda_depth_normal,
         );
     }
+}
 
-    // Chain the image gradients into the G-buffers.
+/// The prediction's gradient into the albedo and opacity buffers (geometry stage: colour =
+/// albedo × scale, premultiplied by α).
+fn chain_unshaded(g: &GBuffers, image: &ImageGrads, scale: f64, up: &mut GBufferGrads) {
+    for p in 0..g.width * g.height {
+        let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
+        let albedo = DVec3::from_array(g.albedo[p]);
+        let d_albedo = DVec3::from_array(up.albedo[p]) + gp * (scale * g.alpha[p]);
+        up.albedo[p] = d_albedo.to_array();
+        up.alpha[p] += scale * albedo.dot(gp);
+    }
+}
+
+/// The image gradients through the Stokes images into the opacity and, by PolarDR's backward
+/// pass, the normal, albedo, roughness and IoR buffers; returns the polarizer angle's gradient and
+/// the light's.
+#[allow(clippy::too_many_arguments)]
+fn chain_shaded(
+    inputs: &StepInputs,
+    g: &GBuffers,
+    camera: &crate::core::camera::Camera,
+    light: &dyn LightProbe,
+    shaded: &Shaded,
+    image: &ImageGrads,
+    plan: &StepPlan,
+    up: &mut GBufferGrads,
+) -> Result<(f64, EnvGrad), TrainError> {
+    let (pixels, s) = (g.width * g.height, &shaded.image);
     let mut angle_grad = 0.0;
-    let mut env_grad = None;
-    match &shaded {
-        None => {
-            let k = unpolarized_scale;
-            for p in 0..pixels {
-                let gp = DVec3::from_slice(&grad_pred[p * 3..p * 3 + 3]);
-                let albedo = DVec3::from_array(g.albedo[p]);
-                let d_albedo = DVec3::from_array(up.albedo[p]) + gp * (k * g.alpha[p]);
-                up.albedo[p] = d_albedo.to_array();
-                up.alpha[p] += k * albedo.dot(gp);
+    let mut d0 = vec![DVec3::ZERO; pixels];
+    let mut d1 = vec![DVec3::ZERO; pixels];
+    let mut d2 = vec![DVec3::ZERO; pixels];
+    for p in 0..pixels {
+        let a = g.alpha[p];
+        let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
+        match plan.theta {
+            None => {
+                d0[p] = gp * (a * plan.unpolarized_scale);
+                up.alpha[p] += plan.unpolarized_scale * s.s0[p].dot(gp);
+            }
+            Some(t) => {
+                let (c, sn) = ((2.0 * t).cos(), (2.0 * t).sin());
+                d0[p] = gp * (0.5 * a);
+                d1[p] = gp * (0.5 * a * c);
+                d2[p] = gp * (0.5 * a * sn);
+                let intensity = 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn);
+                up.alpha[p] += intensity.dot(gp);
+                angle_grad += a * (s.s2[p] * c - s.s1[p] * sn).dot(gp);
             }
         }
-        Some((inputs_px, s, saved)) => {
-            let mut d0 = vec![DVec3::ZERO; pixels];
-            let mut d1 = vec![DVec3::ZERO; pixels];
-            let mut d2 = vec![DVec3::ZERO; pixels];
-            for p in 0..pixels {
-                let a = g.alpha[p];
-                let gp = DVec3::from_slice(&grad_pred[p * 3..p * 3 + 3]);
-                match theta {
-                    None => {
-                        d0[p] = gp * (a * unpolarized_scale);
-                        up.alpha[p] += unpolarized_scale * s.s0[p].dot(gp);
-                    }
-                    Some(t) => {
-                        let (c, sn) = ((2.0 * t).cos(), (2.0 * t).sin());
-                        d0[p] = gp * (0.5 * a);
-                        d1[p] = gp * (0.5 * a * c);
-                        d2[p] = gp * (0.5 * a * sn);
-                        let intensity = 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn);
-                        up.alpha[p] += intensity.dot(gp);
-                        angle_grad += a * (s.s2[p] * c - s.s1[p] * sn).dot(gp);
-                    }
-                }
-                if let Some((g1, g2)) = &grad_s12 {
-                    let g1 = DVec3::from_slice(&g1[p * 3..p * 3 + 3]);
-                    let g2 = DVec3::from_slice(&g2[p * 3..p * 3 + 3]);
-                    d1[p] += g1 * a;
-                    d2[p] += g2 * a;
-                    up.alpha[p] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
-                }
-            }
-            let (gb, env_g) = scene.backend.shade_backward_saved(
-                camera,
-                &inputs_px.buffers(g),
-                scene.light,
-                scene.lut,
-                saved.as_ref(),
-                &StokesImageGrad {
-                    s0: &d0,
-                    s1: &d1,
-                    s2: &d2,
-                },
-            )?;
-            for p in 0..pixels {
-                let add3 =
-                    |dst: &mut [f64; 3], v: DVec3| *dst = (DVec3::from_array(*dst) + v).to_array();
-                add3(&mut up.normal[p], gb.normal[p]);
-                add3(&mut up.albedo[p], gb.albedo[p]);
-                up.roughness[p] += gb.roughness[p];
-                up.ior[p] += gb.ior[p];
-            }
-            env_grad = Some(env_g);
+        if let Some((g1, g2)) = &image.s12 {
+            let g1 = DVec3::from_slice(&g1[p * 3..p * 3 + 3]);
+            let g2 = DVec3::from_slice(&g2[p * 3..p * 3 + 3]);
+            d1[p] += g1 * a;
+            d2[p] += g2 * a;
+            up.alpha[p] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
         }
     }
-
-    let grads = inputs
-        .backend
-        .backward(surfels, camera, &inputs.settings, &raster, &up)?;
-    let mut angle_grads = BTreeMap::new();
-    if let Some(name) = plan.learned_angle {
-        angle_grads.insert(name, angle_grad);
+    let (gb, env_grad) = inputs.backend.shade_backward_saved(
+        camera,
+        &shaded.inputs.buffers(g),
+        light,
+        inputs.lut,
+        shaded.saved.as_ref(),
+        &StokesImageGrad {
+            s0: &d0,
+            s1: &d1,
+            s2: &d2,
+        },
+    )?;
+    for p in 0..pixels {
+        let add3 = |dst: &mut [f64; 3], v: DVec3| *dst = (DVec3::from_array(*dst) + v).to_array();
+        add3(&mut up.normal[p], gb.normal[p]);
+        add3(&mut up.albedo[p], gb.albedo[p]);
+        up.roughness[p] += gb.roughness[p];
+        up.ior[p] += gb.ior[p];
     }
-    let total = losses.values().sum();
-    Ok(StepResult {
-        losses,
-        total,
-        surfels: grads.surfels,
-        mean2d_grad_norm: grads.mean2d_grad_norm,
-        env: env_grad,
-        angles: angle_grads,
-        width: w,
-        height: h,
-    })
+    Ok((angle_grad, env_grad))
 }

@@ -1,9 +1,12 @@
 //! The core crate's layers point one way: reads every module reachable from `src/lib.rs` (test
-//! modules excluded), collects the `crate::…` paths each one names, and checks that
+//! modules excluded), collects the module paths each one names (`crate::…`, and `super::…` and
+//! `self::…` resolved against the module's own path, through the `pub use` re-exports of a
+//! folder's `mod.rs`), and checks that
 //!
 //! - a module uses only its own layer and the layers listed before it in [`LAYERS`], and
-//! - the second-level modules (`core::raster`, `pipeline::train`, `gpu::shade`, …) never use
-//!   each other in a circle.
+//! - the files of one folder (`gpu/raster.rs`, `gpu/shade.rs`, …; a subfolder counts as one file
+//!   with everything in it) never use each other in a circle. The folder's `mod.rs` is its
+//!   interface, not one of them.
 //!
 //! Paths are read from the source text with comments removed, so doc links do not count and a
 //! `use` of any form (grouped, nested, inline `crate::a::b::f()`) does.
@@ -14,10 +17,12 @@ use std::path::{Path, PathBuf};
 /// The layers, lowest first (as `src/lib.rs` documents them).
 const LAYERS: [&str; 6] = ["formats", "core", "testing", "gpu", "io", "pipeline"];
 
-/// A module of the crate: its path below the crate root and its source without test modules.
+/// A module of the crate: its path below the crate root, its source without test modules, and
+/// the modules it declares.
 struct Module {
     path: Vec<String>,
     code: String,
+    children: Vec<String>,
 }
 
 /// `text` without `//` comments (string literals holding `//` are not an issue in this crate's
@@ -106,51 +111,157 @@ fn collect(file: &Path, path: Vec<String>, modules: &mut Vec<Module>) {
     } else {
         file.with_extension("")
     };
-    for name in declared_modules(&code) {
+    let children = declared_modules(&code);
+    for name in &children {
         let child = [
             dir.join(format!("{name}.rs")),
-            dir.join(&name).join("mod.rs"),
+            dir.join(name).join("mod.rs"),
         ]
         .into_iter()
         .find(|p| p.is_file())
         .unwrap_or_else(|| panic!("{}: no file for `mod {name};`", file.display()));
         let mut child_path = path.clone();
-        child_path.push(name);
+        child_path.push(name.clone());
         collect(&child, child_path, modules);
     }
-    modules.push(Module { path, code });
+    modules.push(Module {
+        path,
+        code,
+        children,
+    });
 }
 
-/// The module paths (`a::b::…`, identifiers only) that `code` names after `crate::`, with grouped
-/// imports expanded one level (`crate::core::{camera, raster::Backend}`).
-fn crate_paths(code: &str) -> Vec<Vec<String>> {
-    let ident = |s: &str| -> Vec<String> {
-        s.split("::")
-            .map(|p| {
-                p.chars()
-                    .take_while(|c| c.is_alphanumeric() || *c == '_')
-                    .collect::<String>()
-            })
-            .take_while(|p| !p.is_empty())
-            .collect()
-    };
+/// Identifiers of a path as written (`a::b::C` → `[a, b, C]`), up to the first non-identifier.
+fn idents(s: &str) -> Vec<String> {
+    s.split("::")
+        .map(|p| {
+            p.trim()
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect::<String>()
+        })
+        .take_while(|p| !p.is_empty())
+        .collect()
+}
+
+/// The paths `code` names after `prefix` (`crate::`, `super::`, `self::`), as written after it,
+/// with grouped imports expanded one level (`crate::core::{camera, raster::Backend}`). A `super::`
+/// path keeps its further `super`s.
+fn paths_after(code: &str, prefix: &str) -> Vec<Vec<String>> {
     let mut paths = Vec::new();
-    for (at, _) in code.match_indices("crate::") {
-        let rest = &code[at + "crate::".len()..];
-        let prefix = ident(rest);
-        let after_prefix: usize = prefix.iter().map(|p| p.len() + 2).sum();
-        if rest[after_prefix.min(rest.len())..].starts_with('{') {
-            let group = &rest[after_prefix + 1..rest.find('}').unwrap_or(rest.len())];
+    for (at, _) in code.match_indices(prefix) {
+        // `super::` inside `super::super::` is counted once, from the first.
+        let before = &code[..at];
+        if before.ends_with("super::") || before.ends_with("crate::") || before.ends_with("self::")
+        {
+            continue;
+        }
+        let identifier_before = before
+            .chars()
+            .next_back()
+            .is_some_and(|c| c.is_alphanumeric() || c == '_');
+        if identifier_before {
+            continue;
+        }
+        let rest = &code[at + prefix.len()..];
+        let head = idents(rest);
+        let after_head: usize = head.iter().map(|p| p.len() + 2).sum();
+        if rest[after_head.min(rest.len())..].starts_with('{') {
+            let group = &rest[after_head + 1..rest.find('}').unwrap_or(rest.len())];
             for item in group.split(',') {
-                let mut path = prefix.clone();
-                path.extend(ident(item.trim()));
+                let mut path = head.clone();
+                path.extend(idents(item));
                 paths.push(path);
             }
         } else {
-            paths.push(prefix);
+            paths.push(head);
         }
     }
     paths
+}
+
+/// The absolute path (below the crate root) of `written`, named by `prefix` in the module at
+/// `at` (`is_root`: a `mod.rs` or `lib.rs`, whose `self` is its folder).
+fn absolute(prefix: &str, written: &[String], at: &[String]) -> Vec<String> {
+    match prefix {
+        "crate::" => written.to_vec(),
+        "self::" => at.iter().chain(written).cloned().collect(),
+        _ => {
+            // `super::` and any further `super`s climb one module each.
+            let climbs = 1 + written.iter().take_while(|p| *p == "super").count();
+            let base = &at[..at.len().saturating_sub(climbs)];
+            base.iter()
+                .chain(written.iter().skip(climbs - 1))
+                .cloned()
+                .collect()
+        }
+    }
+}
+
+/// Every module path `code` (the module at `at`) names, absolute, re-exports not yet followed.
+fn named_paths(code: &str, at: &[String]) -> Vec<Vec<String>> {
+    ["crate::", "super::", "self::"]
+        .into_iter()
+        .flat_map(|prefix| {
+            paths_after(code, prefix)
+                .into_iter()
+                .map(move |written| absolute(prefix, &written, at))
+        })
+        .collect()
+}
+
+/// The `pub use child::{A, B as C}` re-exports of a module: the name it gives each (in the
+/// module) and the absolute path it stands for.
+fn reexports(code: &str, at: &[String], children: &[String]) -> BTreeMap<String, Vec<String>> {
+    let mut names = BTreeMap::new();
+    for statement in code.split(';') {
+        let statement = statement.trim();
+        let Some(rest) = ["pub use ", "pub(crate) use "]
+            .iter()
+            .find_map(|p| statement.strip_prefix(p))
+        else {
+            continue;
+        };
+        let rest = rest.trim();
+        let (head, items): (&str, Vec<&str>) = match rest.find('{') {
+            Some(open) => (
+                rest[..open].trim_end_matches("::"),
+                rest[open + 1..rest.rfind('}').unwrap_or(rest.len())]
+                    .split(',')
+                    .collect(),
+            ),
+            None => match rest.rsplit_once("::") {
+                Some((head, item)) => (head, vec![item]),
+                None => continue,
+            },
+        };
+        let head_path = idents(head);
+        let Some(first) = head_path.first() else {
+            continue;
+        };
+        let base: Vec<String> = match first.as_str() {
+            "crate" => head_path[1..].to_vec(),
+            "self" => absolute("self::", &head_path[1..], at),
+            "super" => absolute("super::", &head_path[1..], at),
+            child if children.iter().any(|c| c == child) => {
+                at.iter().chain(&head_path).cloned().collect()
+            }
+            _ => continue,
+        };
+        for item in items {
+            let item = item.trim();
+            let (original, alias) = match item.split_once(" as ") {
+                Some((original, alias)) => (original.trim(), alias.trim()),
+                None => (item, item.rsplit("::").next().unwrap_or(item)),
+            };
+            let mut target = base.clone();
+            target.extend(idents(original));
+            if !alias.is_empty() && alias != "*" {
+                names.insert(alias.to_owned(), target);
+            }
+        }
+    }
+    names
 }
 
 /// The node a module path belongs to: its first two components (`core::raster`).
@@ -166,7 +277,42 @@ fn layer_of(node: &str) -> usize {
         .unwrap_or_else(|| panic!("module `{top}` is in no layer: add it to LAYERS and lib.rs"))
 }
 
-/// Edges between nodes (`from` uses `to`), from every module's paths.
+/// Every use between modules: (the module that names a path, the module the path leads to),
+/// re-exports followed to the module that defines the item.
+fn module_uses(modules: &[Module]) -> Vec<(Vec<String>, Vec<String>)> {
+    let known: BTreeSet<&[String]> = modules.iter().map(|m| m.path.as_slice()).collect();
+    let exports: BTreeMap<&[String], BTreeMap<String, Vec<String>>> = modules
+        .iter()
+        .map(|m| (m.path.as_slice(), reexports(&m.code, &m.path, &m.children)))
+        .collect();
+    // The longest prefix of `path` that is a module.
+    let module_of = |path: &[String]| -> usize {
+        (0..=path.len())
+            .rev()
+            .find(|&k| known.contains(&path[..k]))
+            .unwrap_or(0)
+    };
+    let mut uses = Vec::new();
+    for module in modules {
+        for mut path in named_paths(&module.code, &module.path) {
+            for _ in 0..8 {
+                let k = module_of(&path);
+                let Some(target) = path
+                    .get(k)
+                    .and_then(|name| exports.get(&path[..k])?.get(name))
+                else {
+                    break;
+                };
+                path = target.iter().chain(&path[k + 1..]).cloned().collect();
+            }
+            let k = module_of(&path);
+            uses.push((module.path.clone(), path[..k].to_vec()));
+        }
+    }
+    uses
+}
+
+/// Edges between second-level nodes (`from` uses `to`), from every module's paths.
 fn dependency_graph(modules: &[Module]) -> BTreeMap<String, BTreeSet<String>> {
     let nodes: BTreeSet<String> = modules
         .iter()
@@ -175,21 +321,42 @@ fn dependency_graph(modules: &[Module]) -> BTreeMap<String, BTreeSet<String>> {
         .collect();
     let mut graph: BTreeMap<String, BTreeSet<String>> =
         nodes.iter().map(|n| (n.clone(), BTreeSet::new())).collect();
-    for module in modules.iter().filter(|m| !m.path.is_empty()) {
-        let from = node(&module.path);
-        for path in crate_paths(&module.code) {
-            // The longest prefix of the path that is a node (`core::raster` of
-            // `core::raster::cpu::CpuBackend`, `gpu` of `gpu::GpuBackend`).
-            let target = (1..=path.len().min(2))
-                .rev()
-                .map(|k| path[..k].join("::"))
-                .find(|candidate| nodes.contains(candidate));
-            if let Some(to) = target.filter(|to| *to != from) {
-                graph.get_mut(&from).unwrap().insert(to);
-            }
+    for (from, to) in module_uses(modules) {
+        if from.is_empty() || to.is_empty() {
+            continue;
+        }
+        let (from, to) = (node(&from), node(&to));
+        if from != to {
+            graph.get_mut(&from).unwrap().insert(to);
         }
     }
     graph
+}
+
+/// For each folder (a module with modules of its own), the uses between its files: `a` uses
+/// `b` when anything in `a` (a subfolder counts with everything in it) names something in `b`.
+/// Uses of the folder's own `mod.rs`, its interface, are not counted.
+fn folder_graphs(modules: &[Module]) -> BTreeMap<String, BTreeMap<String, BTreeSet<String>>> {
+    let mut folders: BTreeMap<String, BTreeMap<String, BTreeSet<String>>> = modules
+        .iter()
+        .filter(|m| !m.children.is_empty())
+        .map(|m| {
+            let files = m.children.iter().map(|c| (c.clone(), BTreeSet::new()));
+            (m.path.join("::"), files.collect())
+        })
+        .collect();
+    for (from, to) in module_uses(modules) {
+        let shared = from.iter().zip(&to).take_while(|(a, b)| a == b).count();
+        if shared >= from.len() || shared >= to.len() {
+            continue; // within one file, or a use of an enclosing folder's interface
+        }
+        if let Some(files) = folders.get_mut(&from[..shared].join("::")) {
+            files
+                .get_mut(&from[shared])
+                .map(|uses| uses.insert(to[shared].clone()));
+        }
+    }
+    folders
 }
 
 /// One cycle of `graph`, if it has any (depth-first search keeping the current path).
@@ -225,10 +392,7 @@ fn find_cycle(graph: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>>
 }
 
 fn crate_graph() -> BTreeMap<String, BTreeSet<String>> {
-    let mut modules = Vec::new();
-    let lib = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/lib.rs");
-    collect(&lib, Vec::new(), &mut modules);
-    dependency_graph(&modules)
+    dependency_graph(&crate_modules())
 }
 
 #[test]
@@ -252,28 +416,69 @@ fn every_module_uses_only_its_own_and_lower_layers() {
     assert!(upward.is_empty(), "uses of a higher layer: {upward:#?}");
 }
 
+fn crate_modules() -> Vec<Module> {
+    let mut modules = Vec::new();
+    let lib = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/lib.rs");
+    collect(&lib, Vec::new(), &mut modules);
+    modules
+}
+
+/// The circles between the files of each folder, as `folder: a → b → a`.
+fn folder_circles(modules: &[Module]) -> Vec<String> {
+    folder_graphs(modules)
+        .iter()
+        .filter_map(|(folder, files)| {
+            let cycle = find_cycle(files)?;
+            Some(format!("{folder}: {}", cycle.join(" → ")))
+        })
+        .collect()
+}
+
 #[test]
-fn no_modules_use_each_other_in_a_circle() {
-    let graph = crate_graph();
-    assert_eq!(find_cycle(&graph), None, "a module cycle");
+fn no_files_of_a_folder_use_each_other_in_a_circle() {
+    let modules = crate_modules();
+    let folders = folder_graphs(&modules);
+    // The walk found nested folders (a broken walker would pass vacuously).
+    for expected in ["", "core", "gpu", "io::capture", "core::raster"] {
+        assert!(
+            folders.contains_key(expected),
+            "folder `{expected}` not found"
+        );
+    }
+    let circles = folder_circles(&modules);
+    assert!(circles.is_empty(), "circles between files: {circles:#?}");
+}
+
+fn module(path: &str, code: &str, children: &[&str]) -> Module {
+    Module {
+        path: path
+            .split("::")
+            .filter(|p| !p.is_empty())
+            .map(str::to_owned)
+            .collect(),
+        code: without_inline_tests(&without_comments(code)),
+        children: children.iter().map(|c| (*c).to_owned()).collect(),
+    }
 }
 
 #[test]
 fn the_checks_see_upward_uses_grouped_imports_and_cycles() {
-    let module = |path: &str, code: &str| Module {
-        path: path.split("::").map(str::to_owned).collect(),
-        code: without_inline_tests(&without_comments(code)),
-    };
     let modules = [
         module(
             "core::raster",
             "use crate::core::{camera::Camera, shading};\n// crate::pipeline::train in a comment\n\
              #[cfg(test)]\nmod tests { use crate::testing::x; }",
+            &[],
         ),
-        module("core::camera", "fn f() { crate::gpu::GpuBackend::new() }"),
-        module("core::shading", "use crate::core::raster::Backend;"),
-        module("gpu", ""),
-        module("testing", ""),
+        module(
+            "core::camera",
+            "fn f() { crate::gpu::GpuBackend::new() }",
+            &[],
+        ),
+        module("core::shading", "use crate::core::raster::Backend;", &[]),
+        module("core", "", &["raster", "camera", "shading"]),
+        module("gpu", "", &[]),
+        module("testing", "", &[]),
     ];
     let graph = dependency_graph(&modules);
     assert_eq!(
@@ -284,4 +489,46 @@ fn the_checks_see_upward_uses_grouped_imports_and_cycles() {
     assert!(layer_of("gpu") > layer_of("core::camera"));
     let cycle = find_cycle(&graph).expect("core::raster ↔ core::shading");
     assert!(cycle.contains(&"core::shading".to_owned()));
+    assert_eq!(folder_circles(&modules).len(), 1);
+}
+
+/// The circle the first version of this test could not see: files of one folder that use each
+/// other through `super::` and through the folder's re-exports (`gpu/raster.rs` defining the
+/// backend, `gpu/shade.rs` adding an `impl` block to it, and raster calling shade).
+#[test]
+fn the_checks_see_super_paths_and_reexports() {
+    let modules = [
+        module(
+            "gpu",
+            "mod raster;\nmod shade;\nmod band;\npub use raster::{GpuBackend, GpuOptions as Options};",
+            &["raster", "shade", "band", "deep"],
+        ),
+        module("gpu::raster", "pub struct GpuBackend;\nfn f() { super::shade::lights(); }", &[]),
+        module("gpu::shade", "impl super::GpuBackend { }\npub fn lights() {}", &[]),
+        module("gpu::band", "use self::inner::X;\nuse super::super::core::y;", &["inner"]),
+        module("gpu::band::inner", "use super::super::Options;", &[]),
+        module("gpu::deep", "", &[]),
+        module("core", "", &[]),
+    ];
+    let uses = module_uses(&modules);
+    let path = |p: &str| p.split("::").map(str::to_owned).collect::<Vec<_>>();
+    for (from, to) in [
+        ("gpu::shade", "gpu::raster"),
+        ("gpu::raster", "gpu::shade"),
+        ("gpu::band", "gpu::band::inner"),
+        ("gpu::band", "core"),
+        ("gpu::band::inner", "gpu::raster"),
+    ] {
+        assert!(
+            uses.contains(&(path(from), path(to))),
+            "{from} → {to}: {uses:?}"
+        );
+    }
+    let circles = folder_circles(&modules);
+    assert_eq!(circles.len(), 1, "{circles:?}");
+    assert!(circles[0].starts_with("gpu: "), "{circles:?}");
+    let graphs = folder_graphs(&modules);
+    // band (through its subfolder) uses raster; deep uses nothing.
+    assert!(graphs["gpu"]["band"].contains("raster"));
+    assert!(graphs["gpu"]["deep"].is_empty());
 }

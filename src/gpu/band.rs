@@ -5,7 +5,8 @@
 //!
 //! Threading: plain values, computed on the calling thread.
 
-use super::params::TILE;
+/// Tile edge of the device kernels (`TILE` in shaders/common.wgsl).
+pub(super) const TILE: u32 = 8;
 
 /// A band of tile rows `[first, end)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -34,6 +34,7 @@
 //! ([`DeviceTrainer`]), `tsdf` (TSDF fusion of rendered depth), `profile` (pass timings),
 //! `context` (adapters).
 
+mod backend;
 mod band;
 mod bind_cache;
 mod context;
@@ -50,10 +51,10 @@ mod sort;
 mod train;
 mod tsdf;
 
+pub use backend::{GpuBackend, GpuOptions};
 pub use bind_cache::BindCounts;
 pub use context::{is_software, list_adapters, AdapterRequirement, AdapterSummary, GpuContext};
 pub use device::DeviceMemory;
-pub use raster::{GpuBackend, GpuOptions};
 pub use shaders::{AtomicsMode, Walk};
 pub use train::{DeviceStep, DeviceStepResult, DeviceTrainer};
 

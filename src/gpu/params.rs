@@ -8,13 +8,12 @@
 use bytemuck::{Pod, Zeroable};
 
 use super::band::Band;
+pub(super) use super::band::TILE;
 use super::layout::wgsl_mirror;
 use crate::core::camera::Camera;
 use crate::core::raster::RasterSettings;
 use crate::core::surfels::Surfels;
 
-/// Tile edge of the device kernels (`TILE` in shaders/common.wgsl).
-pub(super) const TILE: u32 = 8;
 /// Per-surfel gradient accumulators (`NUM_ACC`).
 pub(super) const NUM_ACC: u64 = 22;
 /// Per-pixel forward outputs (`NUM_OUT`).

@@ -1,4 +1,5 @@
-//! [`GpuBackend`]: the rasterizer's forward and backward passes as wgpu compute kernels.
+//! [`Rasterizer`]: the rasterizer's forward and backward passes as wgpu compute kernels (the
+//! [`super::backend::GpuBackend`]'s `forward` and `backward`).
 //!
 //! Forward (each stage in a `tracing` span): `upload` (raw surfels as f32), `project` (kernel,
 //! one thread per surfel, then the per-surfel tile counts are read back), `scan` (host exclusive
@@ -31,58 +32,32 @@
 //! (`super::train`) runs the same kernels without the host round trips: the scan on the device,
 //! the sort and the range kernels dispatched indirectly.
 //!
-//! The forward pass is also a building block: [`GpuBackend::rasterize_bands`] hands each band's
+//! The forward pass is also a building block: [`Rasterizer::rasterize_bands`] hands each band's
 //! encoded work to its caller, which reads the G-buffers back (`forward`) or consumes them on the
 //! device (the TSDF fusion, `super::tsdf`).
 //!
-//! Threading: calls on one [`GpuBackend`] are serialized (a mutex); the host-side conversions
+//! Threading: calls on one device are serialized (a mutex, `Device::scoped`); the host-side conversions
 //! are single-threaded.
 
 use tracing::info_span;
 
 use super::band::Band;
 use super::bind_cache::Binder;
-use super::device::{Device, DeviceMemory, Kernel};
+use super::device::{Device, Kernel};
 use super::params::{
     raw_surfels, ParamsGpu, ENTRY_BYTES, NUM_ACC, NUM_OUT, NUM_RAW_GRAD, PROJ_BYTES, TILE,
 };
-use super::shade::{Lighting, ShadePipelines};
-use super::shaders::{self, AtomicsMode, Variant, Walk};
+use super::shaders;
 use super::sort::{
     varying_bits, varying_depth_bits, KeyBits, RadixSort, SortDispatch, SortInputs, RADIX_BITS,
     RADIX_BLOCK,
 };
-use super::tsdf::TsdfKernels;
-use super::{GpuContext, GpuError};
-use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
-use crate::core::envmap::EnvGrad;
-use crate::core::light::{LightKind, LightProbe};
-use crate::core::mesh::{GridLayout, ScalarGrid};
 use crate::core::raster::{
-    begin_backward, depth_normals, depth_upstream, validate_inputs, Backend, GBufferGrads,
-    GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats, Rasterized, SavedForward,
-    StageTime,
-};
-use crate::core::shading::{
-    self, GBufferGrad, SavedShading, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
+    depth_normals, depth_upstream, GBufferGrads, GBuffers, RasterError, RasterGrads,
+    RasterSettings, RasterStats, Rasterized, SavedForward,
 };
 use crate::core::surfels::{SurfelGrads, Surfels};
-
-/// Options of [`GpuBackend::with_options`].
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct GpuOptions {
-    /// Use the compare-and-swap path even where float atomics exist (to test it).
-    pub force_compare_exchange: bool,
-    /// Walk each pixel's own entries in the backward pass even where subgroups exist (to test it).
-    pub force_own_walk: bool,
-    /// Treat buffers above this many bytes as beyond the device's binding limit (to test the
-    /// splitting of large renders into bands on small scenes).
-    pub max_binding_bytes: Option<u64>,
-    /// Time every compute pass on the device (where the adapter has `TIMESTAMP_QUERY`), for
-    /// [`Backend::take_stage_times`].
-    pub profile: bool,
-}
 
 /// The rasterization kernels (the sort's are [`RadixSort`]'s).
 pub(super) struct RasterKernels {
@@ -96,7 +71,7 @@ pub(super) struct RasterKernels {
 
 impl RasterKernels {
     /// Compiles the kernels (inside the caller's [`Device::compile_all`]).
-    fn new(device: &Device) -> Self {
+    pub(super) fn new(device: &Device) -> Self {
         RasterKernels {
             project: device.kernel(&shaders::PROJECT),
             emit: device.kernel(&shaders::EMIT),
@@ -108,19 +83,16 @@ impl RasterKernels {
     }
 }
 
-/// The wgpu rasterizer backend.
-pub struct GpuBackend {
-    // Boxed: the backend is held in an enum beside the host engines, which are small
-    // (`pipeline::backend::Engine`).
-    device: Box<Device>,
-    kernels: Box<RasterKernels>,
-    sort: Box<RadixSort>,
-    shading: Box<ShadePipelines>,
-    tsdf: Box<TsdfKernels>,
+/// The rasterizer's kernels on their device, for the calls of one pass (the backend, the TSDF
+/// fusion and the resident trainer borrow them from [`super::backend::GpuBackend`]).
+pub(super) struct Rasterizer<'a> {
+    pub(super) device: &'a Device,
+    pub(super) kernels: &'a RasterKernels,
+    pub(super) sort: &'a RadixSort,
 }
 
 /// What the forward pass keeps (on the device) for the backward pass.
-struct Saved {
+pub(super) struct Saved {
     num_surfels: usize,
     camera: Camera,
     settings: RasterSettings,
@@ -209,90 +181,7 @@ impl SavedForward for Saved {
     }
 }
 
-impl GpuBackend {
-    /// Compiles the kernels on `ctx`'s device; float atomics where the device has them.
-    pub fn new(ctx: GpuContext) -> Result<Self, GpuError> {
-        Self::with_options(ctx, GpuOptions::default())
-    }
-
-    pub fn with_options(ctx: GpuContext, options: GpuOptions) -> Result<Self, GpuError> {
-        let atomics = if ctx.has_float_atomics() && !options.force_compare_exchange {
-            AtomicsMode::Float
-        } else {
-            AtomicsMode::CompareExchange
-        };
-        let walk = if ctx.has_subgroups() && !options.force_own_walk {
-            Walk::Subgroup
-        } else {
-            Walk::OwnEntries
-        };
-        let variant = Variant { atomics, walk };
-        let device = Device::new(ctx, variant, options.max_binding_bytes, options.profile);
-        let (kernels, sort, tsdf) = device.compile_all(|d| {
-            (
-                RasterKernels::new(d),
-                RadixSort::new(d),
-                TsdfKernels::new(d),
-            )
-        })?;
-        let shading = ShadePipelines::compile(&device)?;
-        Ok(GpuBackend {
-            device: Box::new(device),
-            kernels: Box::new(kernels),
-            sort: Box::new(sort),
-            shading: Box::new(shading),
-            tsdf: Box::new(tsdf),
-        })
-    }
-
-    pub fn context(&self) -> &GpuContext {
-        self.device.context()
-    }
-
-    pub fn atomics(&self) -> AtomicsMode {
-        self.device.variant().atomics
-    }
-
-    pub fn walk(&self) -> Walk {
-        self.device.variant().walk
-    }
-
-    /// Buffer memory on the device now and at its peak since the backend was made.
-    pub fn buffer_memory(&self) -> DeviceMemory {
-        self.device.buffer_memory()
-    }
-
-    /// Host time of the resident trainer's step phases (encode, finish, submit, wait) since the
-    /// last call.
-    pub fn take_host_times(&self) -> Vec<StageTime> {
-        self.device.take_host_times()
-    }
-
-    /// The device and its helpers.
-    pub(super) fn device(&self) -> &Device {
-        &self.device
-    }
-
-    /// The rasterization kernels.
-    pub(super) fn raster(&self) -> &RasterKernels {
-        &self.kernels
-    }
-
-    /// The radix sort of the binning entries.
-    pub(super) fn sort(&self) -> &RadixSort {
-        &self.sort
-    }
-
-    /// The PolarDR shading kernels.
-    pub(super) fn shading(&self) -> &ShadePipelines {
-        &self.shading
-    }
-
-    /// The TSDF fusion kernels.
-    pub(super) fn tsdf(&self) -> &TsdfKernels {
-        &self.tsdf
-    }
-
+impl Rasterizer<'_> {
     /// One workgroup per tile of `band`.
     fn dispatch_tiles(
         &self,
@@ -369,7 +258,7 @@ impl GpuBackend {
         Ok(done)
     }
 
-    fn forward_impl(
+    pub(super) fn forward_impl(
         &self,
         surfels: &Surfels,
         camera: &Camera,
@@ -575,7 +464,7 @@ impl GpuBackend {
                 wgpu::BufferUsages::empty(),
             )?;
             let entries_buf = self.sort.encode(
-                Binder::Fresh(&self.device),
+                Binder::Fresh(self.device),
                 &mut encoder,
                 [entries_buf, sorted_alt_buf],
                 &SortInputs {
@@ -646,7 +535,7 @@ impl GpuBackend {
         })))
     }
 
-    fn backward_impl(
+    pub(super) fn backward_impl(
         &self,
         saved: &Saved,
         camera: &Camera,
@@ -766,114 +655,5 @@ impl GpuBackend {
             surfels: grads,
             mean2d_grad_norm: mean2d,
         })
-    }
-}
-
-impl Backend for GpuBackend {
-    fn name(&self) -> &'static str {
-        "gpu"
-    }
-
-    fn description(&self) -> String {
-        format!(
-            "gpu on {}, {:?} atomics, {:?} walk",
-            self.device.context().adapter_summary(),
-            self.atomics(),
-            self.walk()
-        )
-    }
-
-    fn forward(
-        &self,
-        surfels: &Surfels,
-        camera: &Camera,
-        settings: &RasterSettings,
-    ) -> Result<Rasterized, RasterError> {
-        validate_inputs(surfels, camera, settings)?;
-        let _span = info_span!("raster_forward", backend = "gpu").entered();
-        self.device
-            .scoped("forward", || self.forward_impl(surfels, camera, settings))
-    }
-
-    fn backward(
-        &self,
-        surfels: &Surfels,
-        camera: &Camera,
-        settings: &RasterSettings,
-        forward: &Rasterized,
-        upstream: &GBufferGrads,
-    ) -> Result<RasterGrads, RasterError> {
-        let saved: &Saved = begin_backward(surfels, camera, settings, forward, upstream)?;
-        let gb = &forward.gbuffers;
-        let _span = info_span!("raster_backward", backend = "gpu").entered();
-        self.device.scoped("backward", || {
-            self.backward_impl(saved, camera, settings, gb, upstream)
-        })
-    }
-
-    /// Rendered and fused on the device (`super::tsdf`), unless the grid exceeds the binding
-    /// limit.
-    fn fuse_depth(
-        &self,
-        surfels: &Surfels,
-        cameras: &[Camera],
-        settings: &RasterSettings,
-        grid: &GridLayout,
-    ) -> Option<Result<ScalarGrid, RasterError>> {
-        self.fuse_depth_on_device(surfels, cameras, settings, grid)
-    }
-
-    fn take_stage_times(&self) -> Vec<StageTime> {
-        self.device.take_stage_times()
-    }
-
-    /// On the device under the global light or GridMap; other lights with the cpu code.
-    fn shade(
-        &self,
-        camera: &Camera,
-        buffers: &ShadingBuffers,
-        light: &dyn LightProbe,
-        lut: &BrdfLut,
-    ) -> Result<StokesImage, ShadingError> {
-        match device_lighting(light) {
-            Some(lighting) => self.shade_on_device(camera, buffers, lighting, lut),
-            None => shading::shade_image(camera, buffers, light, lut),
-        }
-    }
-
-    /// The device keeps nothing between the passes: [`Self::shade`].
-    fn shade_saved(
-        &self,
-        camera: &Camera,
-        buffers: &ShadingBuffers,
-        light: &dyn LightProbe,
-        lut: &BrdfLut,
-    ) -> Result<(StokesImage, Option<SavedShading>), ShadingError> {
-        Ok((self.shade(camera, buffers, light, lut)?, None))
-    }
-
-    fn shade_backward(
-        &self,
-        camera: &Camera,
-        buffers: &ShadingBuffers,
-        light: &dyn LightProbe,
-        lut: &BrdfLut,
-        upstream: &StokesImageGrad,
-    ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
-        match device_lighting(light) {
-            Some(lighting) => {
-                self.shade_backward_on_device(camera, buffers, lighting, lut, upstream)
-            }
-            None => shading::shade_image_backward(camera, buffers, light, lut, upstream),
-        }
-    }
-}
-
-/// The kernels' form of `light`, where they have one.
-fn device_lighting(light: &dyn LightProbe) -> Option<Lighting<'_>> {
-    match light.kind() {
-        LightKind::Global(env) => Some(Lighting::Global(env)),
-        LightKind::GridMap(grid) => Some(Lighting::GridMap(grid)),
-        LightKind::Other => None,
     }
 }

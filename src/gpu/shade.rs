@@ -1,4 +1,4 @@
-//! PolarDR shading on the device: [`GpuBackend`]'s `shade` and `shade_backward` in f32, a port
+//! PolarDR shading on the device: [`super::GpuBackend`]'s `shade` and `shade_backward` in f32, a port
 //! of [`crate::core::shading`] (`shaders/shade_common.wgsl`, `shade.wgsl`, `shade_backward.wgsl`),
 //! under the global environment (`light_global*.wgsl`) or GridMap's local probes over it
 //! (`light_gridmap*.wgsl`: anchor weights, blended probe lookups and the occlusion test of mirror
@@ -21,7 +21,6 @@ use tracing::info_span;
 
 use super::device::{Device, Kernel};
 use super::light::{v4, HostLight, HostProbes, ProbeBuffers};
-use super::raster::GpuBackend;
 use super::shaders;
 use super::GpuError;
 use crate::core::brdf_lut::BrdfLut;
@@ -132,15 +131,16 @@ fn pixel_inputs(
     (inputs, active)
 }
 
-impl GpuBackend {
-    /// Pixels per chunk: as many as the largest per-pixel buffer (the Stokes images) allows.
-    fn shade_chunk_pixels(&self) -> usize {
-        (self.device().binding_limit() / (STOKES_FLOATS * 4)) as usize
-    }
+/// Pixels per chunk: as many as the largest per-pixel buffer (the Stokes images) allows.
+fn chunk_pixels(device: &Device) -> usize {
+    (device.binding_limit() / (STOKES_FLOATS * 4)) as usize
+}
 
-    /// PolarDR forward under `lighting` on the device.
-    pub(super) fn shade_on_device(
+impl ShadePipelines {
+    /// PolarDR forward under `lighting` on `device`.
+    pub(super) fn shade(
         &self,
+        device: &Device,
         camera: &Camera,
         buffers: &ShadingBuffers,
         lighting: Lighting,
@@ -160,12 +160,11 @@ impl GpuBackend {
             diffuse: Vec::with_capacity(pixels),
             specular: Vec::with_capacity(pixels),
         };
-        let device = self.device();
-        let kernel = &self.shading().for_lighting(lighting).forward;
+        let kernel = &self.for_lighting(lighting).forward;
         device.scoped("shade", || -> Result<(), GpuError> {
             let light_buffers = light.upload(device)?;
             let probe_buffers = probes.as_ref().map(|p| p.upload(device)).transpose()?;
-            for range in chunks(pixels, self.shade_chunk_pixels()) {
+            for range in chunks(pixels, chunk_pixels(device)) {
                 let n = range.len() as u64;
                 let params = light.params(camera, range.start, range.len(), probe_buffers.as_ref());
                 let params = device.uniform("shade params", bytemuck::bytes_of(&params));
@@ -207,9 +206,10 @@ impl GpuBackend {
         Ok(out)
     }
 
-    /// PolarDR backward under `lighting` on the device.
-    pub(super) fn shade_backward_on_device(
+    /// PolarDR backward under `lighting` on `device`.
+    pub(super) fn shade_backward(
         &self,
+        device: &Device,
         camera: &Camera,
         buffers: &ShadingBuffers,
         lighting: Lighting,
@@ -228,8 +228,7 @@ impl GpuBackend {
             roughness: Vec::with_capacity(pixels),
             ior: Vec::with_capacity(pixels),
         };
-        let device = self.device();
-        let kernel = &self.shading().for_lighting(lighting).backward;
+        let kernel = &self.for_lighting(lighting).backward;
         let sums = device.scoped("shade backward", || -> Result<Vec<f32>, GpuError> {
             let light_buffers = light.upload(device)?;
             let probe_buffers = probes.as_ref().map(|p| p.upload(device)).transpose()?;
@@ -237,7 +236,7 @@ impl GpuBackend {
             let sums =
                 device.storage("light gradient", sums_bytes, wgpu::BufferUsages::COPY_SRC)?;
             let mut encoder = device.wgpu().create_command_encoder(&Default::default());
-            for range in chunks(pixels, self.shade_chunk_pixels()) {
+            for range in chunks(pixels, chunk_pixels(device)) {
                 let n = range.len() as u64;
                 let params = light.params(camera, range.start, range.len(), probe_buffers.as_ref());
                 let params = device.uniform("shade params", bytemuck::bytes_of(&params));

@@ -1,4 +1,4 @@
-//! TSDF fusion of rendered depth on the device ([`GpuBackend::fuse_depth_on_device`], behind
+//! TSDF fusion of rendered depth on the device ([`TsdfKernels::fuse_on_device`], behind
 //! [`crate::core::raster::Backend::fuse_depth`]): every view's depth and opacity are rasterized
 //! by the forward kernels (`super::raster`, band by band), each band's G-buffers are turned into
 //! the view's cleaned depth map (`prepare_depth`), and the view's votes are added into per-voxel
@@ -23,7 +23,7 @@ use super::band::Band;
 use super::device::{Device, Kernel};
 use super::layout::wgsl_mirror;
 use super::params::{NUM_OUT, TILE};
-use super::raster::{Frame, GpuBackend};
+use super::raster::{Frame, Rasterizer};
 use super::shaders;
 use super::GpuError;
 use crate::core::camera::Camera;
@@ -241,19 +241,20 @@ impl<'a> Fusion<'a> {
     }
 }
 
-impl GpuBackend {
-    /// The TSDF of `surfels`' depth and opacity seen from every camera, rendered and fused into
-    /// `grid` on the device; `None` where the grid's per-voxel sums exceed the binding limit (or
-    /// the u32 voxel index), and the host fuses instead.
-    pub(super) fn fuse_depth_on_device(
+impl TsdfKernels {
+    /// The TSDF of `surfels`' depth and opacity seen from every camera, rendered by `raster` and
+    /// fused into `grid` on its device; `None` where the grid's per-voxel sums exceed the binding
+    /// limit (or the u32 voxel index), and the host fuses instead.
+    pub(super) fn fuse_on_device(
         &self,
+        raster: &Rasterizer,
         surfels: &Surfels,
         cameras: &[Camera],
         settings: &RasterSettings,
         grid: &GridLayout,
     ) -> Option<Result<ScalarGrid, RasterError>> {
         let voxels = grid.voxel_count() as u64;
-        if voxels * 4 > self.device().binding_limit() || voxels > u64::from(u32::MAX) {
+        if voxels * 4 > raster.device.binding_limit() || voxels > u64::from(u32::MAX) {
             tracing::info!(
                 voxels,
                 "the TSDF grid exceeds the device's binding limit: fusing on the host"
@@ -261,13 +262,14 @@ impl GpuBackend {
             return None;
         }
         let _span = info_span!("tsdf_fusion", backend = "gpu", views = cameras.len()).entered();
-        Some(self.device().scoped("tsdf fusion", || {
-            self.fuse_impl(surfels, cameras, settings, grid)
+        Some(raster.device.scoped("tsdf fusion", || {
+            self.fuse(raster, surfels, cameras, settings, grid)
         }))
     }
 
-    fn fuse_impl(
+    fn fuse(
         &self,
+        raster: &Rasterizer,
         surfels: &Surfels,
         cameras: &[Camera],
         settings: &RasterSettings,
@@ -276,14 +278,14 @@ impl GpuBackend {
         for camera in cameras {
             validate_inputs(surfels, camera, settings)?;
         }
-        let device = self.device();
-        let fusion = Fusion::new(device, self.tsdf(), grid)?;
-        let uploaded = self.upload(surfels)?;
+        let device = raster.device;
+        let fusion = Fusion::new(device, self, grid)?;
+        let uploaded = raster.upload(surfels)?;
         for camera in cameras {
             let _span = info_span!("view").entered();
             let depth = fusion.depth_map(camera)?;
             let frame = Frame::new(camera, settings, surfels, &uploaded);
-            self.rasterize_bands(&frame, |mut encoded| {
+            raster.rasterize_bands(&frame, |mut encoded| {
                 let band = encoded.saved.band;
                 let gbuf = &encoded.saved.gbuf;
                 fusion.prepare_band(&mut encoded.encoder, camera, band, gbuf, &depth)?;
@@ -306,7 +308,9 @@ mod tests {
         cameras_around, chamfer_l1_with, fuse_tsdf, marching_cubes, rendered_depth_views,
         sphere_depth_maps, DepthView, TriangleMesh, TsdfParams,
     };
+    use crate::core::raster::Backend;
     use crate::gpu::layout::assert_mirrors;
+    use crate::gpu::GpuBackend;
 
     #[test]
     fn fusion_params_mirror_the_wgsl() {
@@ -538,7 +542,7 @@ mod tests {
         let params = TsdfParams::automatic(40, &cameras, bounds);
         let grid = GridLayout::new(bounds, &params).unwrap();
         let device = gpu
-            .fuse_depth_on_device(&surfels, &cameras, &settings, &grid)
+            .fuse_depth(&surfels, &cameras, &settings, &grid)
             .expect("the grid fits")
             .unwrap();
         let maps: Vec<_> = cameras

@@ -13,10 +13,15 @@ use super::super::params::{
 use super::super::shade::{GRAD_FLOATS, INPUT_VECTORS, STOKES_FLOATS};
 use super::super::sort::RADIX_BLOCK;
 use super::super::GpuError;
-use super::kernels::{SCAN_BLOCK, SLOTS};
 use crate::core::densify::DensifyStats;
 use crate::core::optim::{Adam, GroupState};
 use crate::core::surfels::Surfels;
+
+/// Counts per block of `scan_blocks` (`SCAN_BLOCK` of scan.wgsl): the block sums' buffer holds
+/// one a block.
+pub(super) const SCAN_BLOCK: u64 = 1024;
+/// Partial-sum slots of the loss kernels (`SLOTS` of train_common.wgsl), per workgroup.
+pub(super) const SLOTS: u64 = 8;
 
 /// f32 values per surfel of the raw parameters and of each Adam moment (the layout of `Raw`).
 pub(super) const RAW_FLOATS: usize = 16;
@@ -245,7 +250,14 @@ pub(super) struct FrameBuffers {
 pub(super) const TARGET_FLOATS: u64 = 10;
 
 impl FrameBuffers {
-    pub(super) fn new(device: &Device, width: u32, height: u32) -> Result<Self, GpuError> {
+    /// The buffers of a `width` × `height` image; `train_params_bytes`: the size of the
+    /// kernels' `TrainParams` uniform.
+    pub(super) fn new(
+        device: &Device,
+        width: u32,
+        height: u32,
+        train_params_bytes: usize,
+    ) -> Result<Self, GpuError> {
         let p = u64::from(width) * u64::from(height);
         let grid = device.grid(p)?;
         let groups = u64::from(grid.0) * u64::from(grid.1);
@@ -258,7 +270,7 @@ impl FrameBuffers {
             pixels: p,
             grid,
             raster_params: uniform("raster params", size_of::<ParamsGpu>()),
-            train_params: uniform("train params", size_of::<super::kernels::TrainParamsGpu>()),
+            train_params: uniform("train params", train_params_bytes),
             shade_params: uniform("shade params", size_of::<ShadeParamsGpu>()),
             ranges: device.storage("tile ranges", tiles * 8, COPY)?,
             gbuf: floats("g-buffers", NUM_OUT as u64)?,

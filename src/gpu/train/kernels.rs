@@ -19,10 +19,6 @@ use crate::gpu::layout::wgsl_mirror;
 use crate::gpu::shaders;
 use crate::gpu::GpuError;
 
-/// Counts per block of `scan_blocks` (`SCAN_BLOCK`).
-pub(super) const SCAN_BLOCK: u64 = 1024;
-/// Partial-sum slots of the loss kernels (`SLOTS` of train_common.wgsl).
-pub(super) const SLOTS: u64 = 8;
 /// Words of the step status (`STATUS_*` of train_common.wgsl and the sums from `SUM_FIRST`;
 /// word 0, the entries that fit, is read by the kernels only).
 pub(super) const STATUS_WORDS: usize = 16;
@@ -230,6 +226,7 @@ impl AdamParamsGpu {
 
 #[cfg(test)]
 mod tests {
+    use super::super::buffers::SCAN_BLOCK;
     use super::*;
     use crate::gpu::test_backend;
     use rand::{Rng, SeedableRng};

@@ -34,12 +34,12 @@ use std::sync::Arc;
 
 use tracing::info_span;
 
+use super::backend::GpuBackend;
 use super::bind_cache::{BindCache, BindCounts};
 use super::device::Device;
 use super::light::{HostLight, HostProbes, LightBuffers, ProbeBuffers};
 use super::params::{ParamsGpu, ENTRY_BYTES, NUM_RAW_GRAD};
 use super::prefilter::DevicePrefilter;
-use super::raster::GpuBackend;
 use super::GpuError;
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
@@ -413,7 +413,12 @@ impl<'g> DeviceTrainer<'g> {
             .as_ref()
             .is_none_or(|f| (f.width, f.height) != (width, height))
         {
-            self.frame = Some(FrameBuffers::new(device, width, height)?);
+            self.frame = Some(FrameBuffers::new(
+                device,
+                width,
+                height,
+                std::mem::size_of::<TrainParamsGpu>(),
+            )?);
         }
         let status = loop {
             let status = device.scoped("training step", || self.run(step))?;

@@ -9,8 +9,9 @@
 
 use std::time::Instant;
 
+use super::buffers::SCAN_BLOCK;
 use super::buffers::{EntryBuffers, FrameBuffers, SurfelBuffers, TARGET_FLOATS};
-use super::kernels::{SCAN_BLOCK, STATUS_WORDS};
+use super::kernels::STATUS_WORDS;
 use super::{DeviceStep, DeviceTrainer, LightState, DEPTH_BITS};
 use crate::gpu::bind_cache::Binder;
 use crate::gpu::device::{Device, Kernel};

@@ -85,13 +85,13 @@ pub enum CaptureError {
     },
     /// The COLMAP model of a capture folder cannot be read (`colmap/`).
     #[error(transparent)]
-    Colmap(#[from] super::colmap::ColmapError),
+    Colmap(#[from] ColmapError),
     /// The capture declares more than its [`CaptureLimits`](super::CaptureLimits) allow; no
     /// image was read.
     #[error("{path} is over a limit: {}", .exceeded.message)]
     TooLarge {
         path: PathBuf,
-        exceeded: super::limits::LimitExceeded,
+        exceeded: LimitExceeded,
     },
 }
 
@@ -103,4 +103,50 @@ impl CaptureError {
             _ => &[],
         }
     }
+}
+
+/// Why a COLMAP model could not be read.
+#[derive(Debug, Error)]
+pub enum ColmapError {
+    #[error("cannot read {path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error(
+        "{path} is truncated: {what} needs bytes from byte {offset}, but the file ends at {len}"
+    )]
+    Truncated {
+        path: PathBuf,
+        what: String,
+        offset: usize,
+        len: usize,
+    },
+    #[error("{path}, line {line}: {message}")]
+    Text {
+        path: PathBuf,
+        line: usize,
+        message: String,
+    },
+    #[error("{path}: camera {camera} has the unknown camera model {model}")]
+    UnknownModel {
+        path: PathBuf,
+        camera: i32,
+        model: String,
+    },
+    #[error("{path}: {message}")]
+    Malformed { path: PathBuf, message: String },
+}
+
+/// A capture over its [`CaptureLimits`]: which limit, its value, and what the capture declares.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LimitExceeded {
+    /// The limit's name: `max_views`, `max_pixels_per_view` or `max_decoded_bytes`.
+    pub limit: &'static str,
+    /// What the capture needs.
+    pub needed: u64,
+    /// What the limit allows.
+    pub allowed: u64,
+    /// For people: what is over, and by how much.
+    pub message: String,
 }

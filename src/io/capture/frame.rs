@@ -2,22 +2,20 @@
 //! intrinsics resolved (top level, per-frame overrides, `camera_angle_x`), the measurement kind and
 //! its files, the mask source, the split and the ground-truth paths. No image is read here.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use glam::DVec3;
 use serde_json::Value;
 
 use super::error::Problem;
 use super::json::Fields;
-use super::raw::{self, RawFrame, RawSettings};
+pub(crate) use super::json::{KeyedPath, TOP_LEVEL};
+use super::raw_frame::{self as raw, RawFrame, RawSettings};
 use super::{GroundTruth, PolarizerAngle, Split};
 use crate::core::camera::{is_rigid, Camera, CameraConvention, Intrinsics};
 
 /// Tolerance of the rigidity test of `transform_matrix` (6-decimal JSON rounding passes).
 const RIGIDITY_TOLERANCE: f64 = 1e-4;
-
-/// The frame label of problems with top-level keys.
-pub(crate) const TOP_LEVEL: &str = "top level";
 
 pub(crate) const STOKES_KEYS: [&str; 3] = ["s0_path", "s1_path", "s2_path"];
 pub(crate) const POLARIZER_KEYS: [&str; 4] =
@@ -46,14 +44,6 @@ pub(crate) struct Header {
     pub world_up: DVec3,
     /// `demosaic`, `white_balance` and the defaults of the frames' `raw` keys.
     pub raw: RawSettings,
-}
-
-/// A file named by a key, relative path as written and path joined to the capture folder.
-#[derive(Clone, Debug)]
-pub(crate) struct KeyedPath {
-    pub key: &'static str,
-    pub relative: PathBuf,
-    pub path: PathBuf,
 }
 
 /// The measurement files of a frame.

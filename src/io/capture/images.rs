@@ -25,11 +25,9 @@ pub(crate) struct LoadedView {
 /// Mask files store 8-bit values; > 127 is object.
 const MASK_THRESHOLD: f32 = 127.5 / 255.0;
 
-/// Loads and checks every image of `spec`; returns every problem found.
+/// Loads and checks every image of `spec` (a frame of images: [`super::raw`] loads raw mosaic
+/// frames); returns every problem found.
 pub(crate) fn load_view(spec: &FrameSpec, header: &Header) -> Result<LoadedView, Vec<Problem>> {
-    if let Source::Raw(raw) = &spec.source {
-        return super::raw::load_view(spec, header, raw);
-    }
     let mut problems = Vec::new();
     let (width, height) = (spec.camera.width as usize, spec.camera.height as usize);
     let mut read = |file: &KeyedPath, allowed_channels: &[usize], what: &str| {

@@ -11,6 +11,17 @@ use serde_json::{Map, Value};
 
 use super::error::Problem;
 
+/// The frame label of problems with top-level keys.
+pub(crate) const TOP_LEVEL: &str = "top level";
+
+/// A file named by a key, relative path as written and path joined to the capture folder.
+#[derive(Clone, Debug)]
+pub(crate) struct KeyedPath {
+    pub key: &'static str,
+    pub relative: PathBuf,
+    pub path: PathBuf,
+}
+
 /// Bare non-finite tokens accepted by [`parse_lenient`] and reported by [`Fields::number`].
 const NON_FINITE_TOKENS: [&str; 3] = ["-Infinity", "Infinity", "NaN"];
 

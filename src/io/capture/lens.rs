@@ -1,7 +1,7 @@
 //! Lens distortion in `transforms.json`: OpenCV's radial-tangential terms `k1`, `k2`, `p1`, `p2`,
 //! per frame or at the top level as nerfstudio writes them (a frame's own value wins; absent terms
 //! are 0), and the undistortion of loaded views into the pinhole views training assumes
-//! ([`super::colmap::undistort`], shared with COLMAP's `OPENCV` cameras).
+//! ([`super::undistort`], shared with COLMAP's `OPENCV` cameras).
 //!
 //! Terms this undistortion does not model (`k3`, `k4`, a `camera_model` other than `PINHOLE`,
 //! `SIMPLE_PINHOLE` or `OPENCV`) are named problems rather than ignored, so a capture is never
@@ -10,9 +10,9 @@
 use rayon::prelude::*;
 use serde_json::Value;
 
-use super::colmap::undistort::{undistort_image, undistort_mask, Distortion};
 use super::error::Problem;
 use super::frame::TOP_LEVEL;
+use super::undistort::{undistort_image, undistort_mask, Distortion};
 use super::{Capture, Measurement};
 
 const TERMS: [&str; 4] = ["k1", "k2", "p1", "p2"];

@@ -4,6 +4,7 @@
 //! it breaks instead of exhausting the memory of the process that loads it. Each image file's
 //! header is then checked against its frame's size before it is decoded (`images::read_sized`).
 
+pub use super::error::LimitExceeded;
 use super::frame::{FrameSpec, Source};
 
 /// Bounds on a capture, checked before its images are read. The defaults fit a 24 GiB worker.
@@ -16,19 +17,6 @@ pub struct CaptureLimits {
     /// Most bytes the loaded views may hold together ([`CaptureLimits::BYTES_PER_VIEW_PIXEL`] per
     /// pixel of every view).
     pub max_decoded_bytes: u64,
-}
-
-/// A capture over its [`CaptureLimits`]: which limit, its value, and what the capture declares.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct LimitExceeded {
-    /// The limit's name: `max_views`, `max_pixels_per_view` or `max_decoded_bytes`.
-    pub limit: &'static str,
-    /// What the capture needs.
-    pub needed: u64,
-    /// What the limit allows.
-    pub allowed: u64,
-    /// For people: what is over, and by how much.
-    pub message: String,
 }
 
 impl CaptureLimits {

@@ -18,8 +18,10 @@ mod lens;
 mod limits;
 pub mod mosaic;
 mod raw;
+mod raw_frame;
 pub mod resample;
 pub mod simulate;
+pub mod undistort;
 
 #[cfg(test)]
 mod raw_tests;
@@ -293,7 +295,11 @@ pub(crate) fn load_document(
         frames
             .par_iter()
             .map(|spec| {
-                images::load_view(spec, &header).map(|loaded| images::LoadedView {
+                let loaded = match &spec.source {
+                    frame::Source::Raw(raw) => raw::load_view(spec, &header, raw),
+                    _ => images::load_view(spec, &header),
+                };
+                loaded.map(|loaded| images::LoadedView {
                     view: resample::downscale_view(loaded.view, downscale),
                     ..loaded
                 })

@@ -18,21 +18,20 @@
 pub mod model;
 #[cfg(test)]
 mod tests;
-pub mod undistort;
 
 use std::path::{Path, PathBuf};
 
 use glam::{DMat3, DMat4, DQuat, DVec3};
 use serde::Serialize;
 use serde_json::{json, Map, Value};
-use thiserror::Error;
 
+pub use super::error::ColmapError;
 use super::error::Problem;
 use super::json::check_relative_path;
+pub use super::undistort::Distortion;
 use super::{Capture, CaptureError};
 use crate::core::camera::{Camera, CameraConvention, Intrinsics};
 pub use model::{ColmapCamera, ColmapImage, ColmapModel, ColmapPoint, ModelFormat};
-pub use undistort::Distortion;
 
 /// The capture settings file of a COLMAP capture folder.
 pub const SETTINGS_FILE: &str = "capture.json";
@@ -49,39 +48,6 @@ const SETTINGS_KEYS: [&str; 6] = [
 
 /// Extensions tried for a raw frame named after a COLMAP image.
 const RAW_EXTENSIONS: [&str; 4] = ["png", "tif", "tiff", "raw"];
-
-/// Why a COLMAP model could not be read.
-#[derive(Debug, Error)]
-pub enum ColmapError {
-    #[error("cannot read {path}: {source}")]
-    Io {
-        path: PathBuf,
-        source: std::io::Error,
-    },
-    #[error(
-        "{path} is truncated: {what} needs bytes from byte {offset}, but the file ends at {len}"
-    )]
-    Truncated {
-        path: PathBuf,
-        what: String,
-        offset: usize,
-        len: usize,
-    },
-    #[error("{path}, line {line}: {message}")]
-    Text {
-        path: PathBuf,
-        line: usize,
-        message: String,
-    },
-    #[error("{path}: camera {camera} has the unknown camera model {model}")]
-    UnknownModel {
-        path: PathBuf,
-        camera: i32,
-        model: String,
-    },
-    #[error("{path}: {message}")]
-    Malformed { path: PathBuf, message: String },
-}
 
 /// A point of the sparse reconstruction.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -304,7 +304,7 @@ impl BucketArtifacts {
     }
 
     fn folder(job_id: &str) -> Result<String, ArtifactError> {
-        Ok(format!("artifacts/{}", job_folder(job_id)?))
+        Ok(crate::object_keys::artifacts(job_folder(job_id)?))
     }
 }
 

@@ -6,8 +6,8 @@
 //! Each process keeps a local working copy under its own data dir: the API uploads what it
 //! accepts, a worker downloads a job's capture (and, when it resumes a job, the latest
 //! checkpoint) before running it and uploads every checkpoint it writes, so a worker on another
-//! machine can take the job over. Keys mirror the data dir: `captures/ID/…`, `jobs/ID/input/…`,
-//! `jobs/ID/model/…`, `artifacts/ID/…`, under the URL's prefix.
+//! machine can take the job over. Keys mirror the data dir, under the URL's prefix; every one is
+//! spelled in [`crate::object_keys`].
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;

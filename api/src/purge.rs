@@ -11,6 +11,7 @@ use tokio::task::JoinHandle;
 
 use crate::artifacts::ArtifactError;
 use crate::bucket::BucketError;
+use crate::object_keys;
 use crate::store::{now_ms, DeleteOutcome, StoreError};
 use crate::AppState;
 
@@ -47,7 +48,7 @@ pub async fn delete_job(state: &AppState, id: &str) -> Result<DeleteOutcome, Pur
     if outcome == DeleteOutcome::Deleted {
         state.artifacts.delete(id).await?;
         if let Some(bucket) = &state.bucket {
-            bucket.delete_folder(&format!("jobs/{id}")).await?;
+            bucket.delete_folder(&object_keys::job(id)).await?;
         }
         remove_local(state.paths.jobs.join(id)).await?;
         tracing::info!(job_id = id, "job deleted");
@@ -60,7 +61,7 @@ pub async fn delete_capture(state: &AppState, id: &str) -> Result<DeleteOutcome,
     let outcome = state.store.delete_capture(id).await?;
     if outcome == DeleteOutcome::Deleted {
         if let Some(bucket) = &state.bucket {
-            bucket.delete_folder(&format!("captures/{id}")).await?;
+            bucket.delete_folder(&object_keys::capture(id)).await?;
         }
         remove_local(state.paths.capture_dir(id)).await?;
         tracing::info!(capture_id = id, "capture deleted");

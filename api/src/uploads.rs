@@ -86,7 +86,7 @@ pub fn is_sha256_hex(text: &str) -> bool {
 
 /// Where a part's bytes are kept, relative to the object store's root or the data dir.
 fn part_key(upload_id: &str, part: &UploadPart) -> String {
-    format!("uploads/{upload_id}/{:05}.{}", part.index, part.sha256)
+    crate::object_keys::upload_part(upload_id, part.index, &part.sha256)
 }
 
 /// A temporary file removed when dropped, unless it was moved away.
@@ -203,7 +203,7 @@ pub async fn discard_part(state: &AppState, upload_id: &str, part: &UploadPart) 
 
 /// Removes every stored part of an upload.
 pub async fn discard_parts(state: &AppState, upload_id: &str) {
-    let folder = format!("uploads/{upload_id}");
+    let folder = crate::object_keys::upload(upload_id);
     if let Some(bucket) = &state.bucket {
         if let Err(e) = bucket.delete_folder(&folder).await {
             tracing::warn!(upload_id, error = %e, "removing an upload's parts failed");

@@ -19,6 +19,7 @@ use tokio::task::JoinHandle;
 use tokio_util::sync::CancellationToken;
 use tracing::Instrument;
 
+use crate::object_keys;
 use crate::pipeline::PipelineError;
 use crate::queue::{CancelReason, JobControl};
 use crate::store::{now_ms, Finish, JobRecord, JobSpec, Progress, StoreError};
@@ -513,7 +514,7 @@ fn fetch_missing(state: &AppState, folder: &str, dir: &std::path::Path) -> Resul
 /// Uploads a job's model folder (its checkpoint) to the object store, if there is one.
 fn upload_model(state: &AppState, job_id: &str, model_dir: &std::path::Path) -> Result<(), Stop> {
     if let Some(bucket) = &state.bucket {
-        block_on(bucket.upload_dir(&format!("jobs/{job_id}/model"), model_dir))?;
+        block_on(bucket.upload_dir(&object_keys::job_model(job_id), model_dir))?;
     }
     Ok(())
 }
@@ -529,7 +530,7 @@ fn execute_steps(
     match &job.spec {
         JobSpec::Train { config } => {
             let capture_dir = paths.capture_dir(&job.capture_id);
-            fetch_missing(state, &format!("captures/{}", job.capture_id), &capture_dir)?;
+            fetch_missing(state, &object_keys::capture(&job.capture_id), &capture_dir)?;
             if !capture_dir.is_dir() {
                 return Err(Stop::Failed {
                     code: "capture_missing",
@@ -541,7 +542,7 @@ fn execute_steps(
             if let (true, Some(bucket)) = (resume, &state.bucket) {
                 // The object store holds the latest checkpoint, wherever the job ran before.
                 let files =
-                    block_on(bucket.download_dir(&format!("jobs/{}/model", job.id), &model_dir))?;
+                    block_on(bucket.download_dir(&object_keys::job_model(&job.id), &model_dir))?;
                 tracing::info!(files, "fetched the job's checkpoint from the object store");
             }
             std::fs::create_dir_all(&model_dir)
@@ -586,9 +587,9 @@ fn execute_steps(
             }
             live.update(|p| p.stage = Some("relighting".into()));
             let input = paths.input_dir(&job.id);
-            fetch_missing(state, &format!("jobs/{}/input", job.id), &input)?;
+            fetch_missing(state, &object_keys::job_input(&job.id), &input)?;
             let parent_model = paths.model_dir(parent_job_id);
-            fetch_missing(state, &format!("jobs/{parent_job_id}/model"), &parent_model)?;
+            fetch_missing(state, &object_keys::job_model(parent_job_id), &parent_model)?;
             let cameras = cameras_file.as_ref().map(|name| input.join(name));
             replace_dir(&staging)?;
             state.pipeline.relight(

@@ -292,7 +292,7 @@ pub(crate) async fn ingest(
     })
     .await
     .map_err(|e| ApiError::internal("processing the upload", e))??;
-    let key = format!("captures/{}", filed.record.id);
+    let key = crate::object_keys::capture(&filed.record.id);
     if let Some(bucket) = &state.bucket {
         if let Err(e) = bucket.upload_dir(&key, &filed.dir).await {
             let _ = tokio::fs::remove_dir_all(&filed.dir).await;

@@ -781,7 +781,7 @@ pub async fn relight(
     }
     std::fs::rename(staging.path(), &input_dir)
         .map_err(|e| ApiError::internal("filing the relight inputs", e))?;
-    let input_key = format!("jobs/{id}/input");
+    let input_key = crate::object_keys::job_input(&id);
     if let Some(bucket) = &state.bucket {
         if let Err(e) = bucket.upload_dir(&input_key, &input_dir).await {
             let _ = std::fs::remove_dir_all(state.paths.jobs.join(&id));

@@ -15,11 +15,11 @@ use utoipa::IntoParams;
 
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
-use crate::material_mesh::{material_mesh_ply, MaterialMeshError};
 use crate::openapi::Binary;
 use crate::routes::jobs::JobPath;
 use crate::store::{JobRecord, JobSpec, JobState};
 use crate::AppState;
+use phygap::pipeline::export::material_mesh::{material_mesh_ply, MaterialMeshError};
 
 /// A succeeded training job the caller may see, or the error that says why it has no model to
 /// view.

@@ -20,6 +20,7 @@ use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
 
 pub mod envmap_files;
 pub mod gltf;
+pub mod material_mesh;
 pub mod materials;
 
 pub use envmap_files::{ENVMAP_HDR_FILE, ENVMAP_PNG_FILE};

@@ -2,7 +2,7 @@
 //! with a physically based material (the web page's three.js viewer, MeshLab, Blender). The mesh
 //! (`mesh.ply`) only has positions and normals; the materials live on the surfels
 //! (`surfels.ply`). Each vertex takes an opacity- and distance-weighted mean of the albedo,
-//! roughness and IoR of its nearest opaque surfels ([`phygap::pipeline::export::materials`], which the
+//! roughness and IoR of its nearest opaque surfels ([`super::materials`], which the
 //! export's `model.glb` uses too).
 //!
 //! Output: a binary little-endian PLY with vertex `x y z` (`nx ny nz` when the mesh has normals),
@@ -10,12 +10,10 @@
 //! (Disney r, the same perceptual roughness as three.js and glTF) and `ior` (float32), and the
 //! mesh's faces as `vertex_indices`.
 
+use super::materials::{surfel_list, transfer_materials, MaterialError};
+use crate::core::surfels::ply::surfels_from_ply;
+use crate::formats::ply::{parse_ply, to_binary_le, Element, Ply, PlyError, PlyFormat, ScalarType};
 use glam::DVec3;
-use phygap::core::surfels::ply::surfels_from_ply;
-use phygap::formats::ply::{
-    parse_ply, to_binary_le, Element, Ply, PlyError, PlyFormat, ScalarType,
-};
-use phygap::pipeline::export::materials::{surfel_list, transfer_materials, MaterialError};
 use thiserror::Error;
 
 /// Why the material mesh could not be built.
@@ -34,7 +32,7 @@ pub enum MaterialMeshError {
 /// sRGB encoding of a linear value in [0, 1], as an 8-bit level.
 fn srgb_level(linear: f64) -> f64 {
     let v = linear.clamp(0.0, 1.0) as f32;
-    (phygap::formats::image_io::linear_to_srgb(v) * 255.0).round() as f64
+    (crate::formats::image_io::linear_to_srgb(v) * 255.0).round() as f64
 }
 
 /// `mesh.ply` and `surfels.ply` (their bytes) → the material mesh's PLY bytes.

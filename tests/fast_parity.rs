@@ -10,7 +10,7 @@ use phygap::core::camera::Camera;
 use phygap::core::config::BackendChoice;
 use phygap::core::raster::cpu::CpuBackend;
 use phygap::core::raster::fast::{FastBackend, SimdPath};
-use phygap::core::raster::{Backend, GBuffers, RasterGrads, RasterSettings};
+use phygap::core::raster::{GBuffers, RasterGrads, RasterSettings};
 use phygap::core::surfels::{logit, SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
 use rand::SeedableRng;

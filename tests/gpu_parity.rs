@@ -8,8 +8,9 @@
 //! backend must be the one named, so a silent fallback to another API fails.
 
 use glam::DVec3;
+use phygap::core::engine::Backend;
 use phygap::core::raster::cpu::CpuBackend;
-use phygap::core::raster::{Backend, GBuffers, RasterSettings};
+use phygap::core::raster::{GBuffers, RasterSettings};
 use phygap::core::surfels::{SurfelGrads, Surfels};
 use phygap::gpu::{AtomicsMode, GpuOptions, Walk};
 use phygap::testing::random_upstream;

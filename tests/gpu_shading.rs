@@ -8,9 +8,9 @@
 use glam::DVec3;
 use phygap::core::brdf_lut::BrdfLut;
 use phygap::core::camera::Camera;
+use phygap::core::engine::Backend;
 use phygap::core::envmap::{EnvGrad, PreparedEnv};
 use phygap::core::light::LightProbe;
-use phygap::core::raster::Backend;
 use phygap::core::shading::{self, GBufferGrad, ShadingBuffers, StokesImage, StokesImageGrad};
 use phygap::gpu::{AtomicsMode, GpuBackend, GpuOptions};
 use rand::{Rng, SeedableRng};

@@ -14,7 +14,7 @@ use glam::{DMat3, DQuat, DVec3};
 use phygap::core::camera::Camera;
 use phygap::core::gradcheck::{numerical_gradient, worst_mismatch};
 use phygap::core::raster::cpu::CpuBackend;
-use phygap::core::raster::{Backend, GBufferGrads, GBuffers, RasterError, RasterSettings};
+use phygap::core::raster::{GBufferGrads, GBuffers, RasterError, RasterSettings};
 use phygap::core::surfels::{sigmoid, Surfels};
 use phygap::testing::random_upstream;
 use rand::{Rng, SeedableRng};

@@ -7,6 +7,7 @@ pub mod brdf_lut;
 pub mod camera;
 pub mod config;
 pub mod densify;
+pub mod engine;
 pub mod envmap;
 pub mod events;
 pub mod gradcheck;

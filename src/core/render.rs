@@ -9,8 +9,9 @@ use thiserror::Error;
 
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
+use crate::core::engine::Backend;
 use crate::core::light::LightProbe;
-use crate::core::raster::{Backend, GBuffers, RasterError, RasterSettings, Rasterized};
+use crate::core::raster::{GBuffers, RasterError, RasterSettings, Rasterized};
 use crate::core::shading::{ShadingBuffers, ShadingError, StokesImage};
 use crate::core::surfels::Surfels;
 

@@ -17,12 +17,13 @@ use super::tsdf::TsdfKernels;
 use super::{GpuContext, GpuError};
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
+use crate::core::engine::Backend;
 use crate::core::envmap::EnvGrad;
 use crate::core::light::{LightKind, LightProbe};
 use crate::core::mesh::{GridLayout, ScalarGrid};
 use crate::core::raster::{
-    begin_backward, validate_inputs, Backend, GBufferGrads, RasterError, RasterGrads,
-    RasterSettings, Rasterized, StageTime,
+    begin_backward, validate_inputs, GBufferGrads, RasterError, RasterGrads, RasterSettings,
+    Rasterized, StageTime,
 };
 use crate::core::shading::{
     self, GBufferGrad, SavedShading, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,

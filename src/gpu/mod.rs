@@ -2,7 +2,7 @@
 //! training steps as WGSL compute kernels (`shaders/*.wgsl`), in f32 on the device.
 //!
 //! [`GpuContext`] opens an adapter (Vulkan, Metal or DX12, including software Vulkan such as
-//! Mesa's lavapipe) and [`GpuBackend`] implements [`crate::core::raster::Backend`] with it:
+//! Mesa's lavapipe) and [`GpuBackend`] implements [`crate::core::engine::Backend`] with it:
 //! projection and culling (one thread per surfel), an exclusive scan of the per-surfel tile
 //! counts, emission of (tile, depth, surfel) entries and a radix sort of them on the device,
 //! per-tile ranges, forward compositing (one 8×8 workgroup per tile, one thread per pixel),
@@ -20,7 +20,7 @@
 //! tile-entry count and two flags), and the state comes back only when the training loop needs
 //! it on the host. The training loop uses it whenever the run's backend is this one.
 //!
-//! GridMap's mesh is fused on the device too (`tsdf`, [`crate::core::raster::Backend::fuse_depth`]):
+//! GridMap's mesh is fused on the device too (`tsdf`, [`crate::core::engine::Backend::fuse_depth`]):
 //! the training views' depth is rendered and fused into a TSDF grid there, and only the grid
 //! comes back for marching cubes. Still on the host: the environment map's prefilter and its
 //! transpose (every `envmap_prefilter_interval` steps), marching cubes and GridMap's probe

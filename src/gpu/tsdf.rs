@@ -1,5 +1,5 @@
 //! TSDF fusion of rendered depth on the device ([`TsdfKernels::fuse_on_device`], behind
-//! [`crate::core::raster::Backend::fuse_depth`]): every view's depth and opacity are rasterized
+//! [`crate::core::engine::Backend::fuse_depth`]): every view's depth and opacity are rasterized
 //! by the forward kernels (`super::raster`, band by band), each band's G-buffers are turned into
 //! the view's cleaned depth map (`prepare_depth`), and the view's votes are added into per-voxel
 //! sums and counts over the whole grid (`fuse_view`, shaders/tsdf_fuse.wgsl). Only the sums and
@@ -303,12 +303,12 @@ impl TsdfKernels {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::engine::Backend;
     use crate::core::mesh::tsdf_reference::{dense_reference, spheres_depth};
     use crate::core::mesh::{
         cameras_around, chamfer_l1_with, fuse_tsdf, marching_cubes, rendered_depth_views,
         sphere_depth_maps, DepthView, TriangleMesh, TsdfParams,
     };
-    use crate::core::raster::Backend;
     use crate::gpu::layout::assert_mirrors;
     use crate::gpu::GpuBackend;
 
@@ -548,7 +548,7 @@ mod tests {
         let maps: Vec<_> = cameras
             .iter()
             .map(|camera| {
-                let g = crate::core::raster::Backend::forward(&gpu, &surfels, camera, &settings)
+                let g = crate::core::engine::Backend::forward(&gpu, &surfels, camera, &settings)
                     .unwrap()
                     .gbuffers;
                 (g.depth, g.alpha)

@@ -12,9 +12,9 @@ use tracing::info;
 use std::ops::Deref;
 
 use crate::core::config::BackendChoice;
+use crate::core::engine::Backend;
 use crate::core::raster::cpu::CpuBackend;
 use crate::core::raster::fast::FastBackend;
-use crate::core::raster::Backend;
 use crate::core::resolution::Resolution;
 use crate::gpu::{AdapterRequirement, GpuBackend, GpuContext, GpuError, GpuOptions};
 

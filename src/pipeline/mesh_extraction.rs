@@ -16,11 +16,12 @@ use glam::DVec3;
 use thiserror::Error;
 
 use crate::core::camera::Camera;
+use crate::core::engine::Backend;
 use crate::core::mesh::{
     cameras_around_point, fuse_tsdf, mesh_from_grid, rendered_depth_views, GridLayout, MeshError,
     TriangleMesh, TsdfParams,
 };
-use crate::core::raster::{Backend, RasterError, RasterSettings};
+use crate::core::raster::{RasterError, RasterSettings};
 use crate::core::surfels::{sigmoid, Surfels};
 use crate::io::model::Model;
 use crate::pipeline::backend::{self, BackendError};

@@ -4,8 +4,9 @@
 #![allow(dead_code)]
 
 use phygap::core::camera::Camera;
+use phygap::core::engine::Backend;
 use phygap::core::raster::cpu::CpuBackend;
-use phygap::core::raster::{Backend, GBuffers, RasterSettings};
+use phygap::core::raster::{GBuffers, RasterSettings};
 use phygap::core::surfels::{SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
 use rand::SeedableRng;

@@ -62,7 +62,7 @@ impl TsdfParams {
     /// scene radius to drop far background; here any depth beyond the far side of the bounds'
     /// circumscribed sphere (camera distance to the centre + radius, worst view) is background.
     /// It depends on the cameras' positions only, not on what they see, so a fusion that renders
-    /// its depth maps elsewhere (on a device, [`crate::core::raster::Backend::fuse_depth`]) gets
+    /// its depth maps elsewhere (on a device, [`crate::core::engine::Backend::fuse_depth`]) gets
     /// the same limit as the host's from the same cameras.
     pub fn automatic<'a>(
         resolution: usize,
@@ -319,7 +319,7 @@ impl PreparedView {
 /// `origin + voxel · (i, j, k)` for `(i, j, k) < dims` (the bounds plus [`MARGIN_VOXELS`] on every
 /// side), with the truncation distance and the depth limit in world units. Every fusion builds
 /// its grid from this one layout: the host's [`fuse_tsdf`] and a backend's own
-/// ([`crate::core::raster::Backend::fuse_depth`]), so both give the same dims, origin and spacing.
+/// ([`crate::core::engine::Backend::fuse_depth`]), so both give the same dims, origin and spacing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GridLayout {
     /// Voxels along x, y and z (x fastest in the grid's arrays).

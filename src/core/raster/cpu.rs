@@ -25,8 +25,8 @@ use super::project::{self, Projected, ProjectedGrad, ProjectionCamera, NUM_FEATU
 use super::tiles::TileGrid;
 use super::{
     begin_backward, chain_to_raw, depth_normals, depth_upstream, unnormalize_upstream,
-    validate_inputs, Backend, GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings,
-    RasterStats, Rasterized, SavedForward,
+    validate_inputs, GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats,
+    Rasterized, SavedForward,
 };
 use crate::core::camera::Camera;
 use crate::core::surfels::Surfels;
@@ -329,16 +329,14 @@ fn project_and_bin(
     }
 }
 
-impl Backend for CpuBackend {
-    fn name(&self) -> &'static str {
-        "cpu"
-    }
-
-    fn description(&self) -> String {
+impl CpuBackend {
+    /// What [`crate::core::engine::Backend::description`] says of this engine.
+    pub fn description(&self) -> String {
         format!("cpu ({} threads)", rayon::current_num_threads())
     }
 
-    fn forward(
+    /// The forward pass ([`crate::core::engine::Backend::forward`]).
+    pub fn forward(
         &self,
         surfels: &Surfels,
         camera: &Camera,
@@ -414,7 +412,8 @@ impl Backend for CpuBackend {
         })
     }
 
-    fn backward(
+    /// The backward pass ([`crate::core::engine::Backend::backward`]).
+    pub fn backward(
         &self,
         surfels: &Surfels,
         camera: &Camera,

@@ -1,12 +1,11 @@
 //! Differentiable rasterization of 2D Gaussian surfels into G-buffers (METHOD.md §3).
 //!
-//! This module is the backend-neutral interface: [`Backend`] turns surfels and a camera into
-//! [`GBuffers`] (forward) and turns upstream gradients on every buffer back into gradients on the raw
-//! surfel parameters (backward); it also shades G-buffers (PolarDR, the cpu code of
-//! [`crate::core::shading`] unless the backend has its own). [`cpu::CpuBackend`] is the f64 reference
-//! implementation, [`fast::FastBackend`] the same computation in f32 SIMD on the host. The
-//! depth-derived normal map and the α-normalization are defined here, once, so every backend
-//! produces the same buffers.
+//! A rasterizer turns surfels and a camera into [`GBuffers`] (forward) and turns upstream
+//! gradients on every buffer back into gradients on the raw surfel parameters (backward); the
+//! engines offer it through [`crate::core::engine::Backend`]. [`cpu::CpuBackend`] is the f64
+//! reference implementation, [`fast::FastBackend`] the same computation in f32 SIMD on the host.
+//! The buffers' types, the depth-derived normal map and the α-normalization are defined here,
+//! once, so every engine produces the same buffers.
 //!
 //! α-normalization: the composited depth, normal, albedo, roughness and IoR are divided by the
 //! accumulated opacity α where `α > RasterSettings::normalize_alpha_min` (ε = 1e-6 by default) and
@@ -25,14 +24,7 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
-use crate::core::envmap::EnvGrad;
-use crate::core::light::LightProbe;
-use crate::core::mesh::{GridLayout, ScalarGrid};
-use crate::core::shading::{
-    self, GBufferGrad, SavedShading, ShadingBuffers, ShadingError, StokesImage, StokesImageGrad,
-};
 use crate::core::surfels::{SurfelGrads, Surfels};
 
 /// Thresholds of the rasterizer (2DGS defaults).
@@ -238,7 +230,7 @@ pub struct RasterStats {
 pub struct Rasterized {
     pub gbuffers: GBuffers,
     pub stats: RasterStats,
-    /// Backend-private state for [`Backend::backward`].
+    /// Backend-private state for [`crate::core::engine::Backend::backward`].
     pub saved: Box<dyn Any + Send + Sync>,
 }
 
@@ -251,111 +243,14 @@ pub struct RasterGrads {
     pub mean2d_grad_norm: Vec<f64>,
 }
 
-/// Device time spent in one kind of compute pass ([`Backend::take_stage_times`]).
+/// Device time spent in one kind of compute pass
+/// ([`crate::core::engine::Backend::take_stage_times`]).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StageTime {
     pub name: String,
     /// Passes run.
     pub calls: usize,
     pub total_ms: f64,
-}
-
-/// A rasterizer implementation.
-pub trait Backend: Send + Sync {
-    fn name(&self) -> &'static str;
-    /// The name plus what it runs on (for logs and `phygap bench`).
-    fn description(&self) -> String {
-        self.name().to_string()
-    }
-    fn forward(
-        &self,
-        surfels: &Surfels,
-        camera: &Camera,
-        settings: &RasterSettings,
-    ) -> Result<Rasterized, RasterError>;
-    fn backward(
-        &self,
-        surfels: &Surfels,
-        camera: &Camera,
-        settings: &RasterSettings,
-        forward: &Rasterized,
-        upstream: &GBufferGrads,
-    ) -> Result<RasterGrads, RasterError>;
-    /// The TSDF of the depth and opacity of `surfels` seen from every camera, fused into `grid`
-    /// on the backend's own device, so the depth maps never leave it; `None` (the default) where
-    /// the backend has no such fusion, and the caller renders the views with [`Self::forward`]
-    /// and fuses them on the host ([`crate::core::mesh::fuse_tsdf`]). The fusion follows the
-    /// host's rules (`core::mesh::tsdf`) but is dense: every voxel some view observes is known,
-    /// where the host fuses only the blocks near the surface; marching cubes gives the same
-    /// surface from either.
-    fn fuse_depth(
-        &self,
-        _surfels: &Surfels,
-        _cameras: &[Camera],
-        _settings: &RasterSettings,
-        _grid: &GridLayout,
-    ) -> Option<Result<ScalarGrid, RasterError>> {
-        None
-    }
-    /// Device time per stage since the last call, where the backend measures it (the gpu
-    /// backend with [`crate::gpu::GpuOptions::profile`]); empty otherwise.
-    fn take_stage_times(&self) -> Vec<StageTime> {
-        Vec::new()
-    }
-    /// PolarDR shading of one view's G-buffers ([`shading::shade_image`], the default); a
-    /// backend may run it on its own device.
-    fn shade(
-        &self,
-        camera: &Camera,
-        buffers: &ShadingBuffers,
-        light: &dyn LightProbe,
-        lut: &BrdfLut,
-    ) -> Result<StokesImage, ShadingError> {
-        shading::shade_image(camera, buffers, light, lut)
-    }
-    /// [`Self::shade`] for a training step, which calls [`Self::shade_backward_saved`] next:
-    /// the host's shader keeps its forward intermediates ([`shading::shade_image_saved`]) so the
-    /// backward pass does not look the light up again; a backend that shades on its own device
-    /// keeps nothing (`None`).
-    fn shade_saved(
-        &self,
-        camera: &Camera,
-        buffers: &ShadingBuffers,
-        light: &dyn LightProbe,
-        lut: &BrdfLut,
-    ) -> Result<(StokesImage, Option<SavedShading>), ShadingError> {
-        let (image, saved) = shading::shade_image_saved(camera, buffers, light, lut)?;
-        Ok((image, Some(saved)))
-    }
-    /// Backward of [`Self::shade_saved`]: from its intermediates where it kept them, else
-    /// [`Self::shade_backward`].
-    fn shade_backward_saved(
-        &self,
-        camera: &Camera,
-        buffers: &ShadingBuffers,
-        light: &dyn LightProbe,
-        lut: &BrdfLut,
-        saved: Option<&SavedShading>,
-        upstream: &StokesImageGrad,
-    ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
-        match saved {
-            Some(saved) => {
-                shading::shade_image_backward_saved(camera, buffers, light, lut, saved, upstream)
-            }
-            None => self.shade_backward(camera, buffers, light, lut, upstream),
-        }
-    }
-    /// Backward of [`Self::shade`] ([`shading::shade_image_backward`], the default).
-    fn shade_backward(
-        &self,
-        camera: &Camera,
-        buffers: &ShadingBuffers,
-        light: &dyn LightProbe,
-        lut: &BrdfLut,
-        upstream: &StokesImageGrad,
-    ) -> Result<(GBufferGrad, EnvGrad), ShadingError> {
-        shading::shade_image_backward(camera, buffers, light, lut, upstream)
-    }
 }
 
 /// What a backend keeps from its forward pass for the backward pass (the `saved` of

@@ -21,9 +21,10 @@ use serde::{Deserialize, Serialize};
 use tracing::info_span;
 
 use crate::core::camera::Camera;
+use crate::core::engine::Backend;
 use crate::core::envmap::{EnvMapError, PreparedEnv};
 use crate::core::gridmap::{GridMap, GridMapError};
-use crate::core::raster::{Backend, RasterError, RasterSettings, StageTime};
+use crate::core::raster::{RasterError, RasterSettings, StageTime};
 use crate::core::surfels::{logit, Surfels};
 use crate::gpu::GpuBackend;
 use crate::io::model::Model;

@@ -13,11 +13,12 @@ use std::collections::BTreeMap;
 use glam::DVec3;
 
 use crate::core::brdf_lut::BrdfLut;
+use crate::core::engine::Backend;
 use crate::core::envmap::EnvGrad;
 use crate::core::events::Stage;
 use crate::core::light::LightProbe;
 use crate::core::loss::{self, LossWeights};
-use crate::core::raster::{Backend, GBufferGrads, GBuffers, RasterSettings};
+use crate::core::raster::{GBufferGrads, GBuffers, RasterSettings};
 use crate::core::render::ShadingInputs;
 use crate::core::shading::{SavedShading, StokesImage, StokesImageGrad};
 use crate::core::step::{StepPlan, ViewTarget};

@@ -37,8 +37,8 @@ use super::project::{self, Projected, ProjectionCamera};
 use super::tiles::TileGrid;
 use super::{
     begin_backward, chain_to_raw, depth_normals, depth_upstream, unnormalize_upstream,
-    validate_inputs, Backend, GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings,
-    RasterStats, Rasterized, SavedForward,
+    validate_inputs, GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats,
+    Rasterized, SavedForward,
 };
 use crate::core::camera::Camera;
 use crate::core::surfels::Surfels;
@@ -310,12 +310,9 @@ fn assemble(gb: &mut GBuffers, grid: &TileGrid, sums: &[f32], eps: f64) {
         });
 }
 
-impl Backend for FastBackend {
-    fn name(&self) -> &'static str {
-        "fast"
-    }
-
-    fn description(&self) -> String {
+impl FastBackend {
+    /// What [`crate::core::engine::Backend::description`] says of this engine.
+    pub fn description(&self) -> String {
         format!(
             "fast ({} threads, f32 {})",
             rayon::current_num_threads(),
@@ -323,7 +320,8 @@ impl Backend for FastBackend {
         )
     }
 
-    fn forward(
+    /// The forward pass ([`crate::core::engine::Backend::forward`]).
+    pub fn forward(
         &self,
         surfels: &Surfels,
         camera: &Camera,
@@ -396,7 +394,8 @@ impl Backend for FastBackend {
         })
     }
 
-    fn backward(
+    /// The backward pass ([`crate::core::engine::Backend::backward`]).
+    pub fn backward(
         &self,
         surfels: &Surfels,
         camera: &Camera,

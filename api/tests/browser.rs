@@ -27,6 +27,8 @@ const TOKEN: &str = "page-test-token";
 /// What the page is given to reconstruct.
 struct Scenario {
     archive: Vec<u8>,
+    /// The archive's file name (its extension says zip or tar).
+    file_name: &'static str,
     views: usize,
     test_views: usize,
     iterations: u32,
@@ -41,7 +43,9 @@ impl Scenario {
     /// The test capture, trained for seconds.
     fn small() -> Scenario {
         Scenario {
-            archive: capture_zip(),
+            // Over 300 kB: more than one part once the page's part size is lowered to 64 KiB.
+            archive: padded_capture_tar(),
+            file_name: "capture.tar",
             views: 10,
             test_views: 2,
             iterations: 40,
@@ -66,6 +70,7 @@ impl Scenario {
             .expect("PHYGAP_WEB_ITERATIONS is a number of steps");
         Scenario {
             archive: zip_of(&files_of(dir.path())),
+            file_name: "capture.zip",
             views: options.views,
             test_views: options.views.div_ceil(8),
             iterations,
@@ -158,7 +163,7 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
     } else {
         Scenario::small()
     };
-    let good = dir.path().join("capture.zip");
+    let good = dir.path().join(scenario.file_name);
     std::fs::write(&good, &scenario.archive).unwrap();
     // transforms.json without its images: rejected with each missing file named.
     let broken = dir.path().join("broken.zip");
@@ -214,6 +219,14 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
         "{problems:?}"
     );
 
+    // The good capture goes up in parts (resumable; the page's part size lowered to the
+    // service's 64 KiB minimum).
+    session
+        .script(
+            "localStorage.setItem('phygap.partBytes', String(64 * 1024))",
+            json!([]),
+        )
+        .await;
     session
         .type_into("#capture-file", good.to_str().unwrap())
         .await;
@@ -233,6 +246,26 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
         )
         .await;
     assert_eq!(progress, json!(1), "the upload bar ends full");
+    let upload_id = session
+        .script(
+            "return document.querySelector('#upload-report').dataset.uploadId || null",
+            json!([]),
+        )
+        .await;
+    let upload_id = upload_id.as_str().expect("the capture went up in parts");
+    let (status, upload) = status_and_json(
+        t.get_with_token(&format!("/v1/uploads/{upload_id}"), TOKEN)
+            .await,
+    )
+    .await;
+    assert_eq!(status, 200, "{upload}");
+    assert_eq!(upload["state"], "committed", "{upload}");
+    assert!(upload["parts"].as_u64().unwrap() > 1, "{upload}");
+    let capture_id = upload["capture_id"].as_str().unwrap();
+    assert!(
+        accepted.as_str().unwrap().contains(capture_id),
+        "{accepted}"
+    );
 
     let iterations = scenario.iterations.to_string();
     session

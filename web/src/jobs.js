@@ -3,6 +3,7 @@
 // their live state, stage, loss curve and test PSNR from each job's event stream, and cancel.
 
 import { json, postJson, upload, followJob, ApiError } from './api.js';
+import { goesInParts, uploadInParts } from './resumable.js';
 import { drawLossCurve } from './chart.js';
 import { el, duration, size, problemsOf } from './format.js';
 
@@ -50,8 +51,18 @@ async function uploadCapture(root, file) {
   bar.value = 0;
   report.replaceChildren(el('p', 'muted', `Uploading ${file.name} (${size(file.size)})…`));
   const type = /\.tar$/i.test(file.name) ? 'application/x-tar' : 'application/zip';
+  const progress = (f) => (bar.value = f);
+  delete report.dataset.uploadId;
   try {
-    const capture = await upload('/v1/captures', file, (f) => (bar.value = f), type);
+    let capture;
+    if (goesInParts(file)) {
+      // Large archives go up in parts that survive a dropped connection.
+      const done = await uploadInParts(file, progress);
+      capture = done.capture;
+      report.dataset.uploadId = done.uploadId;
+    } else {
+      capture = await upload('/v1/captures', file, progress, type);
+    }
     bar.value = 1;
     report.replaceChildren(captureSummary(capture));
     root.querySelector('#capture-id').value = capture.id;

@@ -292,21 +292,15 @@ pub(crate) async fn ingest(
     })
     .await
     .map_err(|e| ApiError::internal("processing the upload", e))??;
-    let key = crate::object_keys::capture(&filed.record.id);
-    if let Some(bucket) = &state.bucket {
-        if let Err(e) = bucket.upload_dir(&key, &filed.dir).await {
-            let _ = tokio::fs::remove_dir_all(&filed.dir).await;
-            let _ = bucket.delete_folder(&key).await;
-            return Err(e.into());
-        }
-    }
-    if let Err(e) = state.store.insert_capture(&filed.record).await {
-        let _ = tokio::fs::remove_dir_all(&filed.dir).await;
-        if let Some(bucket) = &state.bucket {
-            let _ = bucket.delete_folder(&key).await;
-        }
-        return Err(e.into());
-    }
+    let published = crate::intake::Filed {
+        dir: &filed.dir,
+        key: crate::object_keys::capture(&filed.record.id),
+        remove: filed.dir.clone(),
+    };
+    crate::intake::publish_then_record(&state, published, || {
+        state.store.insert_capture(&filed.record)
+    })
+    .await?;
     drop(filed.staging);
     Ok(filed.record)
 }

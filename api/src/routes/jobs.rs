@@ -6,7 +6,6 @@ use std::convert::Infallible;
 use std::time::Duration;
 
 use axum::body::Bytes;
-use axum::extract::multipart::{Field, MultipartError};
 use axum::extract::rejection::BytesRejection;
 use axum::extract::{Multipart, Path, Query, State};
 use axum::http::{HeaderMap, StatusCode};
@@ -15,11 +14,11 @@ use axum::{Extension, Json};
 use futures_util::Stream;
 use phygap::core::config::TrainConfig;
 use serde::{Deserialize, Serialize};
-use tokio::io::AsyncWriteExt;
 use utoipa::{IntoParams, ToSchema};
 
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
+use crate::intake::RelightInputs;
 use crate::queue::{new_id, CancelReason};
 use crate::quotas::JobRequestLimits;
 use crate::routes::captures::TempDir;
@@ -576,47 +575,6 @@ pub async fn events(
     Ok(Sse::new(stream).keep_alive(KeepAlive::default()))
 }
 
-fn multipart_error(e: MultipartError) -> ApiError {
-    if e.status() == StatusCode::PAYLOAD_TOO_LARGE {
-        ApiError::too_large(e.body_text())
-    } else if crate::slow_body::is_too_slow(&e) {
-        crate::routes::captures::body_error(&e)
-    } else {
-        ApiError::bad_request("invalid_multipart", e.body_text())
-    }
-}
-
-/// Streams one multipart field into `target`; returns its first bytes (for format sniffing).
-async fn save_field(mut field: Field<'_>, target: &std::path::Path) -> Result<Vec<u8>, ApiError> {
-    let mut file = tokio::fs::File::create(target)
-        .await
-        .map_err(|e| ApiError::internal("saving an upload", e))?;
-    let mut head = Vec::new();
-    while let Some(chunk) = field.chunk().await.map_err(multipart_error)? {
-        if head.len() < 16 {
-            head.extend_from_slice(&chunk[..chunk.len().min(16 - head.len())]);
-        }
-        file.write_all(&chunk)
-            .await
-            .map_err(|e| ApiError::internal("saving an upload", e))?;
-    }
-    file.flush()
-        .await
-        .map_err(|e| ApiError::internal("saving an upload", e))?;
-    Ok(head)
-}
-
-/// The environment-map format from its magic bytes.
-fn envmap_extension(head: &[u8]) -> Option<&'static str> {
-    if head.starts_with(&[0x76, 0x2f, 0x31, 0x01]) {
-        Some("exr")
-    } else if head.starts_with(b"#?RADIANCE") || head.starts_with(b"#?RGBE") {
-        Some("hdr")
-    } else {
-        None
-    }
-}
-
 /// The form of `POST /v1/jobs/{id}/relight` (the handler reads it field by field).
 #[derive(ToSchema)]
 #[allow(dead_code)] // Read by hand from the multipart stream; this is its schema.
@@ -693,7 +651,7 @@ pub async fn relight(
         max_runtime_seconds: None,
     };
     crate::quotas::admit_job(&state, &caller, asks).await?;
-    let mut multipart = multipart.map_err(|e| {
+    let multipart = multipart.map_err(|e| {
         ApiError::new(
             StatusCode::UNSUPPORTED_MEDIA_TYPE,
             "invalid_multipart",
@@ -702,67 +660,12 @@ pub async fn relight(
     })?;
     let id = new_id("job");
     let staging = TempDir::create(state.paths.tmp.join(&id))?;
-    let mut envmap_file = None;
-    let mut cameras_file = None;
-    let mut rotate_deg = 0.0f64;
-    let mut webhook = None;
-    while let Some(field) = multipart.next_field().await.map_err(multipart_error)? {
-        match field.name().unwrap_or("") {
-            "webhook" => webhook = Some(field.text().await.map_err(multipart_error)?),
-            "envmap" => {
-                let upload = staging.path().join("envmap.upload");
-                let head = save_field(field, &upload).await?;
-                let ext = envmap_extension(&head).ok_or_else(|| {
-                    ApiError::new(
-                        StatusCode::UNSUPPORTED_MEDIA_TYPE,
-                        "unsupported_envmap",
-                        "the environment map must be an OpenEXR (.exr) or Radiance (.hdr) file",
-                    )
-                })?;
-                let name = format!("envmap.{ext}");
-                std::fs::rename(&upload, staging.path().join(&name))
-                    .map_err(|e| ApiError::internal("saving the environment map", e))?;
-                envmap_file = Some(name);
-            }
-            "cameras" => {
-                let path = staging.path().join("cameras.json");
-                save_field(field, &path).await?;
-                let text = tokio::fs::read(&path)
-                    .await
-                    .map_err(|e| ApiError::internal("reading the cameras", e))?;
-                serde_json::from_slice::<serde_json::Value>(&text).map_err(|e| {
-                    ApiError::unprocessable("invalid_cameras", format!("cameras: {e}"))
-                })?;
-                cameras_file = Some("cameras.json".to_owned());
-            }
-            "rotate_deg" => {
-                let text = field.text().await.map_err(multipart_error)?;
-                rotate_deg = text
-                    .trim()
-                    .parse::<f64>()
-                    .ok()
-                    .filter(|v| v.is_finite())
-                    .ok_or_else(|| {
-                        ApiError::unprocessable(
-                            "invalid_rotate_deg",
-                            format!("rotate_deg must be a finite number, got {text:?}"),
-                        )
-                    })?;
-            }
-            other => {
-                return Err(ApiError::bad_request(
-                    "unknown_field",
-                    format!(
-                        "unknown form field `{other}` (expected envmap, cameras, rotate_deg, \
-                         webhook)"
-                    ),
-                ))
-            }
-        }
-    }
-    let envmap_file = envmap_file.ok_or_else(|| {
-        ApiError::unprocessable("missing_envmap", "the form has no `envmap` file field")
-    })?;
+    let RelightInputs {
+        envmap_file,
+        cameras_file,
+        rotate_deg,
+        webhook,
+    } = crate::intake::read_relight_form(multipart, staging.path()).await?;
     let webhook_url = state.config.webhooks.target(webhook.as_deref())?;
     let (envmap_path, cameras_path, limits) = (
         staging.path().join(&envmap_file),
@@ -781,14 +684,6 @@ pub async fn relight(
     }
     std::fs::rename(staging.path(), &input_dir)
         .map_err(|e| ApiError::internal("filing the relight inputs", e))?;
-    let input_key = crate::object_keys::job_input(&id);
-    if let Some(bucket) = &state.bucket {
-        if let Err(e) = bucket.upload_dir(&input_key, &input_dir).await {
-            let _ = std::fs::remove_dir_all(state.paths.jobs.join(&id));
-            let _ = bucket.delete_folder(&input_key).await;
-            return Err(e.into());
-        }
-    }
     let job = NewJob {
         id: id.clone(),
         capture_id: parent.capture_id.clone(),
@@ -805,16 +700,15 @@ pub async fn relight(
         priority: asks.priority,
         max_runtime_seconds: asks.max_runtime_seconds,
     };
-    let record = match state.store.submit(&job, None).await {
-        Ok((record, _)) => record,
-        Err(e) => {
-            let _ = std::fs::remove_dir_all(state.paths.jobs.join(&id));
-            if let Some(bucket) = &state.bucket {
-                let _ = bucket.delete_folder(&input_key).await;
-            }
-            return Err(e.into());
-        }
+    let filed = crate::intake::Filed {
+        dir: &input_dir,
+        key: crate::object_keys::job_input(&id),
+        remove: state.paths.jobs.join(&id),
     };
+    let (record, _) = crate::intake::publish_then_record(&state, filed, || async {
+        state.store.submit(&job, None).await
+    })
+    .await?;
     tracing::info!(job_id = %id, parent = %record.capture_id, "relight job queued");
     state.runtime.wake_workers();
     Ok((StatusCode::CREATED, Json(record.into())))

@@ -1,5 +1,5 @@
 //! Parity of the gpu backend's resident trainer (`DeviceTrainer`: whole steps on the device) with
-//! the host's f64 step (`train::step::run` on the cpu backend): the named loss terms, every raw
+//! the host's f64 step (`train::host_step::run` on the cpu backend): the named loss terms, every raw
 //! gradient group, the screen-space gradient of densification, the light's gradient and the
 //! polarizer angle's, for each stage and each kind of view (full Stokes, behind a learned
 //! polarizer, plain RGB), under the global light and under GridMap; and the Adam update and the
@@ -22,7 +22,7 @@ use phygap::core::raster::RasterSettings;
 use phygap::core::step::{Polarizer, StepPlan, ViewTarget};
 use phygap::core::surfels::Surfels;
 use phygap::gpu::{DeviceStep, DeviceTrainer, GpuBackend, GpuOptions};
-use phygap::pipeline::train::step::{self, StepInputs};
+use phygap::pipeline::train::host_step::{self, StepInputs};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -166,7 +166,7 @@ fn compare(
         lut: &scene.lut,
         weights: scene.weights,
     };
-    let host = step::run(
+    let host = host_step::run(
         &inputs,
         &scene.surfels,
         light,

@@ -28,7 +28,7 @@
 
 mod buffers;
 mod kernels;
-mod step;
+mod passes;
 
 use std::sync::Arc;
 

@@ -1,5 +1,5 @@
 //! Where a run's steps execute. [`StepEngine::Host`]: on the host through the rasterizer backend
-//! ([`step::run`]), with Adam and the densification statistics applied to the state in host
+//! ([`host_step::run`]), with Adam and the densification statistics applied to the state in host
 //! memory (the cpu backend; the gpu backend's per-call kernels). [`StepEngine::Device`]: wholly on
 //! the gpu backend's device ([`DeviceTrainer`]), the surfels, their Adam moments and the
 //! statistics resident there between the points where the loop needs them on the host
@@ -12,8 +12,8 @@
 
 use std::collections::BTreeMap;
 
+use super::host_step::{self, StepInputs};
 use super::state::TrainState;
-use super::step::{self, StepInputs};
 use super::{Run, TrainError};
 use crate::core::step::StepPlan;
 use std::sync::Arc;
@@ -205,7 +205,7 @@ impl<'r> StepEngine<'r> {
                     lut: run.lut,
                     weights,
                 };
-                let result = step::run(
+                let result = host_step::run(
                     &inputs,
                     &state.surfels,
                     light,

@@ -20,11 +20,11 @@
 mod angles;
 mod engine;
 mod eta;
+pub mod host_step;
 pub mod init;
 pub mod schedule;
 pub mod sparse;
 pub mod state;
-pub mod step;
 pub mod targets;
 
 use std::collections::BTreeMap;

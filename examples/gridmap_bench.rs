@@ -21,7 +21,7 @@ use phygap::io::capture;
 use phygap::io::model::Model;
 use phygap::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
 use phygap::pipeline::reconstruction::{prefilter_plan, Reconstruction};
-use phygap::pipeline::train::step::{self, StepInputs};
+use phygap::pipeline::train::host_step::{self, StepInputs};
 use phygap::pipeline::train::targets::{resolve_mode, view_target};
 
 /// CPU seconds (user + system) of this process so far, from /proc (Linux; 0 elsewhere). On a
@@ -119,7 +119,7 @@ fn main() -> anyhow::Result<()> {
     let steps = |light: &dyn LightProbe| -> anyhow::Result<()> {
         for target in &targets {
             let camera = &capture.views[target.view].camera;
-            step::run(
+            host_step::run(
                 &inputs,
                 &model.surfels,
                 light,

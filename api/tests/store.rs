@@ -98,6 +98,52 @@ async fn concurrent_claims_take_each_job_once(s: Arc<dyn Store>) {
     assert_eq!((claimed.len(), distinct.len()), (40, 40), "{claimed:?}");
 }
 
+/// Claimers racing under running limits (each its own connection on PostgreSQL) never take an
+/// account past its limit: every account ends with exactly its limit running.
+async fn concurrent_claims_keep_accounts_within_their_running_limits(s: Arc<dyn Store>) {
+    for (a, account) in ["alice", "bob", "carol"].into_iter().enumerate() {
+        for i in 0..10 {
+            let job = NewJob {
+                account: Some(account.into()),
+                ..new_job(&format!("job_{account}_{i}"), (a * 10 + i) as i64)
+            };
+            s.submit(&job, None).await.unwrap();
+        }
+    }
+    let limits = RunningLimits {
+        default: Some(2),
+        accounts: [("carol".to_owned(), 3)].into(),
+    };
+    let claimers = (0..8).map(|w| {
+        let (s, limits) = (s.clone(), limits.clone());
+        tokio::spawn(async move {
+            let mut mine = 0;
+            while s
+                .claim_within(&format!("w{w}"), 10, 1000, &limits)
+                .await
+                .unwrap()
+                .is_some()
+            {
+                mine += 1;
+            }
+            mine
+        })
+    });
+    let mut claimed = 0;
+    for claimer in claimers {
+        claimed += claimer.await.unwrap();
+    }
+    assert_eq!(claimed, 2 + 2 + 3);
+    for (account, limit) in [("alice", 2), ("bob", 2), ("carol", 3)] {
+        let usage = s.account_usage(account).await.unwrap();
+        assert_eq!(
+            (usage.running, usage.queued),
+            (limit, 10 - limit),
+            "{account}"
+        );
+    }
+}
+
 async fn only_the_owner_can_heartbeat_and_finish(s: &dyn Store) {
     s.submit(&new_job("job_a", 1), None).await.unwrap();
     s.claim("w1", 10, 1000).await.unwrap().unwrap();
@@ -748,6 +794,7 @@ where
     claim_is_exclusive_and_fifo(fresh().await.as_ref()).await;
     claims_follow_priority_and_running_limits(fresh().await.as_ref()).await;
     concurrent_claims_take_each_job_once(fresh().await).await;
+    concurrent_claims_keep_accounts_within_their_running_limits(fresh().await).await;
     only_the_owner_can_heartbeat_and_finish(fresh().await.as_ref()).await;
     a_requeued_job_keeps_its_progress_and_is_claimed_again(fresh().await.as_ref()).await;
     expired_leases_are_requeued_then_abandoned(fresh().await.as_ref()).await;

@@ -386,8 +386,7 @@ pub trait Store: Send + Sync + 'static {
     async fn unused_captures_before(&self, before: i64) -> Result<Vec<String>, StoreError>;
     /// Atomically takes a queued job for `owner` until `lease_until` (unix ms): the highest
     /// priority, then the oldest, of the accounts running fewer jobs than `running` allows them.
-    /// (Two processes claiming at the same moment may each see an account one job under its
-    /// limit, so across processes it holds to within one job per claiming process.)
+    /// Claims under limits from several processes take turns, so the limits hold across them.
     async fn claim_within(
         &self,
         owner: &str,

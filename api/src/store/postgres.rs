@@ -47,6 +47,9 @@ const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created
                            finished_at, attempts, cancel_requested, account, error_code, \
                            last_death, webhook_url, webhook_attempts, webhook_status, \
                            webhook_done, priority, max_runtime_s";
+/// Key of the advisory lock that claims under running limits take in turn (the migrations' + 1).
+const CLAIM_LOCK: i64 = MIGRATION_LOCK + 1;
+
 /// How many columns [`JOB_COLUMNS`] names.
 const JOB_COLUMN_COUNT: usize = 20;
 
@@ -519,31 +522,41 @@ impl Store for PostgresStore {
         running: &RunningLimits,
     ) -> Result<Option<JobRecord>, StoreError> {
         // $4: {"account": limit, …}; $5: the limit of other accounts (NULL: none).
-        let default = running.default.map(i64::from);
-        self.query_job(
-            &format!(
-                "UPDATE jobs SET state = 'running', owner = $1, lease_until = $2,
-                        started_at = COALESCE(started_at, $3), attempts = attempts + 1
-                 WHERE id = (
-                     SELECT id FROM jobs AS q WHERE state = 'queued'
-                       AND (q.account IS NULL
-                            OR COALESCE(($4::TEXT::JSONB ->> q.account)::BIGINT, $5) IS NULL
-                            OR (SELECT COUNT(*) FROM jobs AS busy
-                                WHERE busy.state = 'running' AND busy.account = q.account)
-                               < COALESCE(($4::TEXT::JSONB ->> q.account)::BIGINT, $5))
-                     ORDER BY priority DESC, created_at, seq LIMIT 1
-                     FOR UPDATE SKIP LOCKED)
-                 RETURNING {JOB_COLUMNS}"
-            ),
-            &[
-                &owner,
-                &lease_until,
-                &now,
-                &running.accounts_json(),
-                &default,
-            ],
-        )
-        .await
+        let sql = format!(
+            "UPDATE jobs SET state = 'running', owner = $1, lease_until = $2,
+                    started_at = COALESCE(started_at, $3), attempts = attempts + 1
+             WHERE id = (
+                 SELECT id FROM jobs AS q WHERE state = 'queued'
+                   AND (q.account IS NULL
+                        OR COALESCE(($4::TEXT::JSONB ->> q.account)::BIGINT, $5) IS NULL
+                        OR (SELECT COUNT(*) FROM jobs AS busy
+                            WHERE busy.state = 'running' AND busy.account = q.account)
+                           < COALESCE(($4::TEXT::JSONB ->> q.account)::BIGINT, $5))
+                 ORDER BY priority DESC, created_at, seq LIMIT 1
+                 FOR UPDATE SKIP LOCKED)
+             RETURNING {JOB_COLUMNS}"
+        );
+        let (accounts, default) = (running.accounts_json(), running.default.map(i64::from));
+        let params: [&(dyn ToSql + Sync); 5] = [&owner, &lease_until, &now, &accounts, &default];
+        if running.default.is_none() && running.accounts.is_empty() {
+            return self.query_job(&sql, &params).await;
+        }
+        // With running limits, claims take turns: each counts an account's running jobs after
+        // the claim before it committed, so processes claiming at once cannot both take an
+        // account's last slot. (A claim is a few milliseconds; the lock ends with the
+        // transaction.)
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        tx.execute("SELECT pg_advisory_xact_lock($1)", &[&CLAIM_LOCK])
+            .await?;
+        let claimed = tx
+            .query_opt(&sql, &params)
+            .await?
+            .as_ref()
+            .map(job_of)
+            .transpose()?;
+        tx.commit().await?;
+        Ok(claimed)
     }
 
     async fn account_usage(&self, account: &str) -> Result<AccountUsage, StoreError> {

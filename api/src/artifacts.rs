@@ -306,6 +306,11 @@ impl BucketArtifacts {
     fn folder(job_id: &str) -> Result<String, ArtifactError> {
         Ok(crate::object_keys::artifacts(job_folder(job_id)?))
     }
+
+    /// The object of one artifact.
+    fn object(job_id: &str, name: &str) -> Result<String, ArtifactError> {
+        Ok(format!("{}/{name}", Self::folder(job_id)?))
+    }
 }
 
 #[async_trait::async_trait]
@@ -339,7 +344,7 @@ impl ArtifactStore for BucketArtifacts {
         info: &ArtifactInfo,
         expires: std::time::Duration,
     ) -> Result<Option<String>, ArtifactError> {
-        let path = format!("{}/{}", Self::folder(job_id)?, info.name);
+        let path = Self::object(job_id, &info.name)?;
         let file_name = info.name.rsplit('/').next().unwrap_or(&info.name);
         Ok(self
             .bucket
@@ -364,7 +369,7 @@ impl ArtifactStore for BucketArtifacts {
         if !valid_name(name) {
             return Ok(None);
         }
-        let key = format!("{}/{name}", Self::folder(job_id)?);
+        let key = Self::object(job_id, name)?;
         Ok(self.bucket.head(&key).await?.map(|meta| {
             let modified = SystemTime::from(meta.last_modified);
             ArtifactStat {
@@ -394,7 +399,7 @@ impl ArtifactStore for BucketArtifacts {
         if !valid_name(name) {
             return Err(ArtifactError::BadName(name.to_owned()));
         }
-        let key = format!("{}/{name}", Self::folder(job_id)?);
+        let key = Self::object(job_id, name)?;
         if len == 0 {
             return Ok(Box::pin(tokio::io::empty()));
         }

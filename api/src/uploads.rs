@@ -128,27 +128,15 @@ pub async fn receive_part(
         upload.id,
         crate::queue::new_id("part")
     )));
-    let mut file = tokio::fs::File::create(&temp.0)
-        .await
-        .map_err(|e| ApiError::internal("creating a part's file", e))?;
     let mut hasher = Sha256::new();
-    let mut received = 0u64;
-    let mut stream = body.into_data_stream();
-    while let Some(chunk) = stream.next().await {
-        let chunk = chunk.map_err(|e| crate::routes::captures::body_error(&e))?;
-        received += chunk.len() as u64;
-        if received > expected {
-            return Err(part_size_mismatch(index, expected));
-        }
-        hasher.update(&chunk);
-        file.write_all(&chunk)
-            .await
-            .map_err(|e| ApiError::internal("writing a part", e))?;
-    }
-    file.flush()
-        .await
-        .map_err(|e| ApiError::internal("writing a part", e))?;
-    drop(file);
+    let received = crate::routes::captures::stream_to_file_with(
+        body,
+        &temp.0,
+        expected,
+        || part_size_mismatch(index, expected),
+        |chunk| hasher.update(chunk),
+    )
+    .await?;
     if received != expected {
         return Err(part_size_mismatch(index, expected));
     }

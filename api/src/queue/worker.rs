@@ -39,6 +39,8 @@ fn lease_deadline(state: &AppState) -> i64 {
 }
 
 async fn worker_loop(state: AppState, index: usize) {
+    // The accounts' running limits, fixed for the process's life.
+    let running_limits = state.config.quotas().running();
     loop {
         if state.shutdown.is_cancelled() {
             break;
@@ -52,7 +54,7 @@ async fn worker_loop(state: AppState, index: usize) {
                 state.runtime.owner(),
                 now_ms(),
                 lease_deadline(&state),
-                &state.config.quotas().running(),
+                &running_limits,
             )
             .await
         {

@@ -109,6 +109,18 @@ fn too_large(limit: u64) -> ApiError {
 
 /// Streams a request body into `target`, refusing more than `limit` bytes; returns the size.
 pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u64, ApiError> {
+    stream_to_file_with(body, target, limit, || too_large(limit), |_| {}).await
+}
+
+/// [`stream_to_file`] answering `over_limit()` past `limit` bytes and showing every chunk to
+/// `inspect` as it is written (a digest, for instance).
+pub async fn stream_to_file_with(
+    body: Body,
+    target: &FsPath,
+    limit: u64,
+    over_limit: impl Fn() -> ApiError,
+    mut inspect: impl FnMut(&[u8]),
+) -> Result<u64, ApiError> {
     let mut file = tokio::fs::File::create(target)
         .await
         .map_err(|e| ApiError::internal("creating the upload file", e))?;
@@ -118,8 +130,9 @@ pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u
         let chunk = chunk.map_err(|e| body_error(&e))?;
         total += chunk.len() as u64;
         if total > limit {
-            return Err(too_large(limit));
+            return Err(over_limit());
         }
+        inspect(&chunk);
         file.write_all(&chunk)
             .await
             .map_err(|e| ApiError::internal("writing the upload", e))?;
@@ -352,8 +365,9 @@ pub async fn upload(
         let _ = axum::body::to_bytes(body, DRAIN_BEFORE_REJECT).await;
         return Err(too_large);
     }
-    let declared = content_length(&headers).unwrap_or(0);
-    if let Err(over_quota) = crate::quotas::admit_bytes(&state, &caller, declared).await {
+    let declared = content_length(&headers);
+    let admitted = crate::quotas::admit_bytes(&state, &caller, declared.unwrap_or(0)).await;
+    if let Err(over_quota) = admitted {
         let _ = axum::body::to_bytes(body, DRAIN_BEFORE_REJECT).await;
         return Err(over_quota);
     }
@@ -368,7 +382,9 @@ pub async fn upload(
         ));
     }
     // A body sent without a length is held to the quota once its size is known.
-    crate::quotas::admit_bytes(&state, &caller, size).await?;
+    if declared.is_none() {
+        crate::quotas::admit_bytes(&state, &caller, size).await?;
+    }
     // The rest runs to completion in its own task even if the client disconnects, so the
     // capture is either recorded or removed, and the temporary folder always cleaned up.
     let account = caller.account().map(str::to_owned);

@@ -119,11 +119,6 @@ pub enum TrainError {
     Capture(#[from] crate::io::capture::CaptureError),
 }
 
-/// Stage of iteration `it` (0-based).
-pub fn stage_of(it: u32, config: &TrainConfig) -> Stage {
-    Schedule::new(config).stage(it)
-}
-
 /// The most surfels densification may grow to: `surfels_per_mask_pixel` times the mean object
 /// area (mask pixels) of the training views, within `initial_surfels..=max_surfels`. Surfels
 /// beyond a few per pixel of the object add cost to every step and no detail the images hold (the

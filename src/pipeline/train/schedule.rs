@@ -105,11 +105,6 @@ impl Schedule {
         self.iterations
     }
 
-    /// The first PolarDR iteration.
-    pub fn polar_start(&self) -> u32 {
-        self.polar_start
-    }
-
     /// Stage of iteration `it` (0-based).
     pub fn stage(&self, it: u32) -> Stage {
         if it < self.material_start {
@@ -247,7 +242,6 @@ mod tests {
         assert_eq!(material.first(), Some(&geometry_end));
         assert_eq!(material.last(), Some(&299));
         assert_eq!((polar[0], polar.len()), (300, 700));
-        assert_eq!(s.polar_start(), 300);
         assert_eq!(s.final_stage(), Stage::Polar);
         assert_eq!(when(&s, |i| s.before(i).estimate_angles), [300]);
     }

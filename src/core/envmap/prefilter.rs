@@ -23,6 +23,9 @@ use super::{activate, activate_derivative, CubeMap, EnvMapError};
 /// for 56 maps) and one source block's rows (64 × 1.3 KiB) stay in the core's L2 cache.
 const OUTPUTS_PER_TASK: usize = 16;
 
+/// Output texels that [`Convolution::apply`] computes together, one SIMD lane each.
+const OUTPUT_GROUP: usize = 8;
+
 /// Shape and roughness schedule of the specular mip chain.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MipChainSpec {
@@ -174,17 +177,31 @@ impl Kernel {
     #[inline]
     pub fn eval(self, c: f64) -> f64 {
         match self {
-            Kernel::Ggx { alpha2 } => {
-                let cos2h = 0.5 * (1.0 + c);
-                let denom = cos2h * (alpha2 - 1.0) + 1.0;
-                alpha2 / (denom * denom) * c
-            }
-            Kernel::Cosine => c * std::f64::consts::FRAC_1_PI,
-            Kernel::FresnelCosine { ior } => {
-                c * (1.0 - fresnel_unpolarized(c, ior)) * std::f64::consts::FRAC_1_PI
-            }
+            Kernel::Ggx { alpha2 } => ggx_lobe(alpha2, c),
+            Kernel::Cosine => cosine_lobe(c),
+            Kernel::FresnelCosine { ior } => fresnel_cosine_lobe(ior, c),
         }
     }
+}
+
+/// [`Kernel::Ggx`] at cos(angle) = `c`.
+#[inline(always)]
+fn ggx_lobe(alpha2: f64, c: f64) -> f64 {
+    let cos2h = 0.5 * (1.0 + c);
+    let denom = cos2h * (alpha2 - 1.0) + 1.0;
+    alpha2 / (denom * denom) * c
+}
+
+/// [`Kernel::Cosine`] at cos(angle) = `c`.
+#[inline(always)]
+fn cosine_lobe(c: f64) -> f64 {
+    c * std::f64::consts::FRAC_1_PI
+}
+
+/// [`Kernel::FresnelCosine`] at cos(angle) = `c`.
+#[inline(always)]
+fn fresnel_cosine_lobe(ior: f64, c: f64) -> f64 {
+    c * (1.0 - fresnel_unpolarized(c, ior)) * std::f64::consts::FRAC_1_PI
 }
 
 /// Unpolarized Fresnel reflectance (R⊥ + R∥)/2 of light arriving from air at cos θ = `c` on a
@@ -233,29 +250,53 @@ impl Convolution {
     }
 
     /// out[o] = Σ_i k(dir_o · dir_i) · weight_i · src[i] over the texels of one grid, RGB.
+    ///
+    /// [`OUTPUT_GROUP`] neighbouring outputs walk the blocks together, one lane each: every source
+    /// texel is read once for the group and the kernel is evaluated for all lanes at once, which
+    /// vectorizes. A lane whose block is culled or whose texel is beyond the cutoff adds an exact
+    /// zero, so each output is the same sum in the same order as one output at a time (the test
+    /// `grouped_apply_equals_one_output_at_a_time_bit_for_bit`).
     fn apply(&self, grid: &CubeGrid, src: &[f64], weight: Option<&[f64]>) -> Vec<f64> {
-        let mut out = vec![0.0; grid.num_texels() * 3];
-        out.par_chunks_mut(3).enumerate().for_each(|(o, out)| {
-            let n = grid.dirs[o];
-            let mut acc = DVec3::ZERO;
-            for (block, &threshold) in grid.blocks.iter().zip(&self.thresholds) {
-                if n.dot(block.center) < threshold {
-                    continue;
-                }
-                let texels = &grid.block_texels[block.start..block.end];
-                let dirs = &grid.block_dirs[block.start..block.end];
-                for (&t, d) in texels.iter().zip(dirs) {
-                    let c = n.dot(*d);
-                    if c <= self.cos_cut {
-                        continue;
-                    }
-                    let t = t as usize;
-                    let w = self.kernel.eval(c) * weight.map_or(1.0, |w| w[t]);
-                    acc += w * rgb(src, t);
-                }
+        match self.kernel {
+            Kernel::Ggx { alpha2 } => self.apply_with(grid, src, weight, |c| ggx_lobe(alpha2, c)),
+            Kernel::Cosine => self.apply_with(grid, src, weight, cosine_lobe),
+            Kernel::FresnelCosine { ior } => {
+                self.apply_with(grid, src, weight, |c| fresnel_cosine_lobe(ior, c))
             }
-            out.copy_from_slice(&acc.to_array());
-        });
+        }
+    }
+
+    /// [`Self::apply`] with the kernel's function known to the compiler.
+    fn apply_with<K: Fn(f64) -> f64 + Sync>(
+        &self,
+        grid: &CubeGrid,
+        src: &[f64],
+        weight: Option<&[f64]>,
+        kernel: K,
+    ) -> Vec<f64> {
+        let avx2 = avx2_available();
+        let mut out = vec![0.0; grid.num_texels() * 3];
+        out.par_chunks_mut(3 * OUTPUT_GROUP)
+            .enumerate()
+            .for_each(|(group, out)| {
+                let group = OutputGroup {
+                    conv: self,
+                    grid,
+                    src,
+                    weight,
+                    kernel: &kernel,
+                    first: group * OUTPUT_GROUP,
+                };
+                #[cfg(target_arch = "x86_64")]
+                if avx2 {
+                    // SAFETY: `avx2_available()` returned true, so this CPU runs every
+                    // instruction the function is compiled with.
+                    unsafe { group.convolve_avx2(out) };
+                    return;
+                }
+                let _ = avx2;
+                group.convolve(out);
+            });
         out
     }
 
@@ -337,6 +378,90 @@ impl Convolution {
             v.iter_mut().for_each(|x| *x *= grid.solid_angle[t]);
         }
         out
+    }
+}
+
+/// Whether this CPU has AVX2 (the grouped convolution's wider path; both paths compute the same
+/// bits, as no operation is fused).
+fn avx2_available() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return is_x86_feature_detected!("avx2");
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
+/// [`OUTPUT_GROUP`] consecutive output texels of one [`Convolution::apply`].
+///
+/// Its loops index their arrays with the lane number on purpose (several arrays advance in step,
+/// one lane per iteration: the shape the vectorizer turns into one vector instruction).
+struct OutputGroup<'a, K> {
+    conv: &'a Convolution,
+    grid: &'a CubeGrid,
+    src: &'a [f64],
+    weight: Option<&'a [f64]>,
+    kernel: &'a K,
+    first: usize,
+}
+
+#[allow(clippy::needless_range_loop)]
+impl<K: Fn(f64) -> f64> OutputGroup<'_, K> {
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn convolve_avx2(&self, out: &mut [f64]) {
+        self.convolve(out)
+    }
+
+    /// Writes the group's outputs (RGB each) into `out`, one lane per output.
+    #[inline(always)]
+    fn convolve(&self, out: &mut [f64]) {
+        let (grid, conv) = (self.grid, self.conv);
+        let lanes = out.len() / 3;
+        // Output directions by component; lanes past the last texel repeat it and are not written.
+        let dir = |k: usize| grid.dirs[self.first + k.min(lanes - 1)];
+        let nx: [f64; OUTPUT_GROUP] = std::array::from_fn(|k| dir(k).x);
+        let ny: [f64; OUTPUT_GROUP] = std::array::from_fn(|k| dir(k).y);
+        let nz: [f64; OUTPUT_GROUP] = std::array::from_fn(|k| dir(k).z);
+        let mut acc = [[0.0f64; OUTPUT_GROUP]; 3];
+        for (block, &threshold) in grid.blocks.iter().zip(&conv.thresholds) {
+            let centre = block.center;
+            let mut live = [false; OUTPUT_GROUP];
+            for k in 0..OUTPUT_GROUP {
+                live[k] = nx[k] * centre.x + ny[k] * centre.y + nz[k] * centre.z >= threshold;
+            }
+            if !live.contains(&true) {
+                continue;
+            }
+            let texels = &grid.block_texels[block.start..block.end];
+            let dirs = &grid.block_dirs[block.start..block.end];
+            for (&t, d) in texels.iter().zip(dirs) {
+                let t = t as usize;
+                let texel_weight = self.weight.map_or(1.0, |w| w[t]);
+                // Lane loops of plain arithmetic, which LLVM turns into vector instructions.
+                let mut w = [0.0f64; OUTPUT_GROUP];
+                for k in 0..OUTPUT_GROUP {
+                    // The same products and sums as `DVec3::dot`.
+                    let c = nx[k] * d.x + ny[k] * d.y + nz[k] * d.z;
+                    let value = (self.kernel)(c) * texel_weight;
+                    // `&`, not `&&`: no branch in the lane loop.
+                    w[k] = if live[k] & (c > conv.cos_cut) {
+                        value
+                    } else {
+                        0.0
+                    };
+                }
+                let v = [self.src[t * 3], self.src[t * 3 + 1], self.src[t * 3 + 2]];
+                for channel in 0..3 {
+                    for k in 0..OUTPUT_GROUP {
+                        acc[channel][k] += w[k] * v[channel];
+                    }
+                }
+            }
+        }
+        for (k, out) in out.chunks_exact_mut(3).enumerate() {
+            for (channel, o) in out.iter_mut().enumerate() {
+                *o = acc[channel][k];
+            }
+        }
     }
 }
 
@@ -1115,6 +1240,60 @@ mod tests {
                 1e-5,
                 1e-6,
             );
+        }
+    }
+
+    /// The convolution one output texel at a time, skipping culled blocks and texels beyond the
+    /// cutoff: the definition [`Convolution::apply`] computes in groups.
+    fn apply_one_at_a_time(
+        conv: &Convolution,
+        grid: &CubeGrid,
+        src: &[f64],
+        weight: Option<&[f64]>,
+    ) -> Vec<f64> {
+        let mut out = vec![0.0; grid.num_texels() * 3];
+        for (o, out) in out.chunks_exact_mut(3).enumerate() {
+            let n = grid.dirs[o];
+            let mut acc = DVec3::ZERO;
+            for (block, &threshold) in grid.blocks.iter().zip(&conv.thresholds) {
+                if n.dot(block.center) < threshold {
+                    continue;
+                }
+                for i in block.start..block.end {
+                    let (t, d) = (grid.block_texels[i] as usize, grid.block_dirs[i]);
+                    let c = n.dot(d);
+                    if c > conv.cos_cut {
+                        acc += conv.kernel.eval(c) * weight.map_or(1.0, |w| w[t]) * rgb(src, t);
+                    }
+                }
+            }
+            out.copy_from_slice(&acc.to_array());
+        }
+        out
+    }
+
+    #[test]
+    fn grouped_apply_equals_one_output_at_a_time_bit_for_bit() {
+        let mut rng = ChaCha8Rng::seed_from_u64(11);
+        for fresnel in [false, true] {
+            let plan = PrefilterPlan::new(tiny_spec(fresnel)).unwrap();
+            let convs = plan.specular.iter().zip(&plan.grids);
+            let irradiance = plan.irradiance.iter().map(|c| (c, plan.irradiance_grid()));
+            // A 3×3 cube has 54 texels: the last group of outputs is ragged.
+            let odd_grid = CubeGrid::new(3);
+            let odd = Convolution::new(&odd_grid, Kernel::Ggx { alpha2: 0.3 }, 0.2, true);
+            let ragged = std::iter::once((&odd, &odd_grid));
+            for (conv, grid) in convs.chain(irradiance).chain(ragged) {
+                let src: Vec<f64> = (0..grid.num_texels() * 3)
+                    .map(|_| rng.random_range(-1.0..2.0))
+                    .collect();
+                for weight in [None, Some(&grid.solid_angle[..])] {
+                    let grouped = conv.apply(grid, &src, weight);
+                    let single = apply_one_at_a_time(conv, grid, &src, weight);
+                    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&grouped), bits(&single), "{:?}", conv.kernel);
+                }
+            }
         }
     }
 

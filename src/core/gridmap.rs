@@ -33,8 +33,12 @@ use glam::DVec3;
 use rayon::prelude::*;
 use thiserror::Error;
 
-use crate::core::envmap::grid::{rgb, Tap};
-use crate::core::envmap::{inverse_activate, texel_dir, CubeMap, EnvMapError, PreparedEnv};
+use crate::core::envmap::grid::Tap;
+use std::sync::Arc;
+
+use crate::core::envmap::{
+    inverse_activate, texel_dir, CubeMap, EnvMapError, PrefilterPlan, PreparedEnv,
+};
 use crate::core::kdtree::KdTree;
 use crate::core::mesh::bvh::Bvh;
 use crate::core::mesh::TriangleMesh;
@@ -172,11 +176,55 @@ pub fn render_probe(
     CubeMap { size, raw }
 }
 
+/// The probes' prefiltered maps, texel-major: in each buffer (a mip level or an irradiance map),
+/// texel `t` of probe `k` is RGB at `(t · K + k) · 3` for `K` probes. A blend reads one texel of
+/// every probe, so it reads one contiguous run instead of one scattered texel per probe; the gpu
+/// kernels take the same layout.
+#[derive(Clone, Debug)]
+pub struct ProbeTexels {
+    plan: Arc<PrefilterPlan>,
+    /// Per mip level, finest first.
+    pub levels: Vec<Vec<f64>>,
+    /// Per irradiance map.
+    pub irradiance: Vec<Vec<f64>>,
+}
+
+impl ProbeTexels {
+    /// Interleaves the maps of `probes`, all prefiltered with `plan`.
+    fn new(probes: &[PreparedEnv], plan: Arc<PrefilterPlan>) -> Self {
+        let interleave = |buffer: &dyn Fn(&PreparedEnv) -> &[f64]| -> Vec<f64> {
+            let texels = probes.first().map_or(0, |p| buffer(p).len() / 3);
+            let mut out = vec![0.0; texels * probes.len() * 3];
+            for (k, probe) in probes.iter().enumerate() {
+                for (t, rgb) in buffer(probe).chunks_exact(3).enumerate() {
+                    let at = (t * probes.len() + k) * 3;
+                    out[at..at + 3].copy_from_slice(rgb);
+                }
+            }
+            out
+        };
+        ProbeTexels {
+            levels: (0..plan.num_levels())
+                .map(|l| interleave(&|p: &PreparedEnv| &p.levels[l]))
+                .collect(),
+            irradiance: (0..plan.num_irradiance_maps())
+                .map(|m| interleave(&|p: &PreparedEnv| &p.irradiance[m]))
+                .collect(),
+            plan,
+        }
+    }
+
+    /// The plan the probes were prefiltered with.
+    pub fn plan(&self) -> &Arc<PrefilterPlan> {
+        &self.plan
+    }
+}
+
 /// Local light probes around a mesh, blended per surface point, over a global environment.
 #[derive(Clone, Debug)]
 pub struct GridMap {
     anchors: Vec<DVec3>,
-    locals: Vec<PreparedEnv>,
+    probes: ProbeTexels,
     bvh: Bvh,
     ray_offset: f64,
     pub(crate) global: PreparedEnv,
@@ -217,9 +265,10 @@ impl GridMap {
                 .collect()
         };
         let locals = PreparedEnv::new_batch(&cubes, global.plan().clone())?;
+        let probes = ProbeTexels::new(&locals, global.plan().clone());
         Ok(GridMap {
             anchors,
-            locals,
+            probes,
             bvh,
             ray_offset: RAY_OFFSET * (hi - lo).length(),
             global,
@@ -231,9 +280,9 @@ impl GridMap {
         &self.anchors
     }
 
-    /// The prefiltered local map of anchor `k`.
-    pub fn local(&self, k: usize) -> &PreparedEnv {
-        &self.locals[k]
+    /// The prefiltered local maps of the anchors, texel-major.
+    pub fn probe_texels(&self) -> &ProbeTexels {
+        &self.probes
     }
 
     /// The BVH of the mesh the probes were rendered against (the occlusion test's).
@@ -294,13 +343,14 @@ impl GridMap {
         &self,
         weights: &[f64],
         taps: &[Tap; 4],
-        buffer: impl Fn(&PreparedEnv) -> &[f64],
+        buffer: impl Fn(&ProbeTexels) -> &[f64],
     ) -> [DVec3; 4] {
+        let data = buffer(&self.probes);
+        let row = weights.len() * 3;
         let mut values = [DVec3::ZERO; 4];
-        for (local, &w) in self.locals.iter().zip(weights) {
-            let data = buffer(local);
-            for (v, &(t, _)) in values.iter_mut().zip(taps) {
-                *v += w * rgb(data, t);
+        for (v, &(t, _)) in values.iter_mut().zip(taps) {
+            for (rgb, &w) in data[t * row..(t + 1) * row].chunks_exact(3).zip(weights) {
+                *v += w * DVec3::new(rgb[0], rgb[1], rgb[2]);
             }
         }
         values
@@ -533,8 +583,14 @@ mod tests {
         let dir = DVec3::new(1.0, 0.05, 0.1);
         assert!(grid.occluded(x, dir));
         let w = grid.weights(x);
+        // Each probe prefiltered on its own, as a map of its own.
+        let material = SurfaceMaterial::from_surfels(&surfels).unwrap();
+        let local = |k: usize| {
+            let probe = render_probe(grid.anchors()[k], grid.bvh(), &material, &cube, &global);
+            PreparedEnv::new(&probe, global.plan().clone()).unwrap()
+        };
         let blend: DVec3 = (0..grid.anchors().len())
-            .map(|k| w[k] * grid.local(k).specular(dir, r))
+            .map(|k| w[k] * local(k).specular(dir, r))
             .sum();
         let got = grid.specular(x, dir, r);
         assert!(

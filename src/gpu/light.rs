@@ -124,21 +124,21 @@ impl HostProbes {
                 anchors.len()
             )));
         }
-        let k_count = anchors.len();
-        let mut values = vec![0.0f32; k_count * texel_values_per_probe];
-        for k in 0..k_count {
-            let local = grid.local(k);
-            if local.plan().spec != grid.global().plan().spec {
-                return Err(ShadingError::Gpu(
-                    "a GridMap probe is prefiltered with another plan than the global map".into(),
-                ));
-            }
-            // Texel-major: a texel's RGB of every probe together, as a blend reads them.
-            for (i, v) in texel_values(local).enumerate() {
-                let (texel, c) = (i / 3, i % 3);
-                values[(texel * k_count + k) * 3 + c] = v;
-            }
+        let probes = grid.probe_texels();
+        if probes.plan().spec != grid.global().plan().spec {
+            return Err(ShadingError::Gpu(
+                "the GridMap probes are prefiltered with another plan than the global map".into(),
+            ));
         }
+        // Texel-major like the host's probes (a texel's RGB of every probe together, as a blend
+        // reads them), over the levels and then the irradiance maps of one probe.
+        let values = probes
+            .levels
+            .iter()
+            .chain(&probes.irradiance)
+            .flatten()
+            .map(|&v| v as f32)
+            .collect();
         // Boxes rounded outwards, so f32 rounding cannot make a ray miss a box the f64 tree's
         // ray enters.
         let widen = |v: DVec3, sign: f64| {

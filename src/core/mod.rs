@@ -22,5 +22,6 @@ pub mod raster;
 pub mod render;
 pub mod resolution;
 pub mod shading;
+pub mod simd;
 pub mod step;
 pub mod surfels;

@@ -274,7 +274,7 @@ impl Convolution {
         weight: Option<&[f64]>,
         kernel: K,
     ) -> Vec<f64> {
-        let avx2 = avx2_available();
+        let avx2 = crate::core::simd::avx2_available();
         let mut out = vec![0.0; grid.num_texels() * 3];
         out.par_chunks_mut(3 * OUTPUT_GROUP)
             .enumerate()
@@ -379,15 +379,6 @@ impl Convolution {
         }
         out
     }
-}
-
-/// Whether this CPU has AVX2 (the grouped convolution's wider path; both paths compute the same
-/// bits, as no operation is fused).
-fn avx2_available() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return is_x86_feature_detected!("avx2");
-    #[cfg(not(target_arch = "x86_64"))]
-    false
 }
 
 /// [`OUTPUT_GROUP`] consecutive output texels of one [`Convolution::apply`].

@@ -14,6 +14,7 @@
 use rayon::prelude::*;
 
 use super::LossValue;
+use crate::core::simd::avx2_available;
 
 /// Side of the square Gaussian window.
 pub const SSIM_WINDOW: usize = 11;
@@ -51,19 +52,18 @@ fn separable_blur(
     fill_row: impl Fn(usize, usize, &mut [f64]) + Sync,
 ) -> Vec<f64> {
     let kernel = gaussian_kernel();
+    let avx2 = avx2_available();
     let stride = planes * width;
     let mut rows = vec![0.0; stride * height];
     rows.par_chunks_mut(stride).enumerate().for_each_init(
         || vec![0.0; width + 2 * RADIUS],
         |padded, (y, out)| {
             for (k, out) in out.chunks_exact_mut(width).enumerate() {
-                // Zero padding made explicit; accumulated tap by tap, which vectorizes.
+                // Zero padding made explicit.
                 fill_row(y, k, &mut padded[RADIUS..RADIUS + width]);
                 out.fill(0.0);
                 for (tap, &weight) in kernel.iter().enumerate() {
-                    for (o, &v) in out.iter_mut().zip(&padded[tap..tap + width]) {
-                        *o += weight * v;
-                    }
+                    add_scaled(avx2, out, weight, &padded[tap..tap + width]);
                 }
             }
         },
@@ -75,16 +75,35 @@ fn separable_blur(
             let lo = y.saturating_sub(RADIUS);
             let hi = (y + RADIUS).min(height - 1);
             for yi in lo..=hi {
-                let k = kernel[yi + RADIUS - y];
-                for (o, &v) in out_row
-                    .iter_mut()
-                    .zip(&rows[yi * stride..(yi + 1) * stride])
-                {
-                    *o += k * v;
-                }
+                let weight = kernel[yi + RADIUS - y];
+                add_scaled(avx2, out_row, weight, &rows[yi * stride..(yi + 1) * stride]);
             }
         });
     out
+}
+
+/// `out[i] += weight · src[i]`: the blur's one loop, on the AVX2 path where the CPU has it (the
+/// same bits either way, see [`crate::core::simd`]).
+fn add_scaled(avx2: bool, out: &mut [f64], weight: f64, src: &[f64]) {
+    #[inline(always)]
+    fn body(out: &mut [f64], weight: f64, src: &[f64]) {
+        for (o, &v) in out.iter_mut().zip(src) {
+            *o += weight * v;
+        }
+    }
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn body_avx2(out: &mut [f64], weight: f64, src: &[f64]) {
+        body(out, weight, src)
+    }
+    #[cfg(target_arch = "x86_64")]
+    if avx2 {
+        // SAFETY: `avx2` comes from `avx2_available()`, so this CPU runs every instruction
+        // `body_avx2` is compiled with.
+        return unsafe { body_avx2(out, weight, src) };
+    }
+    let _ = avx2;
+    body(out, weight, src)
 }
 
 /// Zero-padded "same" 2D Gaussian blur of one row-major `width × height` plane.
@@ -103,16 +122,18 @@ const MOMENTS: usize = 5;
 fn moments(pred: &[f64], target: &[f64], width: usize, height: usize, channels: usize) -> Vec<f64> {
     separable_blur(MOMENTS * channels, width, height, |y, k, row| {
         let (c, q) = (k / MOMENTS, k % MOMENTS);
-        for (x, r) in row.iter_mut().enumerate() {
-            let i = (y * width + x) * channels + c;
-            let (a, b) = (pred[i], target[i]);
-            *r = match q {
-                0 => a,
-                1 => b,
-                2 => a * a,
-                3 => b * b,
-                _ => a * b,
-            };
+        let at = |x: usize| (y * width + x) * channels + c;
+        let fill = |value: &dyn Fn(f64, f64) -> f64, row: &mut [f64]| {
+            for (x, r) in row.iter_mut().enumerate() {
+                *r = value(pred[at(x)], target[at(x)]);
+            }
+        };
+        match q {
+            0 => fill(&|a, _| a, row),
+            1 => fill(&|_, b| b, row),
+            2 => fill(&|a, _| a * a, row),
+            3 => fill(&|_, b| b * b, row),
+            _ => fill(&|a, b| a * b, row),
         }
     })
 }
@@ -206,6 +227,13 @@ const ADJOINTS: usize = 3;
 /// Mean SSIM over all pixels and channels, and its gradient with respect to `pred` (the target is
 /// treated as constant).
 ///
+/// Only the part of the image within [`CROP_MARGIN`] pixels of a nonzero value of either image is
+/// computed (the object, for α-premultiplied views on black): beyond `RADIUS` of every nonzero
+/// value the local moments are exactly zero, so SSIM is exactly 1 there, and beyond twice that
+/// the gradient is exactly zero. Inside the crop every value is the same sum in the same order as
+/// over the whole image (the zeros outside add nothing), so the gradient is bit-identical to the
+/// uncropped computation; the mean adds the pixels outside as exact ones.
+///
 /// # Panics
 /// If either image is not `width · height · channels` long.
 pub fn ssim(
@@ -216,8 +244,127 @@ pub fn ssim(
     channels: usize,
 ) -> LossValue {
     check_shapes(pred, target, width, height, channels);
-    let _span = tracing::trace_span!("ssim", width, height, channels).entered();
+    let _span = tracing::debug_span!("ssim", width, height, channels).entered();
     let inv_n = 1.0 / pred.len() as f64;
+    let Some(crop) = Crop::around_nonzero(pred, target, width, height, channels) else {
+        return LossValue {
+            value: 1.0,
+            grad: vec![0.0; pred.len()],
+        };
+    };
+    if crop.is_whole(width, height) {
+        let (sum, grad) = ssim_sum(pred, target, width, height, channels, inv_n);
+        return LossValue {
+            value: sum * inv_n,
+            grad,
+        };
+    }
+    let (pred_crop, target_crop) = (
+        crop.cut(pred, width, channels),
+        crop.cut(target, width, channels),
+    );
+    let (sum, grad_crop) = ssim_sum(
+        &pred_crop,
+        &target_crop,
+        crop.width,
+        crop.height,
+        channels,
+        inv_n,
+    );
+    let outside = (width * height - crop.width * crop.height) * channels;
+    let mut grad = vec![0.0; pred.len()];
+    let row = crop.width * channels;
+    for (y, values) in grad_crop.chunks_exact(row).enumerate() {
+        let start = ((crop.y0 + y) * width + crop.x0) * channels;
+        grad[start..start + row].copy_from_slice(values);
+    }
+    LossValue {
+        value: (sum + outside as f64) * inv_n,
+        grad,
+    }
+}
+
+/// Pixels of margin around the nonzero values that [`ssim`] computes: one window radius for the
+/// moments, one more for the blurred adjoints.
+const CROP_MARGIN: usize = 2 * RADIUS;
+
+/// A rectangle of an image: pixels `[x0, x0 + width) × [y0, y0 + height)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Crop {
+    x0: usize,
+    y0: usize,
+    width: usize,
+    height: usize,
+}
+
+impl Crop {
+    /// The bounding box of the pixels where either image is nonzero (in any channel), grown by
+    /// [`CROP_MARGIN`] and clipped to the image; `None` when both images are zero.
+    fn around_nonzero(
+        pred: &[f64],
+        target: &[f64],
+        width: usize,
+        height: usize,
+        channels: usize,
+    ) -> Option<Crop> {
+        let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
+        for y in 0..height {
+            let row = (y * width * channels)..((y + 1) * width * channels);
+            let nonzero = |j: &usize| pred[row.start + j] != 0.0 || target[row.start + j] != 0.0;
+            let Some(first) = (0..row.len()).find(nonzero) else {
+                continue;
+            };
+            let last = (0..row.len()).rev().find(nonzero).unwrap_or(first);
+            x0 = x0.min(first / channels);
+            x1 = x1.max(last / channels + 1);
+            y0 = y0.min(y);
+            y1 = y + 1;
+        }
+        (x0 < x1).then(|| {
+            let (x0, y0) = (
+                x0.saturating_sub(CROP_MARGIN),
+                y0.saturating_sub(CROP_MARGIN),
+            );
+            let (x1, y1) = (
+                (x1 + CROP_MARGIN).min(width),
+                (y1 + CROP_MARGIN).min(height),
+            );
+            Crop {
+                x0,
+                y0,
+                width: x1 - x0,
+                height: y1 - y0,
+            }
+        })
+    }
+
+    fn is_whole(&self, width: usize, height: usize) -> bool {
+        self.width == width && self.height == height
+    }
+
+    /// The crop's pixels of an interleaved `width`-wide image.
+    fn cut(&self, image: &[f64], width: usize, channels: usize) -> Vec<f64> {
+        let row = self.width * channels;
+        (self.y0..self.y0 + self.height)
+            .flat_map(|y| {
+                let start = (y * width + self.x0) * channels;
+                &image[start..start + row]
+            })
+            .copied()
+            .collect()
+    }
+}
+
+/// The sum of the SSIM map over all pixels and channels, and the gradient of `inv_n` times it
+/// with respect to `pred`.
+fn ssim_sum(
+    pred: &[f64],
+    target: &[f64],
+    width: usize,
+    height: usize,
+    channels: usize,
+    inv_n: f64,
+) -> (f64, Vec<f64>) {
     let m = moments(pred, target, width, height, channels);
     // Adjoints of the moments, row-interleaved like the blur output (plane ADJOINTS · c + q).
     let stride = ADJOINTS * channels * width;
@@ -264,8 +411,63 @@ pub fn ssim(
                     + target[i] * blurred[base + 2 * width];
             }
         });
-    LossValue {
-        value: row_sums.iter().sum::<f64>() * inv_n,
-        grad,
+    (row_sums.iter().sum::<f64>(), grad)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    /// An image that is zero outside `[x0, x1) × [y0, y1)` and random inside.
+    fn object(rng: &mut ChaCha8Rng, size: (usize, usize), rect: [usize; 4]) -> Vec<f64> {
+        let (w, h) = size;
+        let [x0, y0, x1, y1] = rect;
+        (0..w * h * 3)
+            .map(|i| {
+                let (x, y) = ((i / 3) % w, i / 3 / w);
+                let inside = (x0..x1).contains(&x) && (y0..y1).contains(&y);
+                if inside {
+                    rng.random_range(0.0..1.0)
+                } else {
+                    0.0
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_cropped_ssim_equals_the_whole_image_computation() {
+        let mut rng = ChaCha8Rng::seed_from_u64(5);
+        let (w, h) = (61, 47);
+        // In the middle, against an edge, in a corner, one pixel, and the prediction and the
+        // target covering different parts.
+        let cases = [
+            ([20, 15, 35, 30], [22, 14, 37, 29]),
+            ([0, 10, 12, 40], [0, 12, 10, 41]),
+            ([50, 38, 61, 47], [52, 40, 61, 47]),
+            ([30, 20, 31, 21], [30, 20, 31, 21]),
+            ([5, 5, 15, 15], [40, 30, 55, 44]),
+        ];
+        for (pred_rect, target_rect) in cases {
+            let pred = object(&mut rng, (w, h), pred_rect);
+            let target = object(&mut rng, (w, h), target_rect);
+            let cropped = ssim(&pred, &target, w, h, 3);
+            let inv_n = 1.0 / pred.len() as f64;
+            let (sum, grad) = ssim_sum(&pred, &target, w, h, 3, inv_n);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(
+                bits(&cropped.grad),
+                bits(&grad),
+                "{pred_rect:?} {target_rect:?}"
+            );
+            assert!((cropped.value - sum * inv_n).abs() < 1e-14);
+            assert!(cropped.value < 1.0);
+        }
+        let black = vec![0.0; w * h * 3];
+        let nothing = ssim(&black, &black, w, h, 3);
+        assert_eq!(nothing.value, 1.0);
+        assert!(nothing.grad.iter().all(|&g| g == 0.0));
     }
 }

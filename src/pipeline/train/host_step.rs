@@ -91,12 +91,19 @@ pub fn run(
             saved,
         })
     };
-    let image_grads = image_losses(g, shaded.as_ref(), &plan, target, weights, &mut losses);
-    gbuffer_losses(g, &plan, target, weights, &mut up, &mut losses);
+    let image_grads = {
+        let _span = tracing::debug_span!("image_losses").entered();
+        image_losses(g, shaded.as_ref(), &plan, target, weights, &mut losses)
+    };
+    {
+        let _span = tracing::debug_span!("gbuffer_losses").entered();
+        gbuffer_losses(g, &plan, target, weights, &mut up, &mut losses);
+    }
 
     // Chain the image gradients into the G-buffers.
     let (angle_grad, env_grad) = match &shaded {
         None => {
+            let _span = tracing::debug_span!("chain_unshaded").entered();
             chain_unshaded(g, &image_grads, plan.unpolarized_scale, &mut up);
             (0.0, None)
         }

@@ -231,17 +231,21 @@ pub fn normal_smoothness(normal: &[f64], s0: &[f64], width: usize, height: usize
     let mut grad = vec![0.0; normal.len()];
     let mut value = 0.0;
     let mut pair = |a: usize, b: usize| {
+        let d = [
+            normal[b * 3] - normal[a * 3],
+            normal[b * 3 + 1] - normal[a * 3 + 1],
+            normal[b * 3 + 2] - normal[a * 3 + 2],
+        ];
+        if d == [0.0; 3] {
+            // ‖0‖_ε = 0 and its gradient is 0 (the background's pairs): nothing to add.
+            return;
+        }
         // Edge weight from the captured image.
         let image_grad = (0..sc)
             .map(|c| (s0[b * sc + c] - s0[a * sc + c]).abs())
             .sum::<f64>()
             / sc as f64;
         let weight = (-image_grad).exp();
-        let d = [
-            normal[b * 3] - normal[a * 3],
-            normal[b * 3 + 1] - normal[a * 3 + 1],
-            normal[b * 3 + 2] - normal[a * 3 + 2],
-        ];
         let norm = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + NORMAL_SMOOTH_EPS).sqrt();
         value += weight * (norm - sqrt_eps);
         let scale = weight * inv_n / norm;

@@ -5,12 +5,16 @@
 //! a mean, so its gradient scales as 1 / (number of terms); the trainer multiplies values and
 //! gradients by the weights of [`LossWeights`] and sums them.
 //!
-//! Threading: [`ssim()`] (and so [`photometric`]) uses rayon over channels and rows; the other losses
-//! are single-threaded linear passes.
+//! Threading: [`ssim()`] (and so [`photometric`]) uses rayon over channels and rows; [`l1`],
+//! [`mask_mse`] and [`depth_normal_consistency`] over fixed chunks of [`CHUNK`] elements whose
+//! partial sums are added in chunk order, so every value is the same whatever the thread count;
+//! [`normal_smoothness`] (pairs of neighbours) is a single-threaded pass.
 
 pub mod ssim;
 
 pub use ssim::{ssim, ssim_map};
+
+use rayon::prelude::*;
 
 use crate::core::config::TrainConfig;
 
@@ -83,6 +87,28 @@ fn weight_channels(len: usize, weight: Option<&[f64]>, what: &str) -> usize {
     }
 }
 
+/// Elements per parallel chunk of the linear losses.
+const CHUNK: usize = 4096;
+
+/// Fills `grad` chunk by chunk in parallel: `term(i, &mut grad[i])` writes element `i`'s gradient
+/// and returns its term of the loss; the terms are summed within a chunk in order, then the
+/// chunks' sums in chunk order (a result independent of the thread count).
+fn chunked_sum(grad: &mut [f64], term: impl Fn(usize, &mut f64) -> f64 + Sync) -> f64 {
+    let sums: Vec<f64> = grad
+        .par_chunks_mut(CHUNK)
+        .enumerate()
+        .map(|(chunk, grad)| {
+            let first = chunk * CHUNK;
+            let mut sum = 0.0;
+            for (j, g) in grad.iter_mut().enumerate() {
+                sum += term(first + j, g);
+            }
+            sum
+        })
+        .collect();
+    sums.iter().sum()
+}
+
 /// Mean absolute error `Σ w·|p − t| / n` over all `n` elements, where the optional `weight_mask`
 /// holds one weight per element or one per pixel (broadcast over channels). The divisor is the
 /// element count, not the weight sum, as `(|p − t| · m).mean()` in the reference code. The
@@ -98,26 +124,21 @@ pub fn l1(pred: &[f64], target: &[f64], weight_mask: Option<&[f64]>) -> LossValu
     );
     let channels = weight_channels(pred.len(), weight_mask, "l1");
     let inv_n = 1.0 / pred.len().max(1) as f64;
-    let mut value = 0.0;
-    let grad = pred
-        .iter()
-        .zip(target)
-        .enumerate()
-        .map(|(i, (&p, &t))| {
-            let w = element_weight(weight_mask, i, channels);
-            let d = p - t;
-            value += w * d.abs();
-            // f64::signum(0.0) is 1, so the subgradient 0 at equality is explicit.
-            let sign = if d > 0.0 {
-                1.0
-            } else if d < 0.0 {
-                -1.0
-            } else {
-                0.0
-            };
-            w * sign * inv_n
-        })
-        .collect();
+    let mut grad = vec![0.0; pred.len()];
+    let value = chunked_sum(&mut grad, |i, g| {
+        let w = element_weight(weight_mask, i, channels);
+        let d = pred[i] - target[i];
+        // f64::signum(0.0) is 1, so the subgradient 0 at equality is explicit.
+        let sign = if d > 0.0 {
+            1.0
+        } else if d < 0.0 {
+            -1.0
+        } else {
+            0.0
+        };
+        *g = w * sign * inv_n;
+        w * d.abs()
+    });
     LossValue {
         value: value * inv_n,
         grad,
@@ -182,16 +203,12 @@ pub fn mask_mse(alpha: &[f64], mask: &[f64]) -> LossValue {
         "mask_mse: alpha and mask lengths differ"
     );
     let inv_n = 1.0 / alpha.len().max(1) as f64;
-    let mut value = 0.0;
-    let grad = alpha
-        .iter()
-        .zip(mask)
-        .map(|(&a, &m)| {
-            let d = a - m;
-            value += d * d;
-            2.0 * d * inv_n
-        })
-        .collect();
+    let mut grad = vec![0.0; alpha.len()];
+    let value = chunked_sum(&mut grad, |i, g| {
+        let d = alpha[i] - mask[i];
+        *g = 2.0 * d * inv_n;
+        d * d
+    });
     LossValue {
         value: value * inv_n,
         grad,
@@ -307,12 +324,11 @@ pub fn depth_normal_consistency(
         );
     }
     let norm3 = |v: &[f64]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    let valid: Vec<bool> = normal
-        .chunks_exact(3)
-        .zip(depth_normal.chunks_exact(3))
-        .map(|(n, d)| norm3(n) > MIN_NORMAL_NORM && norm3(d) > MIN_NORMAL_NORM)
-        .collect();
-    let count = valid.iter().filter(|&&v| v).count();
+    let valid = |p: usize| {
+        norm3(&normal[p * 3..p * 3 + 3]) > MIN_NORMAL_NORM
+            && norm3(&depth_normal[p * 3..p * 3 + 3]) > MIN_NORMAL_NORM
+    };
+    let count = (0..pixels).into_par_iter().filter(|&p| valid(p)).count();
     let mut grad_normal = vec![0.0; normal.len()];
     let mut grad_depth_normal = vec![0.0; normal.len()];
     if count == 0 {
@@ -323,21 +339,32 @@ pub fn depth_normal_consistency(
         };
     }
     let inv_n = 1.0 / count as f64;
-    let mut value = 0.0;
-    for p in (0..pixels).filter(|&p| valid[p]) {
-        let w = weight.map_or(1.0, |w| w[p]);
-        let n = &normal[p * 3..p * 3 + 3];
-        let nd = &depth_normal[p * 3..p * 3 + 3];
-        let len = norm3(n);
-        let unit = [n[0] / len, n[1] / len, n[2] / len];
-        let dot = unit[0] * nd[0] + unit[1] * nd[1] + unit[2] * nd[2];
-        value += w * (1.0 - dot);
-        for k in 0..3 {
-            // ∂(N̂·v)/∂N = (v − N̂ (N̂·v)) / ‖N‖.
-            grad_normal[p * 3 + k] = -w * inv_n * (nd[k] - unit[k] * dot) / len;
-            grad_depth_normal[p * 3 + k] = -w * inv_n * unit[k];
-        }
-    }
+    // Fixed chunks of pixels, their sums added in chunk order (see the module's threading note).
+    let sums: Vec<f64> = grad_normal
+        .par_chunks_mut(3 * CHUNK)
+        .zip(grad_depth_normal.par_chunks_mut(3 * CHUNK))
+        .enumerate()
+        .map(|(chunk, (grad_n, grad_d))| {
+            let mut sum = 0.0;
+            for j in (0..grad_n.len() / 3).filter(|&j| valid(chunk * CHUNK + j)) {
+                let p = chunk * CHUNK + j;
+                let w = weight.map_or(1.0, |w| w[p]);
+                let n = &normal[p * 3..p * 3 + 3];
+                let nd = &depth_normal[p * 3..p * 3 + 3];
+                let len = norm3(n);
+                let unit = [n[0] / len, n[1] / len, n[2] / len];
+                let dot = unit[0] * nd[0] + unit[1] * nd[1] + unit[2] * nd[2];
+                sum += w * (1.0 - dot);
+                for k in 0..3 {
+                    // ∂(N̂·v)/∂N = (v − N̂ (N̂·v)) / ‖N‖.
+                    grad_n[j * 3 + k] = -w * inv_n * (nd[k] - unit[k] * dot) / len;
+                    grad_d[j * 3 + k] = -w * inv_n * unit[k];
+                }
+            }
+            sum
+        })
+        .collect();
+    let value: f64 = sums.iter().sum();
     DepthNormalLossValue {
         value: value * inv_n,
         grad_normal,

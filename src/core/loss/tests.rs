@@ -389,3 +389,66 @@ fn ssim_timing_256() {
     let per = start.elapsed().as_secs_f64() / runs as f64;
     println!("ssim 256x256x3 forward+backward: {:.2} ms", per * 1e3);
 }
+
+/// `f` on a rayon pool of `threads` threads.
+fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(f)
+}
+
+#[test]
+fn chunked_losses_match_their_serial_definitions_for_any_thread_count() {
+    let mut rng = ChaCha8Rng::seed_from_u64(9);
+    // Several chunks and a ragged last one.
+    let n = 3 * CHUNK + 123;
+    let pred = random_vec(&mut rng, n, -1.0, 2.0);
+    let target = random_vec(&mut rng, n, 0.0, 1.0);
+    let l = l1(&pred, &target, None);
+    let serial = pred
+        .iter()
+        .zip(&target)
+        .map(|(p, t)| (p - t).abs())
+        .sum::<f64>()
+        / n as f64;
+    assert!((l.value - serial).abs() < 1e-12);
+    for ((g, p), t) in l.grad.iter().zip(&pred).zip(&target) {
+        assert_eq!(*g, (p - t).signum() / n as f64);
+    }
+    let mask = mask_mse(&pred, &target);
+    let serial = pred
+        .iter()
+        .zip(&target)
+        .map(|(p, t)| (p - t) * (p - t))
+        .sum::<f64>()
+        / n as f64;
+    assert!((mask.value - serial).abs() < 1e-12);
+    // Depth–normal consistency with a third of the pixels empty (excluded from the mean).
+    let pixels = 2 * CHUNK + 77;
+    let mut normal = random_vec(&mut rng, pixels * 3, -1.0, 1.0);
+    let depth_normal = random_vec(&mut rng, pixels * 3, -1.0, 1.0);
+    normal.chunks_exact_mut(9).for_each(|c| c[..3].fill(0.0));
+    let dn = depth_normal_consistency(&normal, &depth_normal, None);
+    let terms: Vec<f64> = normal
+        .chunks_exact(3)
+        .zip(depth_normal.chunks_exact(3))
+        .filter(|(n, _)| n.iter().any(|&v| v != 0.0))
+        .map(|(n, d)| {
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            1.0 - (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / len
+        })
+        .collect();
+    let serial = terms.iter().sum::<f64>() / terms.len() as f64;
+    assert!((dn.value - serial).abs() < 1e-12);
+    // Bit for bit the same on one thread and on three.
+    let run = || {
+        (
+            l1(&pred, &target, None),
+            mask_mse(&pred, &target),
+            depth_normal_consistency(&normal, &depth_normal, None),
+        )
+    };
+    assert_eq!(on_threads(1, run), on_threads(3, run));
+}

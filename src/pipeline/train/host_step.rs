@@ -11,6 +11,7 @@
 use std::collections::BTreeMap;
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::engine::Backend;
@@ -160,18 +161,18 @@ struct ImageGrads {
 /// S0, or the intensity behind the view's polarizer angle θ.
 fn predict(g: &GBuffers, shaded: Option<&Shaded>, plan: &StepPlan) -> Vec<f64> {
     let pixels = g.width * g.height;
+    let polarizer = plan.theta.map(|t| ((2.0 * t).cos(), (2.0 * t).sin()));
     let mut pred = vec![0.0; pixels * 3];
-    for p in 0..pixels {
-        let a = g.alpha[p];
+    pred.par_chunks_mut(3).enumerate().for_each(|(p, out)| {
         let colour = match shaded {
             None => DVec3::from_array(g.albedo[p]) * plan.unpolarized_scale,
-            Some(Shaded { image: s, .. }) => match plan.theta {
+            Some(Shaded { image: s, .. }) => match polarizer {
                 None => s.s0[p] * plan.unpolarized_scale,
-                Some(t) => 0.5 * (s.s0[p] + s.s1[p] * (2.0 * t).cos() + s.s2[p] * (2.0 * t).sin()),
+                Some((c, sn)) => 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn),
             },
         };
-        pred[p * 3..p * 3 + 3].copy_from_slice(&(colour * a).to_array());
-    }
+        out.copy_from_slice(&(colour * g.alpha[p]).to_array());
+    });
     pred
 }
 
@@ -270,13 +271,15 @@ fn gbuffer_losses(
 /// The prediction's gradient into the albedo and opacity buffers (geometry stage: colour =
 /// albedo × scale, premultiplied by α).
 fn chain_unshaded(g: &GBuffers, image: &ImageGrads, scale: f64, up: &mut GBufferGrads) {
-    for p in 0..g.width * g.height {
-        let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
-        let albedo = DVec3::from_array(g.albedo[p]);
-        let d_albedo = DVec3::from_array(up.albedo[p]) + gp * (scale * g.alpha[p]);
-        up.albedo[p] = d_albedo.to_array();
-        up.alpha[p] += scale * albedo.dot(gp);
-    }
+    (up.albedo.par_iter_mut(), up.alpha.par_iter_mut())
+        .into_par_iter()
+        .enumerate()
+        .for_each(|(p, (albedo_grad, alpha_grad))| {
+            let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
+            let albedo = DVec3::from_array(g.albedo[p]);
+            *albedo_grad = (DVec3::from_array(*albedo_grad) + gp * (scale * g.alpha[p])).to_array();
+            *alpha_grad += scale * albedo.dot(gp);
+        });
 }
 
 /// The image gradients through the Stokes images into the opacity and, by PolarDR's backward
@@ -294,36 +297,53 @@ fn chain_shaded(
     up: &mut GBufferGrads,
 ) -> Result<(f64, EnvGrad), TrainError> {
     let (pixels, s) = (g.width * g.height, &shaded.image);
-    let mut angle_grad = 0.0;
+    let polarizer = plan.theta.map(|t| ((2.0 * t).cos(), (2.0 * t).sin()));
     let mut d0 = vec![DVec3::ZERO; pixels];
     let mut d1 = vec![DVec3::ZERO; pixels];
     let mut d2 = vec![DVec3::ZERO; pixels];
-    for p in 0..pixels {
-        let a = g.alpha[p];
-        let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
-        match plan.theta {
-            None => {
-                d0[p] = gp * (a * plan.unpolarized_scale);
-                up.alpha[p] += plan.unpolarized_scale * s.s0[p].dot(gp);
+    // Per pixel: the Stokes images' upstream and the opacity's; the angle's gradient is summed
+    // over fixed chunks of pixels in chunk order (the same whatever the thread count).
+    const CHUNK: usize = 4096;
+    let angle_sums: Vec<f64> = (
+        d0.par_chunks_mut(CHUNK),
+        d1.par_chunks_mut(CHUNK),
+        d2.par_chunks_mut(CHUNK),
+        up.alpha.par_chunks_mut(CHUNK),
+    )
+        .into_par_iter()
+        .enumerate()
+        .map(|(chunk, (d0, d1, d2, alpha_grad))| {
+            let mut angle_grad = 0.0;
+            for j in 0..d0.len() {
+                let p = chunk * CHUNK + j;
+                let a = g.alpha[p];
+                let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
+                match polarizer {
+                    None => {
+                        d0[j] = gp * (a * plan.unpolarized_scale);
+                        alpha_grad[j] += plan.unpolarized_scale * s.s0[p].dot(gp);
+                    }
+                    Some((c, sn)) => {
+                        d0[j] = gp * (0.5 * a);
+                        d1[j] = gp * (0.5 * a * c);
+                        d2[j] = gp * (0.5 * a * sn);
+                        let intensity = 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn);
+                        alpha_grad[j] += intensity.dot(gp);
+                        angle_grad += a * (s.s2[p] * c - s.s1[p] * sn).dot(gp);
+                    }
+                }
+                if let Some((g1, g2)) = &image.s12 {
+                    let g1 = DVec3::from_slice(&g1[p * 3..p * 3 + 3]);
+                    let g2 = DVec3::from_slice(&g2[p * 3..p * 3 + 3]);
+                    d1[j] += g1 * a;
+                    d2[j] += g2 * a;
+                    alpha_grad[j] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
+                }
             }
-            Some(t) => {
-                let (c, sn) = ((2.0 * t).cos(), (2.0 * t).sin());
-                d0[p] = gp * (0.5 * a);
-                d1[p] = gp * (0.5 * a * c);
-                d2[p] = gp * (0.5 * a * sn);
-                let intensity = 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn);
-                up.alpha[p] += intensity.dot(gp);
-                angle_grad += a * (s.s2[p] * c - s.s1[p] * sn).dot(gp);
-            }
-        }
-        if let Some((g1, g2)) = &image.s12 {
-            let g1 = DVec3::from_slice(&g1[p * 3..p * 3 + 3]);
-            let g2 = DVec3::from_slice(&g2[p * 3..p * 3 + 3]);
-            d1[p] += g1 * a;
-            d2[p] += g2 * a;
-            up.alpha[p] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
-        }
-    }
+            angle_grad
+        })
+        .collect();
+    let angle_grad = angle_sums.iter().sum();
     let (gb, env_grad) = inputs.backend.shade_backward_saved(
         camera,
         &shaded.inputs.buffers(g),
@@ -336,12 +356,20 @@ fn chain_shaded(
             s2: &d2,
         },
     )?;
-    for p in 0..pixels {
-        let add3 = |dst: &mut [f64; 3], v: DVec3| *dst = (DVec3::from_array(*dst) + v).to_array();
-        add3(&mut up.normal[p], gb.normal[p]);
-        add3(&mut up.albedo[p], gb.albedo[p]);
-        up.roughness[p] += gb.roughness[p];
-        up.ior[p] += gb.ior[p];
-    }
+    let add3 = |dst: &mut [f64; 3], v: DVec3| *dst = (DVec3::from_array(*dst) + v).to_array();
+    (
+        up.normal.par_iter_mut(),
+        up.albedo.par_iter_mut(),
+        up.roughness.par_iter_mut(),
+        up.ior.par_iter_mut(),
+    )
+        .into_par_iter()
+        .enumerate()
+        .for_each(|(p, (normal, albedo, roughness, ior))| {
+            add3(normal, gb.normal[p]);
+            add3(albedo, gb.albedo[p]);
+            *roughness += gb.roughness[p];
+            *ior += gb.ior[p];
+        });
     Ok((angle_grad, env_grad))
 }

@@ -655,14 +655,17 @@ pub fn shade_image_saved(
         .collect();
     let saved = SavedShading { forwards, slot };
     let out = |p: usize| saved.get(p).map_or_else(PixelStokes::default, |f| f.out);
+    let plane = |part: fn(&PixelStokes) -> DVec3| -> Vec<DVec3> {
+        (0..pixels).into_par_iter().map(|p| part(&out(p))).collect()
+    };
     let image = StokesImage {
         width: camera.width as usize,
         height: camera.height as usize,
-        s0: (0..pixels).map(|p| out(p).s0).collect(),
-        s1: (0..pixels).map(|p| out(p).s1).collect(),
-        s2: (0..pixels).map(|p| out(p).s2).collect(),
-        diffuse: (0..pixels).map(|p| out(p).diffuse).collect(),
-        specular: (0..pixels).map(|p| out(p).specular).collect(),
+        s0: plane(|o| o.s0),
+        s1: plane(|o| o.s1),
+        s2: plane(|o| o.s2),
+        diffuse: plane(|o| o.diffuse),
+        specular: plane(|o| o.specular),
     };
     Ok((image, saved))
 }
@@ -747,10 +750,10 @@ fn image_backward(
         env_grad.add(g);
     }
     let out = GBufferGrad {
-        normal: grads.iter().map(|g| g.normal).collect(),
-        albedo: grads.iter().map(|g| g.albedo).collect(),
-        roughness: grads.iter().map(|g| g.roughness).collect(),
-        ior: grads.iter().map(|g| g.ior).collect(),
+        normal: grads.par_iter().map(|g| g.normal).collect(),
+        albedo: grads.par_iter().map(|g| g.albedo).collect(),
+        roughness: grads.par_iter().map(|g| g.roughness).collect(),
+        ior: grads.par_iter().map(|g| g.ior).collect(),
     };
     Ok((out, env_grad))
 }

@@ -226,10 +226,17 @@ pub fn status_code_name(status: StatusCode) -> &'static str {
 const MAX_REJECTION_TEXT: usize = 1000;
 
 /// Middleware: an error answer that is not JSON (axum's own rejections are plain text) is
-/// rewritten as `{"error": {"code", "message"}}`, its text as the message.
+/// rewritten as `{"error": {"code", "message"}}`, its text as the message. A 413 also says
+/// `Connection: close`: the rest of its request's body was never read, so the connection cannot
+/// carry another request, and a client that reused it would see it closed under its next one.
 pub async fn json_errors(request: Request, next: Next) -> Response {
-    let response = next.run(request).await;
+    let mut response = next.run(request).await;
     let status = response.status();
+    if status == StatusCode::PAYLOAD_TOO_LARGE {
+        response
+            .headers_mut()
+            .insert(header::CONNECTION, HeaderValue::from_static("close"));
+    }
     let is_json = response
         .headers()
         .get(header::CONTENT_TYPE)

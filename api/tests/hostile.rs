@@ -460,6 +460,8 @@ async fn every_error_is_json_and_every_answer_carries_security_headers() {
         .send()
         .await
         .unwrap();
+    // The unread rest of the body ends the connection; the client must not reuse it.
+    assert_eq!(huge_job.headers()["connection"], "close");
     json_error(huge_job, 413, "payload_too_large").await;
     let long_entry = tar_of(&[(format!("{}.exr", "n".repeat(300)), vec![1, 2, 3])]);
     let (status, body) = api.upload(long_entry).await;

@@ -8,7 +8,7 @@
 //! inverse-distance-weighted albedo of the 3 surfel centres nearest x, E_d the global irradiance);
 //! a ray that misses carries the global map's own texel (the activated base map, i.e. its bilinear
 //! lookup at the texel centre). The local maps are prefiltered exactly like the global one (same
-//! plan, [`PreparedEnv::new_batch`]).
+//! plan, [`PreparedEnv::new_batch`]) and kept texel-major ([`ProbeTexels`]).
 //!
 //! Shading at a surface point x blends the probes with weights w_k ∝ 1/(‖x − a_k‖² + 1e-6):
 //! diffuse irradiance Σ_k w_k E_d,k(n) everywhere; specular Σ_k w_k E_k(ω_r, r) where the mirror
@@ -29,13 +29,13 @@
 //! Threading: probe rendering is parallel over (anchor, texel row) with rayon, prefiltering over
 //! output texels; lookups are read-only and shared by the shader's threads.
 
+use std::sync::Arc;
+
 use glam::DVec3;
 use rayon::prelude::*;
 use thiserror::Error;
 
 use crate::core::envmap::grid::Tap;
-use std::sync::Arc;
-
 use crate::core::envmap::{
     inverse_activate, texel_dir, CubeMap, EnvMapError, PrefilterPlan, PreparedEnv,
 };

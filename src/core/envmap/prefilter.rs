@@ -254,8 +254,8 @@ impl Convolution {
     /// [`OUTPUT_GROUP`] neighbouring outputs walk the blocks together, one lane each: every source
     /// texel is read once for the group and the kernel is evaluated for all lanes at once, which
     /// vectorizes. A lane whose block is culled or whose texel is beyond the cutoff adds an exact
-    /// zero, so each output is the same sum in the same order as one output at a time (the test
-    /// `grouped_apply_equals_one_output_at_a_time_bit_for_bit`).
+    /// zero (the sources are finite), so each output is the same sum in the same order as one
+    /// output at a time (the test `grouped_apply_equals_one_output_at_a_time_bit_for_bit`).
     fn apply(&self, grid: &CubeGrid, src: &[f64], weight: Option<&[f64]>) -> Vec<f64> {
         match self.kernel {
             Kernel::Ggx { alpha2 } => self.apply_with(grid, src, weight, |c| ggx_lobe(alpha2, c)),
@@ -294,7 +294,7 @@ impl Convolution {
                     unsafe { group.convolve_avx2(out) };
                     return;
                 }
-                let _ = avx2;
+                let _ = avx2; // (read only on x86-64)
                 group.convolve(out);
             });
         out

@@ -102,7 +102,7 @@ fn add_scaled(avx2: bool, out: &mut [f64], weight: f64, src: &[f64]) {
         // `body_avx2` is compiled with.
         return unsafe { body_avx2(out, weight, src) };
     }
-    let _ = avx2;
+    let _ = avx2; // (read only on x86-64)
     body(out, weight, src)
 }
 

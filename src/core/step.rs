@@ -75,6 +75,11 @@ pub struct LossSums {
 }
 
 impl StepPlan {
+    /// (cos 2θ, sin 2θ) of the polarizer angle the prediction is seen through, if any.
+    pub fn polarizer_cos_sin(&self) -> Option<(f64, f64)> {
+        self.theta.map(|t| ((2.0 * t).cos(), (2.0 * t).sin()))
+    }
+
     pub fn new(
         target: &ViewTarget,
         stage: Stage,

@@ -87,26 +87,35 @@ fn weight_channels(len: usize, weight: Option<&[f64]>, what: &str) -> usize {
     }
 }
 
-/// Elements per parallel chunk of the linear losses.
-const CHUNK: usize = 4096;
+/// Elements (or pixels) per chunk of a parallel pass whose sums must not depend on the thread
+/// count ([`sum_in_chunk_order`]).
+pub const CHUNK: usize = 4096;
 
-/// Fills `grad` chunk by chunk in parallel: `term(i, &mut grad[i])` writes element `i`'s gradient
-/// and returns its term of the loss; the terms are summed within a chunk in order, then the
-/// chunks' sums in chunk order (a result independent of the thread count).
-fn chunked_sum(grad: &mut [f64], term: impl Fn(usize, &mut f64) -> f64 + Sync) -> f64 {
-    let sums: Vec<f64> = grad
-        .par_chunks_mut(CHUNK)
+/// Runs `chunk_sum(index, chunk)` on the chunks of one pass in parallel and adds their results in
+/// chunk order: with chunks of a fixed size, the same value whatever the thread count.
+pub fn sum_in_chunk_order<I: IndexedParallelIterator>(
+    chunks: I,
+    chunk_sum: impl Fn(usize, I::Item) -> f64 + Sync + Send,
+) -> f64 {
+    let sums: Vec<f64> = chunks
         .enumerate()
-        .map(|(chunk, grad)| {
-            let first = chunk * CHUNK;
-            let mut sum = 0.0;
-            for (j, g) in grad.iter_mut().enumerate() {
-                sum += term(first + j, g);
-            }
-            sum
-        })
+        .map(|(index, chunk)| chunk_sum(index, chunk))
         .collect();
     sums.iter().sum()
+}
+
+/// Fills `grad` in parallel chunks of [`CHUNK`]: `term(i, &mut grad[i])` writes element `i`'s
+/// gradient and returns its term of the loss, summed in order within a chunk and across chunks
+/// ([`sum_in_chunk_order`]).
+fn chunked_sum(grad: &mut [f64], term: impl Fn(usize, &mut f64) -> f64 + Sync) -> f64 {
+    sum_in_chunk_order(grad.par_chunks_mut(CHUNK), |chunk, grad| {
+        let first = chunk * CHUNK;
+        let mut sum = 0.0;
+        for (j, g) in grad.iter_mut().enumerate() {
+            sum += term(first + j, g);
+        }
+        sum
+    })
 }
 
 /// Mean absolute error `Σ w·|p − t| / n` over all `n` elements, where the optional `weight_mask`
@@ -339,32 +348,28 @@ pub fn depth_normal_consistency(
         };
     }
     let inv_n = 1.0 / count as f64;
-    // Fixed chunks of pixels, their sums added in chunk order (see the module's threading note).
-    let sums: Vec<f64> = grad_normal
+    let chunks = grad_normal
         .par_chunks_mut(3 * CHUNK)
-        .zip(grad_depth_normal.par_chunks_mut(3 * CHUNK))
-        .enumerate()
-        .map(|(chunk, (grad_n, grad_d))| {
-            let mut sum = 0.0;
-            for j in (0..grad_n.len() / 3).filter(|&j| valid(chunk * CHUNK + j)) {
-                let p = chunk * CHUNK + j;
-                let w = weight.map_or(1.0, |w| w[p]);
-                let n = &normal[p * 3..p * 3 + 3];
-                let nd = &depth_normal[p * 3..p * 3 + 3];
-                let len = norm3(n);
-                let unit = [n[0] / len, n[1] / len, n[2] / len];
-                let dot = unit[0] * nd[0] + unit[1] * nd[1] + unit[2] * nd[2];
-                sum += w * (1.0 - dot);
-                for k in 0..3 {
-                    // ∂(N̂·v)/∂N = (v − N̂ (N̂·v)) / ‖N‖.
-                    grad_n[j * 3 + k] = -w * inv_n * (nd[k] - unit[k] * dot) / len;
-                    grad_d[j * 3 + k] = -w * inv_n * unit[k];
-                }
+        .zip(grad_depth_normal.par_chunks_mut(3 * CHUNK));
+    let value = sum_in_chunk_order(chunks, |chunk, (grad_n, grad_d)| {
+        let mut sum = 0.0;
+        for j in (0..grad_n.len() / 3).filter(|&j| valid(chunk * CHUNK + j)) {
+            let p = chunk * CHUNK + j;
+            let w = weight.map_or(1.0, |w| w[p]);
+            let n = &normal[p * 3..p * 3 + 3];
+            let nd = &depth_normal[p * 3..p * 3 + 3];
+            let len = norm3(n);
+            let unit = [n[0] / len, n[1] / len, n[2] / len];
+            let dot = unit[0] * nd[0] + unit[1] * nd[1] + unit[2] * nd[2];
+            sum += w * (1.0 - dot);
+            for k in 0..3 {
+                // ∂(N̂·v)/∂N = (v − N̂ (N̂·v)) / ‖N‖.
+                grad_n[j * 3 + k] = -w * inv_n * (nd[k] - unit[k] * dot) / len;
+                grad_d[j * 3 + k] = -w * inv_n * unit[k];
             }
-            sum
-        })
-        .collect();
-    let value: f64 = sums.iter().sum();
+        }
+        sum
+    });
     DepthNormalLossValue {
         value: value * inv_n,
         grad_normal,

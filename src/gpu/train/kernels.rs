@@ -128,9 +128,7 @@ impl TrainParamsGpu {
     ) -> Self {
         let (camera, plan) = (step.camera, step.plan);
         let when = |on: bool, value: f64| if on { value as f32 } else { 0.0 };
-        let (cos2, sin2) = plan
-            .theta
-            .map_or((1.0, 0.0), |t| ((2.0 * t).cos(), (2.0 * t).sin()));
+        let (cos2, sin2) = plan.polarizer_cos_sin().unwrap_or((1.0, 0.0));
         let r = camera.rotation_opencv();
         let window = crate::core::loss::ssim::gaussian_kernel();
         TrainParamsGpu {

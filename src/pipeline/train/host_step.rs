@@ -18,7 +18,7 @@ use crate::core::engine::Backend;
 use crate::core::envmap::EnvGrad;
 use crate::core::events::Stage;
 use crate::core::light::LightProbe;
-use crate::core::loss::{self, LossWeights};
+use crate::core::loss::{self, sum_in_chunk_order, LossWeights, CHUNK};
 use crate::core::raster::{GBufferGrads, GBuffers, RasterSettings};
 use crate::core::render::ShadingInputs;
 use crate::core::shading::{SavedShading, StokesImage, StokesImageGrad};
@@ -161,7 +161,7 @@ struct ImageGrads {
 /// S0, or the intensity behind the view's polarizer angle θ.
 fn predict(g: &GBuffers, shaded: Option<&Shaded>, plan: &StepPlan) -> Vec<f64> {
     let pixels = g.width * g.height;
-    let polarizer = plan.theta.map(|t| ((2.0 * t).cos(), (2.0 * t).sin()));
+    let polarizer = plan.polarizer_cos_sin();
     let mut pred = vec![0.0; pixels * 3];
     pred.par_chunks_mut(3).enumerate().for_each(|(p, out)| {
         let colour = match shaded {
@@ -297,53 +297,49 @@ fn chain_shaded(
     up: &mut GBufferGrads,
 ) -> Result<(f64, EnvGrad), TrainError> {
     let (pixels, s) = (g.width * g.height, &shaded.image);
-    let polarizer = plan.theta.map(|t| ((2.0 * t).cos(), (2.0 * t).sin()));
+    let polarizer = plan.polarizer_cos_sin();
     let mut d0 = vec![DVec3::ZERO; pixels];
     let mut d1 = vec![DVec3::ZERO; pixels];
     let mut d2 = vec![DVec3::ZERO; pixels];
     // Per pixel: the Stokes images' upstream and the opacity's; the angle's gradient is summed
-    // over fixed chunks of pixels in chunk order (the same whatever the thread count).
-    const CHUNK: usize = 4096;
-    let angle_sums: Vec<f64> = (
+    // in chunk order (the same whatever the thread count).
+    let chunks = (
         d0.par_chunks_mut(CHUNK),
         d1.par_chunks_mut(CHUNK),
         d2.par_chunks_mut(CHUNK),
         up.alpha.par_chunks_mut(CHUNK),
     )
-        .into_par_iter()
-        .enumerate()
-        .map(|(chunk, (d0, d1, d2, alpha_grad))| {
-            let mut angle_grad = 0.0;
-            for j in 0..d0.len() {
-                let p = chunk * CHUNK + j;
-                let a = g.alpha[p];
-                let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
-                match polarizer {
-                    None => {
-                        d0[j] = gp * (a * plan.unpolarized_scale);
-                        alpha_grad[j] += plan.unpolarized_scale * s.s0[p].dot(gp);
-                    }
-                    Some((c, sn)) => {
-                        d0[j] = gp * (0.5 * a);
-                        d1[j] = gp * (0.5 * a * c);
-                        d2[j] = gp * (0.5 * a * sn);
-                        let intensity = 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn);
-                        alpha_grad[j] += intensity.dot(gp);
-                        angle_grad += a * (s.s2[p] * c - s.s1[p] * sn).dot(gp);
-                    }
+        .into_par_iter();
+    let angle_grad = sum_in_chunk_order(chunks, |chunk, (d0, d1, d2, alpha_grad)| {
+        let mut angle_grad = 0.0;
+        for j in 0..d0.len() {
+            let p = chunk * CHUNK + j;
+            let a = g.alpha[p];
+            let gp = DVec3::from_slice(&image.pred[p * 3..p * 3 + 3]);
+            match polarizer {
+                None => {
+                    d0[j] = gp * (a * plan.unpolarized_scale);
+                    alpha_grad[j] += plan.unpolarized_scale * s.s0[p].dot(gp);
                 }
-                if let Some((g1, g2)) = &image.s12 {
-                    let g1 = DVec3::from_slice(&g1[p * 3..p * 3 + 3]);
-                    let g2 = DVec3::from_slice(&g2[p * 3..p * 3 + 3]);
-                    d1[j] += g1 * a;
-                    d2[j] += g2 * a;
-                    alpha_grad[j] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
+                Some((c, sn)) => {
+                    d0[j] = gp * (0.5 * a);
+                    d1[j] = gp * (0.5 * a * c);
+                    d2[j] = gp * (0.5 * a * sn);
+                    let intensity = 0.5 * (s.s0[p] + s.s1[p] * c + s.s2[p] * sn);
+                    alpha_grad[j] += intensity.dot(gp);
+                    angle_grad += a * (s.s2[p] * c - s.s1[p] * sn).dot(gp);
                 }
             }
-            angle_grad
-        })
-        .collect();
-    let angle_grad = angle_sums.iter().sum();
+            if let Some((g1, g2)) = &image.s12 {
+                let g1 = DVec3::from_slice(&g1[p * 3..p * 3 + 3]);
+                let g2 = DVec3::from_slice(&g2[p * 3..p * 3 + 3]);
+                d1[j] += g1 * a;
+                d2[j] += g2 * a;
+                alpha_grad[j] += s.s1[p].dot(g1) + s.s2[p].dot(g2);
+            }
+        }
+        angle_grad
+    });
     let (gb, env_grad) = inputs.backend.shade_backward_saved(
         camera,
         &shaded.inputs.buffers(g),

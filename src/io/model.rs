@@ -25,6 +25,7 @@ use thiserror::Error;
 use crate::core::camera::Camera;
 use crate::core::config::{Mode, TrainConfig};
 use crate::core::envmap::{CubeMap, EnvMapError, WorldUp};
+use crate::core::raster::RasterSettings;
 use crate::core::surfels::{self, Surfels};
 use crate::formats::image_io::{self, Image, ImageError};
 use crate::formats::ply::PlyError;
@@ -135,6 +136,11 @@ impl Model {
             .collect()
     }
 
+    /// The rasterizer's settings the model was trained with (and renders with).
+    pub fn raster_settings(&self) -> RasterSettings {
+        self.config.raster_settings()
+    }
+
     /// Writes every file of the model folder except the checkpoint, progress log and metrics.
     pub fn save(&self, dir: &Path) -> Result<(), ModelError> {
         std::fs::create_dir_all(dir).map_err(io_err(dir))?;
@@ -165,7 +171,7 @@ impl Model {
         };
         let info: ModelInfo = serde_json::from_str(&read_json("model.json")?)
             .map_err(|e| invalid("model.json", e))?;
-        let config: TrainConfig = serde_json::from_str(&read_json("config.json")?)
+        let config = TrainConfig::from_record(&read_json("config.json")?)
             .map_err(|e| invalid("config.json", e))?;
         let surfels = surfels::ply::load_ply(&dir.join("surfels.ply"))?;
         let (cube_image, _) = image_io::read_image(&dir.join("envmap_cube.exr"))?;

@@ -161,7 +161,7 @@ pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMe
         &model.surfels,
         &model_cameras(model),
         &*backend,
-        &RasterSettings::default(),
+        &model.raster_settings(),
         resolution,
     )
 }

@@ -15,7 +15,6 @@ use crate::core::envmap::{CubeMap, EnvMapError, MipChainSpec, PrefilterPlan, Pre
 use crate::core::gridmap::GridMap;
 use crate::core::light::LightProbe;
 use crate::core::mesh::TriangleMesh;
-use crate::core::raster::RasterSettings;
 use crate::core::render::{RenderError, RenderedView, Scene};
 use crate::formats::image_io::{self, Image, ImageError};
 use crate::io::capture::Capture;
@@ -77,7 +76,7 @@ impl Reconstruction {
                 &model.surfels,
                 &mesh_extraction::model_cameras(model),
                 &*reconstruction.backend,
-                &RasterSettings::default(),
+                &model.raster_settings(),
                 GRIDMAP_MESH_RESOLUTION,
             )
             .inspect_err(|e| {
@@ -164,7 +163,7 @@ impl Reconstruction {
             light: self.light(),
             lut: self.lut,
             backend: &*self.backend,
-            settings: RasterSettings::default(),
+            settings: self.model.raster_settings(),
         }
     }
 

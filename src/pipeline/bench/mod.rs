@@ -187,7 +187,7 @@ pub fn bench_gridmap(model: &Model, repeats: usize) -> Result<GridMapTiming, Ben
         &model.surfels,
         &mesh_extraction::model_cameras(model),
         &*backend,
-        &RasterSettings::default(),
+        &model.raster_settings(),
         GRIDMAP_MESH_RESOLUTION,
     )?;
     let mesh_seconds = start.elapsed().as_secs_f64();

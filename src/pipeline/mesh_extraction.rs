@@ -1,7 +1,8 @@
 //! Triangle mesh of a set of surfels (METHOD.md §8): render α-normalized depth and opacity from a set
 //! of cameras (the training cameras), fuse them into a TSDF over the surfels' robust extent
 //! ([`TsdfParams::automatic`]: 5-voxel truncation, depth limited to the far side of the bounds),
-//! run marching cubes and keep the largest component. Used by `phygap mesh`, the export, the
+//! run marching cubes and keep the largest component (a model's deliverable mesh also has its holes
+//! closed). Used by `phygap mesh`, the export, the
 //! evaluation's Chamfer distance and GridMap (training and rendering).
 //!
 //! On a backend with its own fusion ([`Backend::fuse_depth`]: the gpu one) the depth maps are
@@ -154,16 +155,27 @@ pub fn model_cameras(model: &Model) -> Vec<Camera> {
     }
 }
 
-/// The mesh of a trained model (its own backend, the training cameras) at `resolution`.
+/// The mesh of a trained model (its own backend, the training cameras) at `resolution`, its
+/// holes closed: the surface where no camera looked is the smoothest one spanning the hole
+/// ([`TriangleMesh::close_holes`]), so the deliverable is watertight.
 pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMesh, MeshingError> {
     let backend = backend::select(model.config.backend)?;
-    mesh_from_surfels(
+    let mut mesh = mesh_from_surfels(
         &model.surfels,
         &model_cameras(model),
         &*backend,
         &model.raster_settings(),
         resolution,
-    )
+    )?;
+    let closed = mesh.close_holes();
+    if closed.holes > 0 {
+        tracing::info!(
+            holes = closed.holes,
+            triangles = closed.triangles,
+            "closed the mesh's holes"
+        );
+    }
+    Ok(mesh)
 }
 
 /// Writes a mesh as PLY or OBJ, chosen by the file extension (case-insensitive).

@@ -3,8 +3,8 @@
 //!
 //! The submodules split the work: `ply` maps meshes to and from documents of the crate's one PLY
 //! parser ([`crate::formats::ply`]), `tsdf` fuses depth maps into a truncated signed distance grid,
-//! `marching_cubes` turns that grid into a welded mesh, and `chamfer` measures the distance from
-//! one mesh to another. Long stages run inside `tracing` spans
+//! `marching_cubes` turns that grid into a welded mesh, `holes` closes the holes left where no
+//! camera looked, and `chamfer` measures the distance from one mesh to another. Long stages run inside `tracing` spans
 //! and use rayon over independent voxel slabs or sample chunks.
 
 use std::path::{Path, PathBuf};
@@ -15,11 +15,13 @@ use thiserror::Error;
 pub mod bench;
 pub mod bvh;
 mod chamfer;
+mod holes;
 mod marching_cubes;
 mod ply;
 mod tsdf;
 
 pub use chamfer::{chamfer_l1, chamfer_l1_with, sample_surface, CHAMFER_SAMPLES};
+pub use holes::ClosedHoles;
 pub use marching_cubes::{marching_cubes, ScalarGrid};
 #[cfg(test)]
 pub(crate) use tsdf::reference as tsdf_reference;

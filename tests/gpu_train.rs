@@ -489,8 +489,9 @@ fn a_step_whose_entries_overflow_is_rerun_with_room() {
         grown >= tight.tile_entries,
         "capacity {grown} after the rerun"
     );
-    let loss =
-        |r: &phygap::gpu::DeviceStepResult| plan.losses(&r.sums, &scene.weights, 1)["photometric"];
+    let loss = |r: &phygap::gpu::DeviceStepResult| {
+        plan.losses(&r.sums, &scene.weights, scene.camera.num_pixels())["photometric"]
+    };
     assert!((loss(&tight) - loss(&roomy)).abs() <= 1e-6 * loss(&roomy));
     for ((name, a), (_, b)) in tight_surfels.groups().iter().zip(roomy_surfels.groups()) {
         // Float atomics sum in any order: the updates agree to f32 rounding.
@@ -516,8 +517,9 @@ fn steps_reuse_their_bind_groups_and_drop_stale_ones() {
         plan: &plan,
         rates: [Some(1e-3); 7],
     };
-    let photometric =
-        |r: &phygap::gpu::DeviceStepResult| plan.losses(&r.sums, &scene.weights, 1)["photometric"];
+    let photometric = |r: &phygap::gpu::DeviceStepResult| {
+        plan.losses(&r.sums, &scene.weights, scene.camera.num_pixels())["photometric"]
+    };
 
     // Cached: three steps on the same buffers.
     let mut cached = trainer(&gpu, &scene, &target);

@@ -10,7 +10,7 @@ use phygap::core::camera::Camera;
 use phygap::core::config::BackendChoice;
 use phygap::core::raster::cpu::CpuBackend;
 use phygap::core::raster::fast::{FastBackend, SimdPath};
-use phygap::core::raster::{GBuffers, RasterGrads, RasterSettings, LEGACY_LOWPASS_SIGMA_PX};
+use phygap::core::raster::{GBuffers, RasterGrads, RasterSettings};
 use phygap::core::surfels::{logit, SurfelGrads, Surfels};
 use phygap::testing::random_upstream;
 use rand::SeedableRng;
@@ -191,28 +191,26 @@ fn random_scenes_without_the_low_pass_filter_match_cpu() {
 /// Images smaller than one tile and narrower than one lane group.
 #[test]
 fn images_smaller_than_a_tile_match_cpu() {
-    let legacy = RasterSettings {
-        lowpass_sigma_px: LEGACY_LOWPASS_SIGMA_PX,
-        ..RasterSettings::default()
-    };
     for (seed, (w, h)) in (60u64..).zip([(7, 5), (1, 1), (5, 3), (9, 11), (17, 2)]) {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let camera = random_camera(&mut rng, w, h);
         let surfels = deep_stack(&mut rng, 40);
-        for (filter, settings) in [("box", RasterSettings::default()), ("2DGS", legacy)] {
-            let what = format!("{w}×{h}, {filter} filter");
-            let cpu = CpuBackend.forward(&surfels, &camera, &settings).unwrap();
-            let covered = cpu.gbuffers.alpha.iter().filter(|&&a| a > 0.1).count();
-            assert!(covered * 2 >= (w * h) as usize, "{what}: not covered");
-            // At 1×1 under 2DGS's wide filter the pixel is wider than any surfel: the low-pass
-            // branch everywhere, so no gradient reaches the scales.
-            let zero: &[&str] = if w == 1 && filter == "2DGS" {
-                &["log_scale"]
-            } else {
-                &[]
-            };
-            compare(&surfels, &camera, &settings, seed, &what, zero);
-        }
+        let what = format!("{w}×{h}");
+        let cpu = CpuBackend
+            .forward(&surfels, &camera, &RasterSettings::default())
+            .unwrap();
+        let covered = cpu.gbuffers.alpha.iter().filter(|&&a| a > 0.1).count();
+        assert!(covered * 2 >= (w * h) as usize, "{what}: not covered");
+        // At 1×1 the pixel is wider than any surfel: the low-pass branch everywhere.
+        let zero: &[&str] = if w == 1 { &["log_scale"] } else { &[] };
+        compare(
+            &surfels,
+            &camera,
+            &RasterSettings::default(),
+            seed,
+            &what,
+            zero,
+        );
     }
 }
 

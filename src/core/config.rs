@@ -4,13 +4,12 @@
 //! budget that follows the object's pixel count, and the material learning rates (IoR, roughness)
 //! raised by the schedule's ratio, 2.5, so that they travel as far in fewer steps (README,
 //! "Time to quality", has the measurements behind each choice). Stage boundaries are fractions of
-//! `iterations`, so any run keeps the shape of the paper's schedule. The rasterizer's low-pass
-//! filter is a pixel's box filter instead of 2DGS's wider one.
+//! `iterations`, so any run keeps the shape of the paper's schedule.
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::core::raster::{RasterSettings, LEGACY_LOWPASS_SIGMA_PX, PIXEL_BOX_SIGMA_PX};
+use crate::core::raster::RasterSettings;
 pub use crate::core::resolution::Resolution;
 
 /// Which measurement the photometric loss uses (METHOD.md §1).
@@ -118,8 +117,9 @@ pub struct TrainConfig {
     #[arg(long, default_value_t = TrainConfig::default().resolution)]
     pub resolution: Resolution,
     /// Standard deviation (pixels) of the rasterizer's screen-space low-pass filter, which keeps
-    /// surfels seen edge-on visible: a pixel's box filter (1/√12 = 0.289) by default; 2DGS's
-    /// 0.707 widens every surfel by about a pixel (README, *Time to quality*). 0 turns it off.
+    /// surfels smaller than a pixel or seen edge-on visible (the model renders with it too):
+    /// 2DGS's 0.707 by default. A pixel's box filter, 0.289, sharpens silhouettes of objects
+    /// many pixels wide and loses thin parts (README, *Time to quality*). 0 turns it off.
     #[arg(long, default_value_t = TrainConfig::default().lowpass_sigma_px)]
     pub lowpass_sigma_px: f64,
 
@@ -248,7 +248,7 @@ impl Default for TrainConfig {
             gridmap: true,
             fresnel_irradiance: false,
             resolution: Resolution::Auto,
-            lowpass_sigma_px: PIXEL_BOX_SIGMA_PX,
+            lowpass_sigma_px: std::f64::consts::FRAC_1_SQRT_2,
             geometry_stage_end: 0.2,
             material_stage_end: 1.0 / 3.0,
             initial_surfels: 20_000,
@@ -312,19 +312,6 @@ impl TrainConfig {
         })?;
         config.validate()?;
         Ok(config)
-    }
-
-    /// Reads a configuration an earlier run recorded (a model's `config.json`, a checkpoint's
-    /// fingerprint). A setting added since takes the value that reproduces that run, not today's
-    /// default: a record without `lowpass_sigma_px` was trained with 2DGS's filter.
-    pub fn from_record(text: &str) -> Result<Self, serde_json::Error> {
-        let mut record: serde_json::Value = serde_json::from_str(text)?;
-        if let Some(settings) = record.as_object_mut() {
-            settings
-                .entry("lowpass_sigma_px")
-                .or_insert(LEGACY_LOWPASS_SIGMA_PX.into());
-        }
-        serde_json::from_value(record)
     }
 
     /// Checks every range; the service calls this before queueing a job.
@@ -455,33 +442,18 @@ mod tests {
     }
 
     #[test]
-    fn the_lowpass_filter_is_a_pixels_box_and_checked() {
+    fn the_lowpass_filter_is_2dgs_and_checked() {
         let c = TrainConfig::default();
-        assert!((c.lowpass_sigma_px - 1.0 / 12f64.sqrt()).abs() < 1e-15);
-        assert_eq!(c.raster_settings().lowpass_sigma_px, c.lowpass_sigma_px);
+        assert_eq!(c.lowpass_sigma_px, std::f64::consts::FRAC_1_SQRT_2);
+        assert_eq!(c.raster_settings(), RasterSettings::default());
         for bad in ["-0.1", "4.5"] {
             let e = TrainConfig::from_json(&format!(r#"{{"lowpass_sigma_px": {bad}}}"#));
             assert_eq!(e.unwrap_err().key, "lowpass_sigma_px");
         }
+        let sharp = TrainConfig::from_json(r#"{"lowpass_sigma_px": 0.2887}"#).unwrap();
+        assert_eq!(sharp.raster_settings().lowpass_sigma_px, 0.2887);
         let off = TrainConfig::from_json(r#"{"lowpass_sigma_px": 0}"#).unwrap();
         assert_eq!(off.raster_settings().lowpass_sigma_px, 0.0);
-    }
-
-    /// A record written before the filter was a setting reads back as the run it was (2DGS's
-    /// filter); a new one, or a user's config without the key, as today's default.
-    #[test]
-    fn records_without_a_setting_keep_the_value_they_ran_with() {
-        let old = TrainConfig::from_record(r#"{"iterations": 300}"#).unwrap();
-        assert_eq!(old.lowpass_sigma_px, std::f64::consts::FRAC_1_SQRT_2);
-        assert_eq!(old.iterations, 300);
-        let recorded = serde_json::to_string(&TrainConfig::default()).unwrap();
-        assert_eq!(
-            TrainConfig::from_record(&recorded).unwrap(),
-            TrainConfig::default()
-        );
-        let user = TrainConfig::from_json(r#"{"iterations": 300}"#).unwrap();
-        assert_eq!(user.lowpass_sigma_px, PIXEL_BOX_SIGMA_PX);
-        assert!(TrainConfig::from_record(r#"{"iterations": "many"}"#).is_err());
     }
 
     /// The command line's flags are the config's fields with their defaults; a flag given

@@ -171,7 +171,7 @@ impl Model {
         };
         let info: ModelInfo = serde_json::from_str(&read_json("model.json")?)
             .map_err(|e| invalid("model.json", e))?;
-        let config = TrainConfig::from_record(&read_json("config.json")?)
+        let config: TrainConfig = serde_json::from_str(&read_json("config.json")?)
             .map_err(|e| invalid("config.json", e))?;
         let surfels = surfels::ply::load_ply(&dir.join("surfels.ply"))?;
         let (cube_image, _) = image_io::read_image(&dir.join("envmap_cube.exr"))?;

@@ -27,15 +27,7 @@ use thiserror::Error;
 use crate::core::camera::Camera;
 use crate::core::surfels::{SurfelGrads, Surfels};
 
-/// Standard deviation (pixels) of a pixel's box filter, `1/√12`: the default screen-space
-/// low-pass filter, which widens a surfel's footprint as much as a camera's pixel does.
-pub const PIXEL_BOX_SIGMA_PX: f64 = 0.288_675_134_594_812_9;
-
-/// The screen-space low-pass filter of 2DGS, `1/√2`: what models written before the filter was
-/// recorded were trained with.
-pub const LEGACY_LOWPASS_SIGMA_PX: f64 = std::f64::consts::FRAC_1_SQRT_2;
-
-/// Thresholds of the rasterizer (2DGS defaults, except the low-pass filter).
+/// Thresholds of the rasterizer (2DGS defaults).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct RasterSettings {
@@ -50,9 +42,8 @@ pub struct RasterSettings {
     pub alpha_min: f64,
     /// α is clamped to at most this.
     pub alpha_max: f64,
-    /// Standard deviation (pixels) of the screen-space low-pass filter `ρ_2d = |x − μ|² / σ²`:
-    /// [`PIXEL_BOX_SIGMA_PX`] by default (2DGS: [`LEGACY_LOWPASS_SIGMA_PX`], i.e.
-    /// `ρ_2d = 2 |x − μ|²`); 0 turns the filter off.
+    /// Standard deviation (pixels) of the screen-space low-pass filter `ρ_2d = |x − μ|² / σ²`
+    /// (2DGS: 1/√2, i.e. `ρ_2d = 2 |x − μ|²`); 0 turns the filter off.
     pub lowpass_sigma_px: f64,
     /// ε of the α-normalization: normalized buffers are zero where `α ≤ ε`.
     pub normalize_alpha_min: f64,
@@ -66,7 +57,7 @@ impl Default for RasterSettings {
             transmittance_min: 1e-4,
             alpha_min: 1.0 / 255.0,
             alpha_max: 0.99,
-            lowpass_sigma_px: PIXEL_BOX_SIGMA_PX,
+            lowpass_sigma_px: std::f64::consts::FRAC_1_SQRT_2,
             normalize_alpha_min: 1e-6,
         }
     }

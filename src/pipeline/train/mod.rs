@@ -166,11 +166,11 @@ fn fingerprint(config: &TrainConfig) -> String {
     serde_json::to_string(config).expect("config serializes")
 }
 
-/// Whether a checkpoint's fingerprint was written with `config`: read back as a recorded config,
-/// so that a checkpoint written before a setting existed matches a config holding the value the
-/// setting had then ([`TrainConfig::from_record`]).
+/// Whether a checkpoint's fingerprint was written with `config`: read back as a config, so
+/// that a checkpoint written before a setting existed matches a config holding that setting's
+/// default (the setting behaves as it did then).
 fn same_config(saved: &str, config: &TrainConfig) -> bool {
-    match TrainConfig::from_record(saved) {
+    match serde_json::from_str::<TrainConfig>(saved) {
         Ok(saved) => saved == *config,
         Err(_) => saved == fingerprint(config),
     }

@@ -2,8 +2,8 @@
 //! of cameras (the training cameras), fuse them into a TSDF over the surfels' robust extent
 //! ([`TsdfParams::automatic`]: 5-voxel truncation, depth limited to the far side of the bounds),
 //! run marching cubes and keep the largest component (a model's deliverable mesh also has its holes
-//! closed). Used by `phygap mesh`, the export, the
-//! evaluation's Chamfer distance and GridMap (training and rendering).
+//! closed). Used by `phygap mesh`, the export, the evaluation's Chamfer distance and GridMap
+//! (training and rendering).
 //!
 //! On a backend with its own fusion ([`Backend::fuse_depth`]: the gpu one) the depth maps are
 //! rendered and fused on the device and only the grid comes back; marching cubes runs on the host.

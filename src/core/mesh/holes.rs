@@ -6,7 +6,7 @@
 //!
 //! Single-threaded: a mesh has few holes and a cap costs O(loop length × rings × iterations).
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use glam::DVec3;
 
@@ -109,19 +109,18 @@ impl TriangleMesh {
             return;
         }
         let n = ring[0].len();
-        let at = |mesh: &TriangleMesh, v: u32| mesh.vertex(v);
         for _ in 0..RELAX_SWEEPS {
             for r in 1..=rings {
                 for i in 0..n {
                     let inward = if r == rings { centre } else { ring[r + 1][i] };
-                    let sum = at(self, ring[r][(i + n - 1) % n])
-                        + at(self, ring[r][(i + 1) % n])
-                        + at(self, ring[r - 1][i])
-                        + at(self, inward);
+                    let sum = self.vertex(ring[r][(i + n - 1) % n])
+                        + self.vertex(ring[r][(i + 1) % n])
+                        + self.vertex(ring[r - 1][i])
+                        + self.vertex(inward);
                     self.vertices[ring[r][i] as usize] = (sum / 4.0).to_array();
                 }
             }
-            let mean = ring[rings].iter().map(|&v| at(self, v)).sum::<DVec3>() / n as f64;
+            let mean = ring[rings].iter().map(|&v| self.vertex(v)).sum::<DVec3>() / n as f64;
             self.vertices[centre as usize] = mean.to_array();
         }
     }
@@ -130,16 +129,14 @@ impl TriangleMesh {
 /// The mesh's boundary loops: its directed edges whose reverse no triangle uses, chained end to
 /// start. Each loop lists its vertices in edge order; a chain that cannot close is dropped.
 fn boundary_loops(triangles: &[[u32; 3]]) -> Vec<Vec<u32>> {
-    let mut directed: HashMap<(u32, u32), usize> = HashMap::with_capacity(triangles.len() * 3);
-    for t in triangles {
-        for k in 0..3 {
-            *directed.entry((t[k], t[(k + 1) % 3])).or_default() += 1;
-        }
-    }
+    let directed: HashSet<(u32, u32)> = triangles
+        .iter()
+        .flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3])))
+        .collect();
     let mut outgoing: HashMap<u32, Vec<u32>> = HashMap::new();
     let mut edges: Vec<(u32, u32)> = directed
-        .keys()
-        .filter(|&&(a, b)| !directed.contains_key(&(b, a)))
+        .iter()
+        .filter(|&&(a, b)| !directed.contains(&(b, a)))
         .copied()
         .collect();
     // Deterministic loops whatever the hash order.
@@ -173,7 +170,7 @@ mod tests {
     /// Every undirected edge used by exactly two triangles, once in each direction.
     fn is_closed_and_oriented(mesh: &TriangleMesh) -> bool {
         boundary_loops(&mesh.triangles).is_empty() && {
-            let mut seen = std::collections::HashSet::new();
+            let mut seen = HashSet::new();
             mesh.triangles
                 .iter()
                 .flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3])))
@@ -223,12 +220,7 @@ mod tests {
             );
         }
         // Closed: the enclosed volume is the sphere's minus the cut-off cap segment.
-        let volume: f64 = (0..mesh.triangles.len())
-            .map(|t| {
-                let [a, b, c] = mesh.triangle_corners(t);
-                a.dot(b.cross(c)) / 6.0
-            })
-            .sum();
+        let volume = mesh.signed_volume();
         let h = 1.0 - 0.6;
         let segment = std::f64::consts::PI * h * h * (3.0 - h) / 3.0;
         let expected = 4.0 / 3.0 * std::f64::consts::PI - segment;

@@ -322,12 +322,7 @@ mod tests {
             );
             assert!(consistent, "case {case}: inconsistent winding");
             // Signed volume enclosed is positive (normals out of the negative region).
-            let volume: f64 = (0..mesh.triangles.len())
-                .map(|t| {
-                    let [a, b, c] = mesh.triangle_corners(t);
-                    a.dot(b.cross(c)) / 6.0
-                })
-                .sum();
+            let volume = mesh.signed_volume();
             assert!(volume > 0.0, "case {case}: enclosed volume {volume}");
         }
     }

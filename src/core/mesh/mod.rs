@@ -4,8 +4,8 @@
 //! The submodules split the work: `ply` maps meshes to and from documents of the crate's one PLY
 //! parser ([`crate::formats::ply`]), `tsdf` fuses depth maps into a truncated signed distance grid,
 //! `marching_cubes` turns that grid into a welded mesh, `holes` closes the holes left where no
-//! camera looked, and `chamfer` measures the distance from one mesh to another. Long stages run inside `tracing` spans
-//! and use rayon over independent voxel slabs or sample chunks.
+//! camera looked, and `chamfer` measures the distance from one mesh to another. Long stages run
+//! inside `tracing` spans and use rayon over independent voxel slabs or sample chunks.
 
 use std::path::{Path, PathBuf};
 
@@ -157,6 +157,17 @@ impl TriangleMesh {
             .map(|t| {
                 let [a, b, c] = self.triangle_corners(t);
                 0.5 * (b - a).cross(c - a).length()
+            })
+            .sum()
+    }
+
+    /// Volume enclosed by a closed mesh, positive when its triangles wind counter-clockwise seen
+    /// from outside (the sum of the signed tetrahedra the triangles make with the origin).
+    pub fn signed_volume(&self) -> f64 {
+        (0..self.triangles.len())
+            .map(|t| {
+                let [a, b, c] = self.triangle_corners(t);
+                a.dot(b.cross(c)) / 6.0
             })
             .sum()
     }

@@ -401,12 +401,7 @@ mod tests {
                 assert!((DVec3::from_array(*n).length() - 1.0).abs() < 1e-4);
             }
             // Counter-clockwise from outside: the signed volume is positive.
-            let volume: f64 = (0..mesh.triangles.len())
-                .map(|t| {
-                    let [a, b, c] = mesh.triangle_corners(t);
-                    a.dot(b.cross(c)) / 6.0
-                })
-                .sum();
+            let volume = mesh.signed_volume();
             assert!(volume > 0.0, "{scene}: volume {volume}");
             if scene == "sphere" {
                 assert!((volume - 4.0 / 3.0 * std::f64::consts::PI).abs() < 0.01);

@@ -105,24 +105,17 @@ fn part_size_mismatch(index: u32, expected: u64) -> ApiError {
     )
 }
 
-/// Receives part `index` of `upload` from `body`, checks its length and `digest`, and stores it.
+/// Receives part `index` of `upload` (`expected` bytes long) from `body`, checks its length and
+/// `digest`, and stores it.
 /// Returns the part to record; nothing is left behind when it is refused or the body breaks off.
 pub async fn receive_part(
     state: &AppState,
     upload: &UploadRecord,
     index: u32,
+    expected: u64,
     body: Body,
     digest: [u8; 32],
 ) -> Result<UploadPart, ApiError> {
-    let expected = part_length(upload, index).ok_or_else(|| {
-        ApiError::bad_request(
-            "no_such_part",
-            format!(
-                "this upload has parts 0 to {}",
-                part_count(upload.size, upload.part_size).saturating_sub(1)
-            ),
-        )
-    })?;
     let temp = TempFile(state.paths.tmp.join(format!(
         "{}.{index}.{}",
         upload.id,

@@ -262,6 +262,45 @@ async fn parts_and_commits_are_checked() {
     t.server.shutdown().await;
 }
 
+/// A part refused on its path or headers is answered only after its body has been read (up to
+/// a bound), so a client still sending megabytes reads the refusal, not a broken pipe.
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn a_part_refused_before_its_body_is_read_still_gets_its_answer() {
+    let (_dir, t) = TestServer::start_fresh().await;
+    const BIG_PART: usize = 4 << 20;
+    let part = vec![7u8; BIG_PART];
+    let (status, upload) = create(&t, json!({"size": 2 * BIG_PART, "part_size": BIG_PART})).await;
+    assert_eq!(status, 201, "{upload}");
+    let id = upload["id"].as_str().unwrap().to_owned();
+    let url = t.url(&format!("/v1/uploads/{id}/parts/0"));
+    for round in 0..3 {
+        let no_digest = t.client.put(&url).body(part.clone()).send().await;
+        let no_digest = no_digest.unwrap_or_else(|e| panic!("round {round}: {e:?}"));
+        expect_error(no_digest, 400, "digest_required").await;
+        let bad_digest = t
+            .client
+            .put(&url)
+            .header("content-digest", "sha-256=:AAAA:")
+            .body(part.clone())
+            .send()
+            .await;
+        let bad_digest = bad_digest.unwrap_or_else(|e| panic!("round {round}: {e:?}"));
+        expect_error(bad_digest, 400, "invalid_digest").await;
+        let past_the_end = t
+            .client
+            .put(t.url(&format!("/v1/uploads/{id}/parts/2")))
+            .header("content-digest", content_digest(&part))
+            .body(part.clone())
+            .send()
+            .await;
+        let past_the_end = past_the_end.unwrap_or_else(|e| panic!("round {round}: {e:?}"));
+        expect_error(past_the_end, 400, "no_such_part").await;
+    }
+    assert!(received(&t, &id).await.is_empty());
+    // The refusals left the connection usable: a right part is taken.
+    assert_eq!(put_part(&t, &id, 0, &part).await.status(), 200);
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
 async fn idle_uploads_expire_with_their_parts() {
     let (dir, t) = TestServer::start_fresh_with(|c| {

@@ -130,6 +130,7 @@ pub async fn stream_to_file_with(
         let chunk = chunk.map_err(|e| body_error(&e))?;
         total += chunk.len() as u64;
         if total > limit {
+            drain_stream(&mut stream).await;
             return Err(over_limit());
         }
         inspect(&chunk);
@@ -160,8 +161,29 @@ pub fn body_error(e: &(dyn std::error::Error + 'static)) -> ApiError {
     }
 }
 
-/// Bytes of an oversized upload read (and dropped) before answering 413.
-const DRAIN_BEFORE_REJECT: usize = 8 << 20;
+/// Bytes of a refused request's body read (and dropped) before answering.
+const DRAIN_BEFORE_REJECT: u64 = 8 << 20;
+
+/// Reads and drops up to [`DRAIN_BEFORE_REJECT`] more bytes of a body the service refuses, so a
+/// client still sending it reads the answer instead of a reset connection. Past the bound, or
+/// when the body breaks off, the connection just closes.
+async fn drain_stream(
+    stream: &mut (impl futures_util::Stream<Item = Result<axum::body::Bytes, axum::Error>> + Unpin),
+) {
+    let mut drained = 0u64;
+    while drained <= DRAIN_BEFORE_REJECT {
+        match stream.next().await {
+            Some(Ok(chunk)) => drained += chunk.len() as u64,
+            _ => return,
+        }
+    }
+}
+
+/// `error`, answered after draining what [`drain_stream`] allows of the unread `body`.
+pub async fn refuse_unread(body: Body, error: ApiError) -> ApiError {
+    drain_stream(&mut body.into_data_stream()).await;
+    error
+}
 
 /// The request's declared `Content-Length`, when it has a valid one.
 fn content_length(headers: &HeaderMap) -> Option<u64> {
@@ -360,16 +382,12 @@ pub async fn upload(
 ) -> Result<(StatusCode, Json<CaptureView>), ApiError> {
     let limit = state.config.max_upload_bytes;
     if let Err(too_large) = check_content_length(&headers, limit) {
-        // Read and discard a bounded part of the body first: a client still sending it would
-        // otherwise see the connection reset instead of this 413. Past the bound we just close.
-        let _ = axum::body::to_bytes(body, DRAIN_BEFORE_REJECT).await;
-        return Err(too_large);
+        return Err(refuse_unread(body, too_large).await);
     }
     let declared = content_length(&headers);
     let admitted = crate::quotas::admit_bytes(&state, &caller, declared.unwrap_or(0)).await;
     if let Err(over_quota) = admitted {
-        let _ = axum::body::to_bytes(body, DRAIN_BEFORE_REJECT).await;
-        return Err(over_quota);
+        return Err(refuse_unread(body, over_quota).await);
     }
     let id = new_id("cap");
     let staging = TempDir::create(state.paths.tmp.join(&id))?;

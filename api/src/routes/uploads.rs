@@ -10,7 +10,7 @@ use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
-use super::captures::{ingest, visible_capture, CaptureView, TempDir};
+use super::captures::{ingest, refuse_unread, visible_capture, CaptureView, TempDir};
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
 use crate::openapi::Binary;
@@ -285,6 +285,42 @@ fn not_open(upload: &UploadRecord) -> ApiError {
     )
 }
 
+/// What a part request's path and headers decide before its body is read: the open upload,
+/// the part's length and its declared SHA-256.
+async fn check_part_request(
+    state: &AppState,
+    caller: &Caller,
+    id: &str,
+    index: u32,
+    headers: &HeaderMap,
+) -> Result<(UploadRecord, u64, [u8; 32]), ApiError> {
+    let upload = visible_upload(state, caller, id).await?;
+    if !matches!(upload.state, UploadState::Open) {
+        return Err(not_open(&upload));
+    }
+    let digest = uploads::content_digest(headers)?;
+    let expected = uploads::part_length(&upload, index).ok_or_else(|| {
+        ApiError::bad_request(
+            "no_such_part",
+            format!(
+                "this upload has parts 0 to {}",
+                uploads::part_count(upload.size, upload.part_size).saturating_sub(1)
+            ),
+        )
+    })?;
+    let declared_length = headers
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.parse::<u64>().ok());
+    if let Some(declared) = declared_length.filter(|&declared| declared != expected) {
+        return Err(ApiError::bad_request(
+            "part_size_mismatch",
+            format!("part {index} must be {expected} bytes long, not {declared}"),
+        ));
+    }
+    Ok((upload, expected, digest))
+}
+
 /// `PUT /v1/uploads/{id}/parts/{index}`.
 #[utoipa::path(
     put,
@@ -318,26 +354,12 @@ pub async fn put_part(
     headers: HeaderMap,
     body: Body,
 ) -> Result<Json<PartView>, ApiError> {
-    let upload = visible_upload(&state, &caller, &id).await?;
-    if !matches!(upload.state, UploadState::Open) {
-        return Err(not_open(&upload));
-    }
-    let digest = uploads::content_digest(&headers)?;
-    let declared_length = headers
-        .get(header::CONTENT_LENGTH)
-        .and_then(|v| v.to_str().ok())
-        .and_then(|v| v.parse::<u64>().ok());
-    if let (Some(declared), Some(expected)) =
-        (declared_length, uploads::part_length(&upload, index))
-    {
-        if declared != expected {
-            return Err(ApiError::bad_request(
-                "part_size_mismatch",
-                format!("part {index} must be {expected} bytes long, not {declared}"),
-            ));
-        }
-    }
-    let part = uploads::receive_part(&state, &upload, index, body, digest).await?;
+    let (upload, expected, digest) =
+        match check_part_request(&state, &caller, &id, index, &headers).await {
+            Ok(checked) => checked,
+            Err(refused) => return Err(refuse_unread(body, refused).await),
+        };
+    let part = uploads::receive_part(&state, &upload, index, expected, body, digest).await?;
     match state.store.record_part(&id, &part, now_ms()).await? {
         PartOutcome::Recorded { replaced } => {
             if let Some(old) = replaced.filter(|old| old.sha256 != part.sha256) {

@@ -255,7 +255,7 @@ fn fuzz_train_configs() {
                     config.initial_surfels >= 1 && config.initial_surfels <= config.max_surfels
                 );
                 assert!((4..=1024).contains(&config.envmap_resolution));
-                assert!(config.iterations >= 1 && config.iterations <= 1_000_000);
+                assert!((1..=1_000_000).contains(&config.steps()));
                 assert!(config.validate().is_ok());
             }
         },
@@ -416,7 +416,7 @@ fn regenerate_the_seed_corpus() {
     write("models", "archive.ckpt", &ckpt);
     let trained = scratch.path().join("model");
     let config = TrainConfig {
-        iterations: 3,
+        iterations: 3.into(),
         initial_surfels: 40,
         max_surfels: 100,
         envmap_resolution: 4,

@@ -52,7 +52,7 @@ fn sphere_model() -> Model {
             working_resolution: None,
         },
         config: TrainConfig {
-            iterations: 100,
+            iterations: 100.into(),
             envmap_resolution: SIZE as u32,
             backend: BackendChoice::Cpu,
             gridmap: false,

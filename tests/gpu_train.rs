@@ -594,7 +594,7 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
     // The device step needs 112 · 112 · 15 f32 for the SSIM planes: more than the limit.
     assert!(112 * 112 * 15 * 4 > limit);
     let config = TrainConfig {
-        iterations: 12,
+        iterations: 12.into(),
         initial_surfels: 500,
         envmap_resolution: 16,
         checkpoint_interval: 0,
@@ -751,7 +751,7 @@ fn an_interrupted_device_run_resumes_from_its_checkpoint() {
         },
     );
     let config = TrainConfig {
-        iterations: 60,
+        iterations: 60.into(),
         backend: BackendChoice::Gpu,
         initial_surfels: 1500,
         envmap_resolution: 16,
@@ -843,7 +843,7 @@ fn a_device_run_remeshes_gridmap_without_failures() {
     );
     let run = |recovery: u32| {
         let config = TrainConfig {
-            iterations: 200,
+            iterations: 200.into(),
             initial_surfels: 1500,
             envmap_resolution: 16,
             geometry_stage_end: 0.2,
@@ -908,7 +908,7 @@ fn the_training_benchmark_reports_host_phases_and_memory() {
         },
     );
     let config = TrainConfig {
-        iterations: 10,
+        iterations: 10.into(),
         initial_surfels: 400,
         envmap_resolution: 8,
         gridmap: false,

@@ -19,7 +19,7 @@ use phygap::pipeline::train::{train, TrainOutcome};
 
 fn config() -> TrainConfig {
     TrainConfig {
-        iterations: 40,
+        iterations: 40.into(),
         initial_surfels: 1000,
         envmap_resolution: 16,
         geometry_stage_end: 0.25,

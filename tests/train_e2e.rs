@@ -25,7 +25,7 @@ fn synthetic_capture(dir: &Path, views: usize, size: u32) -> Capture {
 
 fn small_config(iterations: u32) -> TrainConfig {
     TrainConfig {
-        iterations,
+        iterations: iterations.into(),
         initial_surfels: 1500,
         max_surfels: 6000,
         eval_interval: iterations / 4,

@@ -346,7 +346,7 @@ async fn restarted_jobs_run_again_resuming_or_afresh(s: &dyn Store) {
     // Changed: starts over, with its new spec and progress.
     let spec = JobSpec::Train {
         config: TrainConfig {
-            iterations: 77,
+            iterations: 77.into(),
             ..TrainConfig::default()
         },
     };

@@ -1,7 +1,8 @@
 //! The one training configuration: CLI flags, the `--config FILE.json` file and the service's job
 //! `config` are all this struct (keys are the long flag names in snake_case). Defaults follow
-//! METHOD.md §6–§7, with a shorter schedule: 6,000 steps instead of the paper's 15,000, a surfel
-//! budget that follows the object's pixel count, and the material learning rates (IoR, roughness)
+//! METHOD.md §6–§7, with a shorter schedule: 6,000 steps instead of the paper's 15,000 (up to
+//! 12,000 for small objects, whose steps cost less: `core::iterations`), a surfel budget that
+//! follows the object's pixel count, and the material learning rates (IoR, roughness)
 //! raised by the schedule's ratio, 2.5, so that they travel as far in fewer steps (README,
 //! "Time to quality", has the measurements behind each choice). Stage boundaries are fractions of
 //! `iterations`, so any run keeps the shape of the paper's schedule.
@@ -9,6 +10,7 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+pub use crate::core::iterations::Iterations;
 use crate::core::raster::RasterSettings;
 pub use crate::core::resolution::Resolution;
 
@@ -45,8 +47,9 @@ pub enum BackendChoice {
     Gpu,
 }
 
-/// Steps of the default schedule (the paper trains 15,000).
-pub const DEFAULT_ITERATIONS: u32 = 6_000;
+/// Steps of the default schedule for an object of 16,000 pixels per view or more (the paper
+/// trains 15,000; smaller objects get more under `auto`, [`Iterations`]).
+pub const DEFAULT_ITERATIONS: u32 = Iterations::AUTO_MIN;
 
 /// The paper's 15,000 steps over ours: the factor the material learning rates are raised by.
 const PAPER_SCHEDULE_RATIO: f64 = 15_000.0 / DEFAULT_ITERATIONS as f64;
@@ -79,9 +82,10 @@ pub const MAX_LOWPASS_SIGMA_PX: f64 = 4.0;
 #[cfg_attr(feature = "openapi", derive(utoipa::ToSchema), schema(default))]
 #[serde(default, deny_unknown_fields)]
 pub struct TrainConfig {
-    /// Total optimization steps (one random training view each).
+    /// Total optimization steps (one random training view each), or auto: 6,000 for an object
+    /// of 16,000 pixels per view or more, proportionally more for smaller ones, up to 12,000.
     #[arg(long, default_value_t = TrainConfig::default().iterations)]
-    pub iterations: u32,
+    pub iterations: Iterations,
     /// Measurement used for the loss (auto: chosen from the capture).
     #[arg(long, value_enum, default_value_t = TrainConfig::default().mode)]
     pub mode: Mode,
@@ -241,7 +245,7 @@ pub struct TrainConfig {
 impl Default for TrainConfig {
     fn default() -> Self {
         TrainConfig {
-            iterations: DEFAULT_ITERATIONS,
+            iterations: Iterations::Auto,
             mode: Mode::Auto,
             backend: BackendChoice::Auto,
             seed: 0,
@@ -322,8 +326,8 @@ impl TrainConfig {
                 problem: problem.to_owned(),
             })
         };
-        if self.iterations == 0 || self.iterations > 1_000_000 {
-            return bad("iterations", "must be in 1..=1000000");
+        if let Some(problem) = self.iterations.problem() {
+            return bad("iterations", &problem);
         }
         if !(0.0..=1.0).contains(&self.geometry_stage_end)
             || !(self.geometry_stage_end..=1.0).contains(&self.material_stage_end)
@@ -408,14 +412,29 @@ impl TrainConfig {
             .expect("a merge of two TrainConfigs is a TrainConfig")
     }
 
+    /// The run's steps: the fixed count, or for `auto` the count [`Self::for_object`] resolved
+    /// (before a capture resolves it, `auto`'s least, [`Iterations::at_least`]).
+    pub fn steps(&self) -> u32 {
+        self.iterations.at_least()
+    }
+
+    /// This configuration with `auto` steps resolved for training views of
+    /// `mean_object_pixels` mask pixels on average ([`Iterations::for_object`]).
+    pub fn for_object(&self, mean_object_pixels: f64) -> TrainConfig {
+        TrainConfig {
+            iterations: Iterations::Fixed(self.iterations.for_object(mean_object_pixels)),
+            ..self.clone()
+        }
+    }
+
     /// First iteration of the environment/material warm-up.
     pub fn material_stage_start(&self) -> u32 {
-        (self.geometry_stage_end * self.iterations as f64).round() as u32
+        (self.geometry_stage_end * f64::from(self.steps())).round() as u32
     }
 
     /// First iteration of the PolarDR stage.
     pub fn polar_stage_start(&self) -> u32 {
-        (self.material_stage_end * self.iterations as f64).round() as u32
+        (self.material_stage_end * f64::from(self.steps())).round() as u32
     }
 }
 
@@ -427,7 +446,7 @@ mod tests {
     fn json_keys_are_the_flag_names_and_unknown_keys_fail() {
         let c =
             TrainConfig::from_json(r#"{"iterations": 300, "mode": "partial", "seed": 7}"#).unwrap();
-        assert_eq!((c.iterations, c.mode, c.seed), (300, Mode::Partial, 7));
+        assert_eq!((c.steps(), c.mode, c.seed), (300, Mode::Partial, 7));
         assert_eq!(c.lambda_stokes, 10.0);
         let e = TrainConfig::from_json(r#"{"iteratons": 300}"#).unwrap_err();
         assert!(e.problem.contains("iteratons"), "{e}");
@@ -494,7 +513,7 @@ mod tests {
                 merged.mode,
                 merged.lambda_stokes
             ),
-            (900, false, Mode::Rgb, 3.0)
+            (Iterations::Fixed(900), false, Mode::Rgb, 3.0)
         );
         assert_eq!(merged.lr_albedo, 0.5, "kept from the file");
         assert!(Cli::command()
@@ -505,7 +524,8 @@ mod tests {
     #[test]
     fn default_stage_boundaries_keep_the_paper_schedule_shape() {
         let c = TrainConfig::default();
-        assert_eq!(c.iterations, 6_000);
+        assert_eq!(c.iterations, Iterations::Auto);
+        assert_eq!(c.steps(), 6_000);
         assert_eq!(c.material_stage_start(), 1_200);
         assert_eq!(c.polar_stage_start(), 2_000);
         assert!((c.lr_ior - 0.0025).abs() < 1e-15);

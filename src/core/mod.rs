@@ -12,6 +12,7 @@ pub mod envmap;
 pub mod events;
 pub mod gradcheck;
 pub mod gridmap;
+pub mod iterations;
 pub mod kdtree;
 pub mod light;
 pub mod loss;

@@ -373,7 +373,7 @@ impl LearningRates {
             position: ExponentialLr {
                 init: config.lr_position_init * scene_extent,
                 final_: config.lr_position_final * scene_extent,
-                steps: config.iterations,
+                steps: config.steps(),
             },
             scale: config.lr_scale,
             rotation: config.lr_rotation,

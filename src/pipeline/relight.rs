@@ -111,7 +111,7 @@ mod tests {
             crate::testing::sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.5, 0.4, 0.3));
         let config = TrainConfig {
             gridmap,
-            iterations: 100,
+            iterations: 100.into(),
             envmap_resolution: SIZE as u32,
             backend: BackendChoice::Cpu,
             ..TrainConfig::default()

@@ -268,7 +268,7 @@ pub fn train_with(
     use phygap::core::config::TrainConfig;
     use phygap::core::events::TrainEvent;
     let config = TrainConfig {
-        iterations: 100,
+        iterations: 100.into(),
         backend,
         seed: 3,
         gridmap,

@@ -45,7 +45,8 @@ pub struct JobView {
     stage: Option<String>,
     /// Steps done.
     iteration: u32,
-    /// Steps of the whole run (0 for relight jobs).
+    /// Steps of the whole run (0 for relight jobs); for `auto` its least (6,000) until training
+    /// starts and sizes it to the capture.
     iterations: u32,
     /// The latest loss terms by name (`total` among them).
     losses: BTreeMap<String, f64>,
@@ -339,7 +340,7 @@ pub async fn submit(
         webhook_url,
         priority: asks.priority,
         max_runtime_seconds: asks.max_runtime_seconds,
-        iterations: request.config.iterations,
+        iterations: request.config.steps(),
         spec: JobSpec::Train {
             config: request.config,
         },
@@ -885,7 +886,7 @@ pub async fn restart(
             match changed.filter(|c| c != config) {
                 Some(changed) => {
                     let fresh = crate::store::Progress {
-                        iterations: changed.iterations,
+                        iterations: changed.steps(),
                         ..Default::default()
                     };
                     (Some(JobSpec::Train { config: changed }), Some(fresh))

@@ -8,7 +8,7 @@ use phygap::gpu::GpuOptions;
 use phygap::pipeline::backend::{select_with, Engine};
 use std::path::PathBuf;
 
-use phygap::core::config::BackendChoice;
+use phygap::core::config::{BackendChoice, Iterations};
 use phygap::io::model::Model;
 use phygap::pipeline::bench::{
     bench_gridmap, bench_quality, bench_raster, bench_train, BenchStage, MemoryPeaks,
@@ -40,9 +40,9 @@ struct QualityBenchArgs {
     capture: PathBuf,
     #[arg(long, value_enum)]
     backend: Option<BackendChoice>,
-    /// Optimization steps (default: the default schedule's).
+    /// Optimization steps, or auto (default: the configuration's, auto unless it says).
     #[arg(long)]
-    iterations: Option<u32>,
+    iterations: Option<Iterations>,
     /// Training settings (JSON, as `phygap train --config`).
     #[arg(long)]
     config: Option<PathBuf>,
@@ -247,7 +247,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         BenchWhat::Train(a) => {
             let backend = bench_backend(a.backend, a.stages)?;
             let mut config = crate::train::read_config(a.config.as_deref())?;
-            config.iterations = a.iterations;
+            config.iterations = a.iterations.into();
             let stage = match a.stage {
                 StageArg::Geometry => BenchStage::Geometry,
                 StageArg::Polar => BenchStage::Polar,
@@ -319,7 +319,7 @@ fn run_quality(a: &QualityBenchArgs) -> Result<()> {
     truth.mesh = a.gt_mesh.clone().or(truth.mesh);
     let scratch = std::env::temp_dir().join(format!("phygap-bench-quality-{}", std::process::id()));
     let model_dir = a.out.clone().unwrap_or_else(|| scratch.clone());
-    let bar = crate::train::progress_bar(config.iterations);
+    let bar = crate::train::progress_bar(config.steps());
     let result = bench_quality(&a.capture, &model_dir, &config, &truth, &mut |e| {
         crate::train::show_event(&bar, e)
     });

@@ -31,7 +31,8 @@ enum Command {
     /// Load and validate a capture; print its views, kinds, resolution, split, bounds and warnings.
     Inspect(inspect::InspectArgs),
     /// Train a reconstruction of a capture into a model folder.
-    Train(train::TrainArgs),
+    // Boxed: every training setting makes it several times the other commands' size.
+    Train(Box<train::TrainArgs>),
     /// Render novel views of a model (Stokes, DoLP, AoLP, G-buffers, diffuse/specular).
     Render(render::RenderArgs),
     /// Evaluate a model on a capture's test views (JSON metrics).

@@ -67,7 +67,7 @@ pub fn run(args: &TrainArgs, matches: &clap::ArgMatches) -> Result<()> {
         ctrlc::set_handler(move || cancel.store(true, Ordering::Relaxed))
             .context("cannot install the Ctrl-C handler")?;
     }
-    let bar = progress_bar(config.iterations);
+    let bar = progress_bar(config.steps());
     let mut on_event = |event: &TrainEvent| show_event(&bar, event);
     let outcome = train::train_on(
         &engine,
@@ -112,6 +112,7 @@ pub fn progress_bar(iterations: u32) -> ProgressBar {
 pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
     match event {
         TrainEvent::Started {
+            iterations,
             mode,
             backend,
             train_views,
@@ -120,10 +121,11 @@ pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
             ..
         } => {
             bar.println(format!(
-                "training: mode {mode}, backend {backend}, {train_views} training views of \
-                 {resolution}{}",
+                "training: {iterations} steps, mode {mode}, backend {backend}, {train_views} \
+                 training views of {resolution}{}",
                 resumed_from.map_or(String::new(), |it| format!(", resumed at {it}"))
             ));
+            bar.set_length(u64::from(*iterations));
             bar.set_position(u64::from(resumed_from.unwrap_or(0)));
         }
         TrainEvent::Step {

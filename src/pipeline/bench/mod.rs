@@ -288,7 +288,7 @@ pub fn bench_train(
     config: &crate::core::config::TrainConfig,
     stage: BenchStage,
 ) -> Result<TrainTiming, BenchError> {
-    let _span = info_span!("bench_train", iterations = config.iterations).entered();
+    let _span = info_span!("bench_train", iterations = config.steps()).entered();
     let (end, name) = match stage {
         BenchStage::Geometry => (1.0, "geometry"),
         BenchStage::Polar => (0.0, "polar"),
@@ -345,11 +345,11 @@ pub fn bench_train(
     let _ = std::fs::remove_dir_all(&dir);
     outcome?;
     let (Some(first), Some(last)) = (first, last) else {
-        return Err(BenchError::TooShort(config.iterations));
+        return Err(BenchError::TooShort(config.steps()));
     };
     let steps = last.0 - first.0;
     if steps == 0 {
-        return Err(BenchError::TooShort(config.iterations));
+        return Err(BenchError::TooShort(config.steps()));
     }
     let seconds = last.1 - first.1;
     let camera = &capture.views[0].camera;

@@ -69,7 +69,7 @@ pub fn bench_quality(
     truth: &GroundTruth,
     on_event: &mut dyn FnMut(&TrainEvent),
 ) -> Result<QualityRun, QualityError> {
-    let _span = tracing::info_span!("bench_quality", iterations = config.iterations).entered();
+    let _span = tracing::info_span!("bench_quality", iterations = %config.iterations).entered();
     let start = Instant::now();
     let engine = train::engine_for(config)?;
     let limits = crate::io::capture::CaptureLimits::DEFAULT;
@@ -148,7 +148,7 @@ mod tests {
         )
         .unwrap();
         let config = TrainConfig {
-            iterations: 40,
+            iterations: 40.into(),
             initial_surfels: 800,
             envmap_resolution: 8,
             eval_interval: 20,

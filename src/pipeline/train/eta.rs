@@ -88,7 +88,7 @@ impl Eta {
         let bounds = [
             (0, config.material_stage_start()),
             (config.material_stage_start(), config.polar_stage_start()),
-            (config.polar_stage_start(), config.iterations),
+            (config.polar_stage_start(), config.steps()),
         ];
         bounds
             .iter()
@@ -108,7 +108,7 @@ mod tests {
 
     fn config() -> TrainConfig {
         TrainConfig {
-            iterations: 1000,
+            iterations: 1000.into(),
             geometry_stage_end: 0.2,
             material_stage_end: 0.4,
             ..TrainConfig::default()

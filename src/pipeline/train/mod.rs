@@ -119,21 +119,28 @@ pub enum TrainError {
     Capture(#[from] crate::io::capture::CaptureError),
 }
 
-/// The most surfels densification may grow to: `surfels_per_mask_pixel` times the mean object
-/// area (mask pixels) of the training views, within `initial_surfels..=max_surfels`. Surfels
-/// beyond a few per pixel of the object add cost to every step and no detail the images hold (the
-/// knot grew to 13 per pixel under the 300k cap alone).
-fn surfel_budget(config: &TrainConfig, targets: &[ViewTarget]) -> usize {
-    let cap = config.max_surfels as usize;
-    if config.surfels_per_mask_pixel <= 0.0 || targets.is_empty() {
-        return cap;
+/// The mean object area of the training views: mask pixels per view (0 without views).
+fn mean_object_pixels(targets: &[ViewTarget]) -> f64 {
+    if targets.is_empty() {
+        return 0.0;
     }
-    let mask_pixels: f64 = targets
+    targets
         .iter()
         .map(|t| t.mask.iter().sum::<f64>())
         .sum::<f64>()
-        / targets.len() as f64;
-    let budget = (config.surfels_per_mask_pixel * mask_pixels).round() as usize;
+        / targets.len() as f64
+}
+
+/// The most surfels densification may grow to: `surfels_per_mask_pixel` times the mean object
+/// area (mask pixels per view, [`mean_object_pixels`]), within `initial_surfels..=max_surfels`.
+/// Surfels beyond a few per pixel of the object add cost to every step and no detail the images
+/// hold (the knot grew to 13 per pixel under the 300k cap alone).
+fn surfel_budget(config: &TrainConfig, object_pixels: f64) -> usize {
+    let cap = config.max_surfels as usize;
+    if config.surfels_per_mask_pixel <= 0.0 || object_pixels <= 0.0 {
+        return cap;
+    }
+    let budget = (config.surfels_per_mask_pixel * object_pixels).round() as usize;
     budget.clamp(config.initial_surfels as usize, cap)
 }
 
@@ -324,7 +331,6 @@ pub fn train_on(
 ) -> Result<TrainOutcome, TrainError> {
     config.validate()?;
     capture.check_trainable()?;
-    let _span = tracing::info_span!("train", iterations = config.iterations).entered();
     std::fs::create_dir_all(model_dir).map_err(|source| TrainError::Io {
         path: model_dir.to_owned(),
         source,
@@ -343,8 +349,11 @@ pub fn train_on(
             reason: "no training view has full Stokes measurements".into(),
         });
     }
+    let object_pixels = mean_object_pixels(&targets);
+    let config = &config.for_object(object_pixels);
+    let _span = tracing::info_span!("train", iterations = config.steps()).entered();
     let bounds = capture.object_bounds();
-    let max_surfels = surfel_budget(config, &targets);
+    let max_surfels = surfel_budget(config, object_pixels);
     let run = Run {
         capture,
         config,
@@ -433,7 +442,7 @@ impl Run<'_> {
         };
         let mut engine = StepEngine::new(self)?;
         reporter.emit(TrainEvent::Started {
-            iterations: self.config.iterations,
+            iterations: self.config.steps(),
             mode: format!("{:?}", self.mode).to_lowercase(),
             backend: format!("{}; {}", self.backend.description(), engine.describe()),
             train_views: self.targets.len(),
@@ -570,7 +579,7 @@ impl Run<'_> {
             session.eta.observe(done, stage);
             reporter.emit(TrainEvent::Step {
                 iteration: done,
-                iterations: self.config.iterations,
+                iterations: self.config.steps(),
                 stage,
                 loss: outcome.total,
                 losses: outcome.losses.clone(),
@@ -952,6 +961,7 @@ impl Run<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::config::Iterations;
     use crate::pipeline::synth::{synth, Shape, SynthOptions};
 
     #[test]
@@ -959,7 +969,7 @@ mod tests {
         let config = TrainConfig::default();
         assert!(same_config(&fingerprint(&config), &config));
         let changed = TrainConfig {
-            iterations: config.iterations + 1,
+            iterations: (config.steps() + 1).into(),
             ..config.clone()
         };
         assert!(!same_config(&fingerprint(&config), &changed));
@@ -989,7 +999,7 @@ mod tests {
         )
         .unwrap();
         let config = TrainConfig {
-            iterations: 60,
+            iterations: 60.into(),
             initial_surfels: 1500,
             envmap_resolution: 16,
             geometry_stage_end: 0.2,
@@ -1010,7 +1020,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let (capture, config) = torus_run(dir.path());
         let config = TrainConfig {
-            iterations: 200,
+            iterations: 200.into(),
             checkpoint_interval: 0,
             mesh_interval: 50,
             gridmap_interval: 25,
@@ -1077,15 +1087,68 @@ mod tests {
         };
         // Mean object area 2,500 pixels → 10,000 surfels.
         let views = [target(2_000), target(3_000)];
-        assert_eq!(surfel_budget(&config, &views), 10_000);
+        assert_eq!(mean_object_pixels(&views), 2_500.0);
+        assert_eq!(mean_object_pixels(&[]), 0.0);
+        assert_eq!(surfel_budget(&config, 2_500.0), 10_000);
         // Within initial_surfels..=max_surfels.
-        assert_eq!(surfel_budget(&config, &[target(100)]), 1_000);
-        assert_eq!(surfel_budget(&config, &[target(9_000)]), 30_000);
+        assert_eq!(surfel_budget(&config, 100.0), 1_000);
+        assert_eq!(surfel_budget(&config, 9_000.0), 30_000);
         let off = TrainConfig {
             surfels_per_mask_pixel: 0.0,
             ..config
         };
-        assert_eq!(surfel_budget(&off, &views), 30_000);
+        assert_eq!(surfel_budget(&off, 2_500.0), 30_000);
+    }
+
+    #[test]
+    fn auto_steps_follow_the_object_and_resume_with_the_same_count() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let config = TrainConfig {
+            iterations: Iterations::Auto,
+            ..config
+        };
+        let model_dir = dir.path().join("auto");
+        // Stops at the first step's checkpoint: what matters is the count it started with.
+        let started = |resume: bool| {
+            let cancel = AtomicBool::new(false);
+            let mut counts = Vec::new();
+            let outcome = train(&capture, &model_dir, &config, resume, &cancel, &mut |e| {
+                if let TrainEvent::Started { iterations, .. } = e {
+                    counts.push(*iterations);
+                    cancel.store(true, Ordering::Relaxed);
+                }
+            })
+            .unwrap();
+            assert!(matches!(outcome, TrainOutcome::Interrupted { .. }));
+            counts
+        };
+        // A 24 × 24 torus covers a few hundred pixels per view: auto's most steps.
+        let targets: Vec<ViewTarget> = capture
+            .train_views()
+            .enumerate()
+            .map(|(i, v)| view_target(i, v, Mode::Full))
+            .collect();
+        let pixels = mean_object_pixels(&targets);
+        assert!(pixels > 50.0 && pixels < 576.0, "{pixels}");
+        assert_eq!(started(false), vec![Iterations::AUTO_MAX]);
+        // The checkpoint's settings hold the resolved count; auto resolves to it again.
+        assert_eq!(started(true), vec![Iterations::AUTO_MAX]);
+        let fixed = TrainConfig {
+            iterations: 5_000.into(),
+            ..config.clone()
+        };
+        assert!(matches!(
+            train(
+                &capture,
+                &model_dir,
+                &fixed,
+                true,
+                &AtomicBool::new(true),
+                &mut |_| {}
+            ),
+            Err(TrainError::ConfigChanged(_))
+        ));
     }
 
     #[test]
@@ -1141,7 +1204,7 @@ mod tests {
             let out = dir.path().join(name);
             let config = TrainConfig {
                 gridmap,
-                iterations: 60,
+                iterations: 60.into(),
                 checkpoint_interval: 18,
                 ..config.clone()
             };

@@ -79,7 +79,7 @@ impl AfterStep {
 
 impl Schedule {
     pub fn new(config: &TrainConfig) -> Schedule {
-        let iterations = config.iterations;
+        let iterations = config.steps();
         let fraction = |f: f64| (f * f64::from(iterations)).round() as u32;
         Schedule {
             iterations,
@@ -213,7 +213,7 @@ mod tests {
 
     fn thousand_steps() -> Schedule {
         Schedule::new(&TrainConfig {
-            iterations: 1_000,
+            iterations: 1_000.into(),
             material_stage_end: 0.3,
             densify_from: 0.05,
             densify_until: 0.8,
@@ -302,7 +302,7 @@ mod tests {
     #[test]
     fn zero_intervals_switch_their_work_off() {
         let s = Schedule::new(&TrainConfig {
-            iterations: 500,
+            iterations: 500.into(),
             opacity_reset_interval: 0,
             mesh_interval: 0,
             gridmap_interval: 0,

@@ -31,7 +31,7 @@ use common::{gpu, random_cube, random_env, shell};
 
 /// A target of `camera`'s size: the photometric image and S1/S2 smooth functions of the pixel
 /// (so SSIM sees structure), the mask the disc the shell covers.
-fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget {
+fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget<'static> {
     let (w, h) = (camera.width as usize, camera.height as usize);
     let phase: f64 = rng.random_range(0.0..6.0);
     let mut photometric = Vec::with_capacity(w * h * 3);
@@ -42,25 +42,25 @@ fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget {
         let (x, y) = ((p % w) as f64 / w as f64, (p / w) as f64 / h as f64);
         let r2 = (x - 0.5).powi(2) + (y - 0.5).powi(2);
         let inside = f64::from(r2 < 0.12);
-        mask.push(inside);
+        mask.push(inside as f32);
         for c in 0..3 {
             let v = 0.5 + 0.4 * (7.0 * x + 5.0 * y + phase + c as f64).sin();
-            photometric.push(inside * v);
-            s1.push(inside * 0.1 * (9.0 * y + c as f64).cos());
-            s2.push(inside * 0.1 * (8.0 * x - c as f64).sin());
+            photometric.push((inside * v) as f32);
+            s1.push((inside * 0.1 * (9.0 * y + c as f64).cos()) as f32);
+            s2.push((inside * 0.1 * (8.0 * x - c as f64).sin()) as f32);
         }
     }
     let (stokes, polarizer) = match kind {
-        "full" => (Some((s1, s2)), None),
+        "full" => (Some((s1.into(), s2.into())), None),
         "partial" => (None, Some(Polarizer::Learned("cam0".into()))),
         _ => (None, None),
     };
     ViewTarget {
         view: 0,
-        photometric,
+        photometric: photometric.into(),
         stokes,
         polarizer,
-        mask,
+        mask: mask.into(),
     }
 }
 

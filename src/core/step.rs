@@ -4,6 +4,7 @@
 //! shading a stage applies ([`StepPlan`]), and the per-pixel loss sums ([`LossSums`]) that the plan
 //! turns into the named, weighted losses of METHOD.md §6.
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 
 use crate::core::events::Stage;
@@ -18,19 +19,29 @@ pub enum Polarizer {
     Learned(String),
 }
 
-/// Training data of one view.
+/// A plane of a view's f32 samples, borrowed from the capture or converted from it.
+pub type Samples<'a> = Cow<'a, [f32]>;
+
+/// Training data of one view, in the capture's f32 samples: borrowed from the capture's view
+/// where its layout already fits (RGB images, the mask), so a run holds its views once; a step
+/// widens the one view it fits to f64 ([`widen`]).
 #[derive(Clone, Debug)]
-pub struct ViewTarget {
+pub struct ViewTarget<'a> {
     /// Index into `Capture::views`.
     pub view: usize,
     /// Linear RGB target of the photometric loss (interleaved, α-premultiplied like the capture).
-    pub photometric: Vec<f64>,
-    /// Captured S1 and S2 when the Stokes loss applies to this view.
-    pub stokes: Option<(Vec<f64>, Vec<f64>)>,
+    pub photometric: Samples<'a>,
+    /// Captured S1 and S2 (RGB) when the Stokes loss applies to this view.
+    pub stokes: Option<(Samples<'a>, Samples<'a>)>,
     /// The polarizer of a partial view (its photometric target is I(θ)).
     pub polarizer: Option<Polarizer>,
-    /// Object mask in [0, 1].
-    pub mask: Vec<f64>,
+    /// Object mask in [0, 1], one value per pixel.
+    pub mask: Samples<'a>,
+}
+
+/// `samples` in f64, as the host step's losses take them.
+pub fn widen(samples: &[f32]) -> Vec<f64> {
+    samples.iter().map(|&v| f64::from(v)).collect()
 }
 
 /// What a step computes for one view in one stage, shared by [`run`] and the device trainer.

@@ -129,7 +129,7 @@ fn target_values(target: &ViewTarget) -> Vec<f32> {
     let pixels = target.mask.len();
     let mut out = Vec::with_capacity(pixels * TARGET_FLOATS as usize);
     for p in 0..pixels {
-        let rgb = |v: &[f64]| [v[3 * p], v[3 * p + 1], v[3 * p + 2]];
+        let rgb = |v: &[f32]| [v[3 * p], v[3 * p + 1], v[3 * p + 2]];
         let (s1, s2) = match &target.stokes {
             Some((s1, s2)) => (rgb(s1), rgb(s2)),
             None => ([0.0; 3], [0.0; 3]),
@@ -140,8 +140,7 @@ fn target_values(target: &ViewTarget) -> Vec<f32> {
                 .into_iter()
                 .chain([target.mask[p]])
                 .chain(s1)
-                .chain(s2)
-                .map(|v| v as f32),
+                .chain(s2),
         );
     }
     out

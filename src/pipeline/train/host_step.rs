@@ -22,7 +22,7 @@ use crate::core::loss::{self, sum_in_chunk_order, LossWeights, CHUNK};
 use crate::core::raster::{GBufferGrads, GBuffers, RasterSettings};
 use crate::core::render::ShadingInputs;
 use crate::core::shading::{SavedShading, StokesImage, StokesImageGrad};
-use crate::core::step::{StepPlan, ViewTarget};
+use crate::core::step::{widen, StepPlan, ViewTarget};
 use crate::core::surfels::{SurfelGrads, Surfels};
 
 use super::TrainError;
@@ -92,13 +92,29 @@ pub fn run(
             saved,
         })
     };
+    // The view's photometric target in f64, which both groups of losses read.
+    let photometric = widen(&target.photometric);
     let image_grads = {
         let _span = tracing::debug_span!("image_losses").entered();
-        image_losses(g, shaded.as_ref(), &plan, target, weights, &mut losses)
+        image_losses(
+            g,
+            shaded.as_ref(),
+            &plan,
+            (target, &photometric),
+            weights,
+            &mut losses,
+        )
     };
     {
         let _span = tracing::debug_span!("gbuffer_losses").entered();
-        gbuffer_losses(g, &plan, target, weights, &mut up, &mut losses);
+        gbuffer_losses(
+            g,
+            &plan,
+            (target, &photometric),
+            weights,
+            &mut up,
+            &mut losses,
+        );
     }
 
     // Chain the image gradients into the G-buffers.
@@ -182,13 +198,13 @@ fn image_losses(
     g: &GBuffers,
     shaded: Option<&Shaded>,
     plan: &StepPlan,
-    target: &ViewTarget,
+    (target, photometric_target): (&ViewTarget, &[f64]),
     weights: &LossWeights,
     losses: &mut BTreeMap<String, f64>,
 ) -> ImageGrads {
     let (w, h) = (g.width, g.height);
     let pred = predict(g, shaded, plan);
-    let photometric = loss::photometric(&pred, &target.photometric, w, h, 3, weights.lambda_ssim);
+    let photometric = loss::photometric(&pred, photometric_target, w, h, 3, weights.lambda_ssim);
     losses.insert("photometric".to_owned(), photometric.value);
     let mut grad_pred = photometric.grad;
     let mut grad_s12 = None;
@@ -200,12 +216,13 @@ fn image_losses(
                     .flat_map(|(x, &a)| (*x * a).to_array())
                     .collect()
             };
-            let stokes = loss::stokes_l1(&premul(&s.s1), t1, &premul(&s.s2), t2, None);
+            let (t1, t2) = (widen(t1), widen(t2));
+            let stokes = loss::stokes_l1(&premul(&s.s1), &t1, &premul(&s.s2), &t2, None);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * stokes.value);
             let scale = |v: Vec<f64>| v.into_iter().map(|x| x * weights.lambda_stokes).collect();
             grad_s12 = Some((scale(stokes.grad_s1), scale(stokes.grad_s2)));
         } else {
-            let extra = loss::l1(&pred, &target.photometric, None);
+            let extra = loss::l1(&pred, photometric_target, None);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * extra.value);
             add_into(&mut grad_pred, &extra.grad, weights.lambda_stokes);
         }
@@ -220,18 +237,18 @@ fn image_losses(
 fn gbuffer_losses(
     g: &GBuffers,
     plan: &StepPlan,
-    target: &ViewTarget,
+    (target, photometric_target): (&ViewTarget, &[f64]),
     weights: &LossWeights,
     up: &mut GBufferGrads,
     losses: &mut BTreeMap<String, f64>,
 ) {
-    let mask = loss::mask_mse(&g.alpha, &target.mask);
+    let mask = loss::mask_mse(&g.alpha, &widen(&target.mask));
     losses.insert("mask".to_owned(), weights.lambda_mask * mask.value);
     add_into(&mut up.alpha, &mask.grad, weights.lambda_mask);
     if plan.normal_smooth {
         let smooth = loss::normal_smoothness(
             g.normal.as_flattened(),
-            &target.photometric,
+            photometric_target,
             g.width,
             g.height,
         );

@@ -126,7 +126,7 @@ fn mean_object_pixels(targets: &[ViewTarget]) -> f64 {
     }
     targets
         .iter()
-        .map(|t| t.mask.iter().sum::<f64>())
+        .map(|t| t.mask.iter().map(|&m| f64::from(m)).sum::<f64>())
         .sum::<f64>()
         / targets.len() as f64
 }
@@ -261,7 +261,7 @@ struct Run<'a> {
     settings: RasterSettings,
     lut: &'static BrdfLut,
     plan: Arc<PrefilterPlan>,
-    targets: Vec<ViewTarget>,
+    targets: Vec<ViewTarget<'a>>,
     learning_rates: LearningRates,
     densify_rules: DensifyRules,
     model_dir: &'a Path,
@@ -1072,11 +1072,11 @@ mod tests {
     fn the_surfel_budget_follows_the_object_area() {
         let target = |mask_pixels: usize| ViewTarget {
             view: 0,
-            photometric: Vec::new(),
+            photometric: Vec::new().into(),
             stokes: None,
             polarizer: None,
             mask: (0..10_000)
-                .map(|i| f64::from(u8::from(i < mask_pixels)))
+                .map(|i| f32::from(u8::from(i < mask_pixels)))
                 .collect(),
         };
         let config = TrainConfig {

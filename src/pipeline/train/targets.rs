@@ -1,34 +1,42 @@
-//! What each view is fitted to, converted once to f64: the photometric target (S0, an image behind a
-//! polarizer, or a plain image), S1/S2 where the view has full Stokes and the run uses them, the
-//! mask, and which polarizer angle (known or learned) the view was taken behind.
+//! What each view is fitted to, borrowed from the capture's views (copied only where an image
+//! is not RGB): the photometric target (S0, an image behind a polarizer, or a plain image), S1/S2
+//! where the view has full Stokes and the run uses them, the mask, and which polarizer angle
+//! (known or learned) the view was taken behind.
+
+use std::borrow::Cow;
 
 use crate::core::config::Mode;
 use crate::core::step::{Polarizer, ViewTarget};
 use crate::formats::image_io::Image;
 use crate::io::capture::{Capture, Measurement, PolarizerAngle, View};
 
-fn to_f64(img: &Image) -> Vec<f64> {
-    img.to_rgb().data.iter().map(|&v| f64::from(v)).collect()
+/// `img`'s samples as interleaved RGB: its own when it is RGB, else a converted copy.
+fn rgb(img: &Image) -> Cow<'_, [f32]> {
+    if img.channels == 3 {
+        Cow::Borrowed(&img.data)
+    } else {
+        Cow::Owned(img.to_rgb().data)
+    }
 }
 
 /// The target of `view` under the resolved `mode` (never `Auto`).
-pub fn view_target(index: usize, view: &View, mode: Mode) -> ViewTarget {
-    let mask = view.mask.data.iter().map(|&v| f64::from(v)).collect();
+pub fn view_target(index: usize, view: &View, mode: Mode) -> ViewTarget<'_> {
+    let mask = Cow::Borrowed(view.mask.data.as_slice());
     let (photometric, stokes, polarizer) = match (&view.measurement, mode) {
         (Measurement::Stokes { s0, s1, s2 }, Mode::Full | Mode::Partial) => {
-            (to_f64(s0), Some((to_f64(s1), to_f64(s2))), None)
+            (rgb(s0), Some((rgb(s1), rgb(s2))), None)
         }
-        (Measurement::Stokes { s0, .. }, _) => (to_f64(s0), None, None),
+        (Measurement::Stokes { s0, .. }, _) => (rgb(s0), None, None),
         (Measurement::Polarizer { image, angle }, Mode::Partial | Mode::Full) => {
             let polarizer = match angle {
                 PolarizerAngle::Known { degrees } => Polarizer::Fixed(degrees.to_radians()),
                 PolarizerAngle::Group(name) => Polarizer::Learned(name.clone()),
             };
-            (to_f64(image), None, Some(polarizer))
+            (rgb(image), None, Some(polarizer))
         }
         // In rgb mode an image behind a polarizer is fitted as an ordinary image.
         (Measurement::Polarizer { image, .. } | Measurement::Rgb { image }, _) => {
-            (to_f64(image), None, None)
+            (rgb(image), None, None)
         }
     };
     ViewTarget {
@@ -74,4 +82,24 @@ pub fn learned_groups(targets: &[ViewTarget]) -> Vec<String> {
     names.sort();
     names.dedup();
     names
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rgb_images_are_borrowed_and_others_expanded() {
+        let colour = Image::from_fn(3, 2, 3, |x, y, out| {
+            out.copy_from_slice(&[x as f32, y as f32, 0.5]);
+        });
+        let borrowed = rgb(&colour);
+        assert!(matches!(borrowed, Cow::Borrowed(_)));
+        assert_eq!(borrowed.as_ptr(), colour.data.as_ptr());
+        let grey = Image::from_fn(3, 2, 1, |x, y, out| out[0] = (x + 3 * y) as f32);
+        let expanded = rgb(&grey);
+        assert!(matches!(expanded, Cow::Owned(_)));
+        assert_eq!(expanded.len(), 18);
+        assert_eq!(&expanded[12..15], &[4.0, 4.0, 4.0]);
+    }
 }

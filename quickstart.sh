@@ -52,7 +52,8 @@ while true; do
   status=$(curl -fsS "$base/v1/jobs/$job")
   state=$(echo "$status" | json_field state)
   iteration=$(echo "$status" | sed -n 's/.*"iteration":\([0-9]*\).*/\1/p')
-  total=$(echo "$status" | sed -n 's/.*"iterations":\([0-9]*\).*/\1/p')
+  # The job's first "iterations" (its config's may be "auto").
+  total=$(echo "$status" | grep -o '"iterations":[0-9]*' | head -n 1 | cut -d: -f2)
   eta=$(echo "$status" | sed -n 's/.*"eta_seconds":\([0-9]*\).*/\1/p')
   printf '\r  %-10s iteration %s/%s  eta %ss   ' "$state" "${iteration:-0}" "${total:-?}" "${eta:-?}"
   case "$state" in succeeded|failed|cancelled) echo; break ;; esac

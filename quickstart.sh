@@ -47,7 +47,7 @@ config=${iterations:+"\"iterations\":$iterations"}
 job=$(curl -fsS -H 'content-type: application/json' \
   -d "{\"capture_id\":\"$capture\",\"config\":{$config}}" \
   "$base/v1/jobs" | json_field id)
-echo "submitted job $job (${iterations:-default} iterations); progress:"
+echo "submitted job $job (iterations: ${iterations:-auto}); progress:"
 while true; do
   status=$(curl -fsS "$base/v1/jobs/$job")
   state=$(echo "$status" | json_field state)

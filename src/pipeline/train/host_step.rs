@@ -100,7 +100,8 @@ pub fn run(
             g,
             shaded.as_ref(),
             &plan,
-            (target, &photometric),
+            target,
+            &photometric,
             weights,
             &mut losses,
         )
@@ -110,7 +111,8 @@ pub fn run(
         gbuffer_losses(
             g,
             &plan,
-            (target, &photometric),
+            target,
+            &photometric,
             weights,
             &mut up,
             &mut losses,
@@ -192,13 +194,14 @@ fn predict(g: &GBuffers, shaded: Option<&Shaded>, plan: &StepPlan) -> Vec<f64> {
     pred
 }
 
-/// The photometric loss, and in the PolarDR stage the Stokes loss on S1/S2 (full views) or the
-/// extra L1 on I(θ) (partial views).
+/// The photometric loss against `photometric_target` (the view's, widened), and in the PolarDR
+/// stage the Stokes loss on S1/S2 (full views) or the extra L1 on I(θ) (partial views).
 fn image_losses(
     g: &GBuffers,
     shaded: Option<&Shaded>,
     plan: &StepPlan,
-    (target, photometric_target): (&ViewTarget, &[f64]),
+    target: &ViewTarget,
+    photometric_target: &[f64],
     weights: &LossWeights,
     losses: &mut BTreeMap<String, f64>,
 ) -> ImageGrads {
@@ -237,7 +240,8 @@ fn image_losses(
 fn gbuffer_losses(
     g: &GBuffers,
     plan: &StepPlan,
-    (target, photometric_target): (&ViewTarget, &[f64]),
+    target: &ViewTarget,
+    photometric_target: &[f64],
     weights: &LossWeights,
     up: &mut GBufferGrads,
     losses: &mut BTreeMap<String, f64>,

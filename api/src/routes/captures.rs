@@ -186,7 +186,7 @@ pub async fn refuse_unread(body: Body, error: ApiError) -> ApiError {
 }
 
 /// The request's declared `Content-Length`, when it has a valid one.
-fn content_length(headers: &HeaderMap) -> Option<u64> {
+pub(crate) fn content_length(headers: &HeaderMap) -> Option<u64> {
     headers
         .get(header::CONTENT_LENGTH)
         .and_then(|v| v.to_str().ok())

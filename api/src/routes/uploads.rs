@@ -4,13 +4,15 @@
 use axum::body::{Body, Bytes};
 use axum::extract::rejection::BytesRejection;
 use axum::extract::{Path, State};
-use axum::http::{header, HeaderMap, StatusCode};
+use axum::http::{HeaderMap, StatusCode};
 use axum::Extension;
 use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
-use super::captures::{ingest, refuse_unread, visible_capture, CaptureView, TempDir};
+use super::captures::{
+    content_length, ingest, refuse_unread, visible_capture, CaptureView, TempDir,
+};
 use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
 use crate::openapi::Binary;
@@ -308,11 +310,7 @@ async fn check_part_request(
             ),
         )
     })?;
-    let declared_length = headers
-        .get(header::CONTENT_LENGTH)
-        .and_then(|v| v.to_str().ok())
-        .and_then(|v| v.parse::<u64>().ok());
-    if let Some(declared) = declared_length.filter(|&declared| declared != expected) {
+    if let Some(declared) = content_length(headers).filter(|&declared| declared != expected) {
         return Err(ApiError::bad_request(
             "part_size_mismatch",
             format!("part {index} must be {expected} bytes long, not {declared}"),

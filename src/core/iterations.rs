@@ -114,16 +114,7 @@ impl Serialize for Iterations {
 impl<'de> Deserialize<'de> for Iterations {
     /// A number of steps, or a string as [`FromStr`](std::str::FromStr) reads it.
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        #[derive(Deserialize)]
-        #[serde(untagged)]
-        enum Written {
-            Count(u32),
-            Text(String),
-        }
-        match Written::deserialize(deserializer)? {
-            Written::Count(count) => Ok(Iterations::Fixed(count)),
-            Written::Text(text) => text.parse().map_err(serde::de::Error::custom),
-        }
+        crate::core::setting::deserialize_number_or_text(deserializer, Iterations::Fixed)
     }
 }
 

@@ -22,6 +22,7 @@ pub mod optim;
 pub mod raster;
 pub mod render;
 pub mod resolution;
+pub mod setting;
 pub mod shading;
 pub mod simd;
 pub mod step;

@@ -111,16 +111,7 @@ impl Serialize for Resolution {
 impl<'de> Deserialize<'de> for Resolution {
     /// A string as [`FromStr`](std::str::FromStr) reads it, or a number (a longest side).
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        #[derive(Deserialize)]
-        #[serde(untagged)]
-        enum Written {
-            Side(u32),
-            Text(String),
-        }
-        match Written::deserialize(deserializer)? {
-            Written::Side(side) => Ok(Resolution::LongestSide(side)),
-            Written::Text(text) => text.parse().map_err(serde::de::Error::custom),
-        }
+        crate::core::setting::deserialize_number_or_text(deserializer, Resolution::LongestSide)
     }
 }
 

@@ -8,8 +8,9 @@
 const TILE: u32 = 8u;
 // Per-surfel gradient accumulators: Q (9), det, mean (2), opacity, features (8), view depth.
 const NUM_ACC: u32 = 22u;
-// Per-pixel values of the forward output: α, depth, normal (3), albedo (3), roughness, IoR.
-const NUM_OUT: u32 = 10u;
+// Per-pixel values of the forward output: α, depth, normal (3), albedo (3), roughness, IoR,
+// squared depth (train_common.wgsl repeats it for the trainer's kernels).
+const NUM_OUT: u32 = 11u;
 // Finite stand-in for +∞ (WGSL has no infinity literal).
 const BIG: f32 = 3.0e38;
 

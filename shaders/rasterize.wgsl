@@ -1,5 +1,5 @@
 // Forward rasterization: front-to-back compositing of each tile's sorted surfels into the
-// α-normalized G-buffers (α, depth, normal, albedo, roughness, IoR), as `forward_tile` of
+// α-normalized G-buffers (α, depth, normal, albedo, roughness, IoR, squared depth), as `forward_tile` of
 // src/raster/cpu.rs does in f64.
 // Threading: one workgroup of 64 threads per 8×8 tile, one thread per pixel; each thread walks
 // its tile's list on its own (reading the projected surfels from global memory, no workgroup
@@ -33,6 +33,7 @@ fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id)
     var albedo_sum = vec3<f32>(0.0);
     var rough_sum = 0.0;
     var ior_sum = 0.0;
+    var depth_sq_sum = 0.0;
     var last = 0u;
     var n_evals = 0u;
     for (var k = range.x; k < range.y; k++) {
@@ -58,6 +59,7 @@ fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id)
         albedo_sum += w * vec3<f32>(p.f0.w, p.f1.x, p.f1.y);
         rough_sum += w * p.f1.z;
         ior_sum += w * p.f1.w;
+        depth_sq_sum += w * hit.z * hit.z;
         trans = next_t;
         last = k - range.x + 1u;
     }
@@ -76,6 +78,7 @@ fn rasterize(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id)
     gbuf[o + 7u] = albedo_sum.z * inv;
     gbuf[o + 8u] = rough_sum * inv;
     gbuf[o + 9u] = ior_sum * inv;
+    gbuf[o + 10u] = depth_sq_sum * inv;
     final_t[pix] = trans;
     contrib[pix] = last;
     evals[pix] = n_evals;

@@ -3,7 +3,8 @@
 // (Q, det, mean, opacity, features, view depth) with `add_grad`, which is a float atomic add where
 // the adapter has SHADER_FLOAT32_ATOMIC and a compare-and-swap loop on the f32 bit pattern
 // otherwise (appended from atomic_float.wgsl or atomic_cas.wgsl). The upstream gradient arrives
-// per pixel as (α, depth, normal, albedo, roughness, IoR) on the normalized buffers; the depth
+// per pixel as (α, depth, normal, albedo, roughness, IoR, squared depth) on the normalized
+// buffers; the depth
 // entry already includes the depth-normal chain computed on the host.
 // Threading: one workgroup of 64 threads per 8×8 tile, one thread per pixel, each walking its
 // tile's list back to the first entry from its last composited one, or with subgroups from the
@@ -35,6 +36,7 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
     // Undo the α-normalization: dL/dS = g / α, dL/dα −= Σ g · out / α.
     var g_alpha = upstream[o];
     var g_depth = 0.0;
+    var g_depth_sq = 0.0;
     var g_feat0 = vec4<f32>(0.0);
     var g_feat1 = vec4<f32>(0.0);
     if a > prm.normalize_alpha_min {
@@ -45,6 +47,7 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
         }
         g_alpha -= dot_sum * inv_a;
         g_depth = upstream[o + 1u] * inv_a;
+        g_depth_sq = upstream[o + 10u] * inv_a;
         g_feat0 = vec4<f32>(upstream[o + 2u], upstream[o + 3u], upstream[o + 4u], upstream[o + 5u]) * inv_a;
         g_feat1 = vec4<f32>(upstream[o + 6u], upstream[o + 7u], upstream[o + 8u], upstream[o + 9u]) * inv_a;
     }
@@ -67,7 +70,8 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
         let one_minus = 1.0 - hit.alpha;
         let t_i = trans / one_minus;
         let weight = hit.alpha * t_i;
-        let u = g_alpha + g_depth * hit.z + dot(g_feat0, p.f0) + dot(g_feat1, p.f1);
+        let u = g_alpha + (g_depth + g_depth_sq * hit.z) * hit.z + dot(g_feat0, p.f0)
+            + dot(g_feat1, p.f1);
         let gf0 = weight * g_feat0;
         let gf1 = weight * g_feat1;
         add_grad(base + 13u, gf0.x);
@@ -88,7 +92,7 @@ fn rasterize_backward(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invoc
             add_grad(base + 12u, hit.g * d_alpha);
             g_rho = -0.5 * hit.g * p.mean_op.z * d_alpha;
         }
-        let gz = weight * g_depth;
+        let gz = weight * (g_depth + 2.0 * hit.z * g_depth_sq);
         if !hit.use3d {
             // Filter branch: ρ_2d around the projected centre, z = the centre's depth.
             let c = -2.0 * inv_sigma2 * g_rho;

@@ -3,6 +3,9 @@
 // step). No bindings, no entry points.
 
 const THREADS: u32 = 256u;
+// Values per pixel of the rasterizer's G-buffers and of their upstream gradient (NUM_OUT of
+// common.wgsl): α, depth, normal (3), albedo (3), roughness, IoR, squared depth.
+const NUM_OUT: u32 = 11u;
 const BIG_F: f32 = 3.0e38;
 
 // Words of the step status. u32 words: the tile entries that fit their buffer (what the sort and
@@ -22,5 +25,6 @@ const SLOT_SMOOTH: u32 = 4u;
 const SLOT_DEPTH_NORMAL: u32 = 5u;
 const SLOT_DEPTH_NORMAL_COUNT: u32 = 6u;
 const SLOT_ANGLE: u32 = 7u;
-const SLOTS: u32 = 8u;
+const SLOT_DISTORTION: u32 = 8u;
+const SLOTS: u32 = 9u;
 

@@ -10,7 +10,8 @@
 //   `ssim_adjoint_h`    the adjoints blurred along rows;
 //   `loss_chain`        the adjoints blurred along columns, and every other term at the pixel:
 //                       L1, mask MSE, the Stokes L1 or the extra L1 of partial views, edge-aware
-//                       normal smoothness, depth–normal consistency (its gradients before the
+//                       normal smoothness, depth distortion, depth–normal consistency (its
+//                       gradients before the
 //                       factor λ / valid pixels, which is known only after the reduction), and
 //                       the chain from the prediction to the Stokes images, α and albedo, with the
 //                       polarizer angle's gradient;
@@ -32,7 +33,8 @@
 @group(0) @binding(7) var<storage, read_write> partials: array<f32>;
 // Per pixel 9 values: dL/dS0, dL/dS1, dL/dS2 (RGB each), the shader's upstream.
 @group(0) @binding(8) var<storage, read_write> d_stokes: array<f32>;
-// Per pixel 10 values: the loss terms' gradient on α, depth, normal, albedo, roughness, IoR.
+// Per pixel NUM_OUT values: the loss terms' gradient on α, depth, normal, albedo, roughness,
+// IoR, squared depth.
 @group(0) @binding(9) var<storage, read_write> up_partial: array<f32>;
 // Per pixel 6 values: the depth–normal loss's gradients on the normal and the depth normal,
 // before the factor λ / valid pixels.
@@ -68,7 +70,7 @@ fn stokes_rgb(p: u32, k: u32) -> vec3<f32> {
 }
 
 fn gbuf_vec3(p: u32, first: u32) -> vec3<f32> {
-    let o = 10u * p + first;
+    let o = NUM_OUT * p + first;
     return vec3<f32>(gbuf[o], gbuf[o + 1u], gbuf[o + 2u]);
 }
 
@@ -107,7 +109,7 @@ fn compose(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroup
     if p >= train.pixels {
         return;
     }
-    let v = colour_at(p) * gbuf[10u * p];
+    let v = colour_at(p) * gbuf[NUM_OUT * p];
     pred[3u * p] = v.x;
     pred[3u * p + 1u] = v.y;
     pred[3u * p + 2u] = v.z;
@@ -267,7 +269,7 @@ fn loss_chain(
         let j = p / w;
         let inv3 = 1.0 / f32(3u * pixels);
         let inv_p = 1.0 / f32(pixels);
-        let alpha = gbuf[10u * p];
+        let alpha = gbuf[NUM_OUT * p];
         let prediction = pred_rgb(p);
         let tgt = target_rgb(p, 0u);
 
@@ -286,8 +288,8 @@ fn loss_chain(
         // The extra L1 on Î(θ) of partial views.
         gp += train.lambda_extra_l1 * sign3(diff) * inv3;
 
-        var up: array<f32, 10>;
-        for (var k = 0u; k < 10u; k++) {
+        var up: array<f32, NUM_OUT>;
+        for (var k = 0u; k < NUM_OUT; k++) {
             up[k] = 0.0;
         }
         // Mask.
@@ -391,8 +393,19 @@ fn loss_chain(
             dn_grad[6u * p + c] = gn[c];
             dn_grad[6u * p + 3u + c] = gd[c];
         }
-        for (var c = 0u; c < 10u; c++) {
-            up_partial[10u * p + c] = up[c];
+        // Depth distortion α² (E[z²] − E[z]²), weighted by λ / (pixels · radius²).
+        let lambda_distortion = train.lambda_distortion;
+        if lambda_distortion > 0.0 {
+            let z = gbuf[NUM_OUT * p + 1u];
+            let spread = gbuf[NUM_OUT * p + 10u] - z * z;
+            sums[SLOT_DISTORTION] = alpha * alpha * spread;
+            let scale = lambda_distortion * inv_p;
+            up[0] += 2.0 * alpha * spread * scale;
+            up[1] -= 2.0 * alpha * alpha * z * scale;
+            up[10] += alpha * alpha * scale;
+        }
+        for (var c = 0u; c < NUM_OUT; c++) {
+            up_partial[NUM_OUT * p + c] = up[c];
         }
     }
     let group = workgroup_index(wg, nwg);

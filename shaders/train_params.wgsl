@@ -31,7 +31,8 @@ struct TrainParams {
     // α-normalization ε (depth normals are defined where α > ε), α above which a pixel is shaded.
     normalize_alpha_min: f32,
     shade_alpha_min: f32,
-    pad1: f32,
+    // λ_distortion / radius² (0 when unused): the depth distortion in units of the object's radius.
+    lambda_distortion: f32,
     // Camera-to-world rotation (columns: the OpenCV right, down, forward axes), camera centre.
     rot0: vec4<f32>,
     rot1: vec4<f32>,

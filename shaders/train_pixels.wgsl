@@ -11,7 +11,8 @@
 //                           normal's, gathered back onto the depth from the neighbours' dx, dy.
 // Threading: one thread per pixel (train_common.wgsl).
 
-// Per pixel 10 values: α, depth, normal (3), albedo (3), roughness, IoR (α-normalized).
+// Per pixel NUM_OUT values: α, depth, normal (3), albedo (3), roughness, IoR, squared depth
+// (α-normalized).
 @group(0) @binding(1) var<storage, read> gbuf: array<f32>;
 // Per pixel three vectors: (normal, roughness), (albedo, IoR), (surface point, 0).
 @group(0) @binding(2) var<storage, read_write> shade_in: array<vec4<f32>>;
@@ -25,20 +26,20 @@
 @group(0) @binding(6) var<storage, read> status: array<u32>;
 // Per pixel 6 values: gradients on dx and dy.
 @group(0) @binding(7) var<storage, read_write> gdxy: array<f32>;
-// Per pixel 10 values: the loss terms' upstream gradient on the G-buffers (without the depth
+// Per pixel NUM_OUT values: the loss terms' upstream gradient on the G-buffers (without the depth
 // normal's and the shader's parts).
 @group(0) @binding(8) var<storage, read> up_partial: array<f32>;
 // Per pixel 8 values: the shader's gradients on the normal, albedo, roughness and IoR.
 @group(0) @binding(9) var<storage, read> shade_grads: array<f32>;
-// Per pixel 10 values: the rasterizer's upstream gradient.
+// Per pixel NUM_OUT values: the rasterizer's upstream gradient.
 @group(0) @binding(10) var<storage, read_write> upstream: array<f32>;
 
 fn alpha_at(p: u32) -> f32 {
-    return gbuf[p * 10u];
+    return gbuf[p * NUM_OUT];
 }
 
 fn depth_at(p: u32) -> f32 {
-    return gbuf[p * 10u + 1u];
+    return gbuf[p * NUM_OUT + 1u];
 }
 
 // Whether pixel p's depth normal is defined: interior, itself and its 4 neighbours covered.
@@ -88,7 +89,7 @@ fn prepare_pixels(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wo
     if p >= train.pixels {
         return;
     }
-    let o = p * 10u;
+    let o = p * NUM_OUT;
     let depth = gbuf[o + 1u];
     let position = train.origin.xyz + to_world(camera_dir(p) * depth);
     shade_in[3u * p] = vec4<f32>(gbuf[o + 2u], gbuf[o + 3u], gbuf[o + 4u], gbuf[o + 8u]);
@@ -177,9 +178,9 @@ fn assemble_upstream(
     if j + 1u < train.height {
         gp -= gdy_at(p + w);
     }
-    var up: array<f32, 10>;
-    for (var k = 0u; k < 10u; k++) {
-        up[k] = up_partial[10u * p + k];
+    var up: array<f32, NUM_OUT>;
+    for (var k = 0u; k < NUM_OUT; k++) {
+        up[k] = up_partial[NUM_OUT * p + k];
     }
     up[1] += dot(camera_dir(p), gp);
     let scale = depth_normal_scale();
@@ -192,7 +193,7 @@ fn assemble_upstream(
             up[2u + k] += shade_grads[8u * p + k];
         }
     }
-    for (var k = 0u; k < 10u; k++) {
-        upstream[10u * p + k] = up[k];
+    for (var k = 0u; k < NUM_OUT; k++) {
+        upstream[NUM_OUT * p + k] = up[k];
     }
 }

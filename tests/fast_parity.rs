@@ -314,6 +314,7 @@ fn bits(gb: &GBuffers, g: &RasterGrads) -> Vec<u64> {
         .chain(gb.albedo.as_flattened())
         .chain(&gb.roughness)
         .chain(&gb.ior)
+        .chain(&gb.depth_sq)
         .chain(gb.depth_normal.as_flattened())
         .chain(s.position.as_flattened())
         .chain(s.log_scale.as_flattened())

@@ -292,7 +292,12 @@ fn scene(seed: u64) -> Scene {
         camera,
         env: random_env(&mut rng, false, false),
         lut: BrdfLut::compute(16, 64),
-        weights: LossWeights::from(&TrainConfig::default()),
+        // Every term on, the depth distortion too (off by default).
+        weights: LossWeights {
+            lambda_distortion: 0.5,
+            distortion_scale: 0.8,
+            ..LossWeights::from(&TrainConfig::default())
+        },
     }
 }
 

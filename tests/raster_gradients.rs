@@ -123,6 +123,7 @@ fn mask_thin_coverage(up: &mut GBufferGrads, gb: &GBuffers) {
                 up.albedo[k] = [0.0; 3];
                 up.roughness[k] = 0.0;
                 up.ior[k] = 0.0;
+                up.depth_sq[k] = 0.0;
             }
             let stencil_thin = x == 0
                 || y == 0
@@ -221,7 +222,7 @@ fn gradients_match_for_each_buffer_alone() {
     let (w, h) = (W as usize, H as usize);
     let base = CpuBackend.forward(&s, &cam, &smooth_settings()).unwrap();
     mask_thin_coverage(&mut full, &base.gbuffers);
-    for buffer in 0..7 {
+    for buffer in 0..8 {
         let mut up = GBuffers::zeros(w, h);
         match buffer {
             0 => up.alpha = full.alpha.clone(),
@@ -230,6 +231,7 @@ fn gradients_match_for_each_buffer_alone() {
             3 => up.albedo = full.albedo.clone(),
             4 => up.roughness = full.roughness.clone(),
             5 => up.ior = full.ior.clone(),
+            6 => up.depth_sq = full.depth_sq.clone(),
             _ => up.depth_normal = full.depth_normal.clone(),
         }
         let fwd = CpuBackend.forward(&s, &cam, &smooth_settings()).unwrap();
@@ -398,6 +400,8 @@ fn fronto_parallel_surfel_has_the_expected_alpha_depth_and_normal() {
                 out.alpha[k]
             );
             assert!((out.depth[k] - depth).abs() < 1e-12);
+            // One surfel: no spread along the ray.
+            assert!((out.depth_sq[k] - depth * depth).abs() < 1e-10);
             let n = DVec3::from_array(out.normal[k]);
             assert!(
                 n.abs_diff_eq(DVec3::Z, 1e-12),
@@ -440,6 +444,10 @@ fn front_surfel_occludes_the_back_one() {
     assert!((out.alpha[k] - alpha).abs() < 1e-12);
     let depth = (a_front * 3.0 + (1.0 - a_front) * a_back * 5.0) / alpha;
     assert!((out.depth[k] - depth).abs() < 1e-12);
+    // The two weights' spread along the ray: α² (E[z²] − E[z]²) = w_front w_back (5 − 3)².
+    let (w_front, w_back) = (a_front, (1.0 - a_front) * a_back);
+    let spread = alpha * alpha * (out.depth_sq[k] - out.depth[k] * out.depth[k]);
+    assert!((spread - w_front * w_back * 4.0).abs() < 1e-10, "{spread}");
     let red = (a_front * sigmoid(-1.0) + (1.0 - a_front) * a_back * sigmoid(0.3)) / alpha;
     assert!((out.albedo[k][0] - red).abs() < 1e-12);
 }

@@ -215,6 +215,9 @@ pub struct TrainConfig {
     /// Weight of the depth–normal consistency loss.
     #[arg(long, default_value_t = TrainConfig::default().lambda_depth_normal)]
     pub lambda_depth_normal: f64,
+    /// Weight of the depth-distortion loss (2DGS), on depths in units of the object's radius.
+    #[arg(long, default_value_t = TrainConfig::default().lambda_distortion)]
+    pub lambda_distortion: f64,
 
     /// Cube-map face size of the learned environment.
     #[arg(long, default_value_t = TrainConfig::default().envmap_resolution)]
@@ -280,6 +283,7 @@ impl Default for TrainConfig {
             lambda_mask: 0.4,
             lambda_normal_smooth: 0.2,
             lambda_depth_normal: 0.1,
+            lambda_distortion: 0.0,
             envmap_resolution: 64,
             envmap_prefilter_interval: 10,
             checkpoint_interval: 1_000,
@@ -380,6 +384,7 @@ impl TrainConfig {
             ("lambda_mask", self.lambda_mask),
             ("lambda_normal_smooth", self.lambda_normal_smooth),
             ("lambda_depth_normal", self.lambda_depth_normal),
+            ("lambda_distortion", self.lambda_distortion),
             ("densify_grad_threshold", self.densify_grad_threshold),
             ("surfels_per_mask_pixel", self.surfels_per_mask_pixel),
             ("prune_opacity", self.prune_opacity),

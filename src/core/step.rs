@@ -65,6 +65,8 @@ pub struct StepPlan {
     pub normal_smooth: bool,
     /// Depth–normal consistency applies (λ > 0).
     pub depth_normal: bool,
+    /// The depth distortion applies (λ > 0).
+    pub distortion: bool,
 }
 
 /// Sums of each loss term over a view's pixels (and channels), before their means and weights.
@@ -83,6 +85,8 @@ pub struct LossSums {
     /// Σ (1 − N̂ · N_d) over the pixels where both normals exist, and their number.
     pub depth_normal: f64,
     pub depth_normal_pixels: f64,
+    /// Σ α² (E[z²] − E[z]²), the depth distortion in scene units².
+    pub distortion: f64,
 }
 
 impl StepPlan {
@@ -121,6 +125,7 @@ impl StepPlan {
             extra_l1: polar && !stokes_loss && polarized_view,
             normal_smooth: stage != Stage::Geometry && weights.lambda_normal_smooth > 0.0,
             depth_normal: weights.lambda_depth_normal > 0.0,
+            distortion: weights.lambda_distortion > 0.0,
         }
     }
 
@@ -150,6 +155,11 @@ impl StepPlan {
         if self.normal_smooth {
             let value = weights.lambda_normal_smooth * sums.normal_smooth / pixels;
             losses.insert("normal_smooth".to_owned(), value);
+        }
+        if self.distortion {
+            let scale = weights.distortion_scale * weights.distortion_scale;
+            let value = weights.lambda_distortion * sums.distortion / (pixels * scale);
+            losses.insert("distortion".to_owned(), value);
         }
         if self.depth_normal {
             let mean = if sums.depth_normal_pixels > 0.0 {

@@ -17,7 +17,7 @@ use crate::core::surfels::Surfels;
 /// Per-surfel gradient accumulators (`NUM_ACC`).
 pub(super) const NUM_ACC: u64 = 22;
 /// Per-pixel forward outputs (`NUM_OUT`).
-pub(super) const NUM_OUT: usize = 10;
+pub(super) const NUM_OUT: usize = 11;
 /// Per-surfel raw gradient outputs of `project_backward`.
 pub(super) const NUM_RAW_GRAD: usize = 16;
 /// Bytes of one `Proj` (7 × vec4).

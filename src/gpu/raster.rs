@@ -309,6 +309,7 @@ impl Rasterizer<'_> {
                 gb.albedo[k] = [v(5), v(6), v(7)];
                 gb.roughness[k] = v(8);
                 gb.ior[k] = v(9);
+                gb.depth_sq[k] = v(10);
             }
             for (seen, &c) in visible.iter_mut().zip(&result.tile_counts) {
                 *seen |= c > 0;
@@ -562,6 +563,7 @@ impl Rasterizer<'_> {
                     a3[2],
                     upstream.roughness[k],
                     upstream.ior[k],
+                    upstream.depth_sq[k],
                 ]
                 .map(|v| v as f32)
             })

@@ -41,7 +41,8 @@ pub fn running_in_ci() -> bool {
 }
 
 /// Upstream gradients of a `width × height` G-buffer, every entry uniform in [−1, 1), drawn
-/// pixel by pixel in field order (α, depth, normal, albedo, roughness, IoR, depth-normal).
+/// pixel by pixel in field order (α, depth, normal, albedo, roughness, IoR, depth-normal,
+/// squared depth).
 pub fn random_upstream(rng: &mut impl Rng, width: usize, height: usize) -> GBufferGrads {
     let mut g = GBuffers::zeros(width, height);
     let mut r = || rng.random_range(-1.0..1.0);
@@ -53,6 +54,7 @@ pub fn random_upstream(rng: &mut impl Rng, width: usize, height: usize) -> GBuff
         g.roughness[k] = r();
         g.ior[k] = r();
         g.depth_normal[k] = [r(), r(), r()];
+        g.depth_sq[k] = r();
     }
     g
 }

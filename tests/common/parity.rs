@@ -38,7 +38,7 @@ pub fn assert_forward_parity(got: &GBuffers, cpu: &GBuffers, what: &str) -> usiz
     let m3 = |a: [f64; 3], b: [f64; 3], floor: f64| {
         (0..3).map(|c| rel(a[c], b[c], floor)).fold(0.0, f64::max)
     };
-    let pixel_error = |k: usize| -> [f64; 6] {
+    let pixel_error = |k: usize| -> [f64; 7] {
         [
             rel(got.alpha[k], cpu.alpha[k], 0.1),
             rel(got.depth[k], cpu.depth[k], 0.1),
@@ -46,10 +46,19 @@ pub fn assert_forward_parity(got: &GBuffers, cpu: &GBuffers, what: &str) -> usiz
             m3(got.albedo[k], cpu.albedo[k], 0.1),
             rel(got.roughness[k], cpu.roughness[k], 0.1),
             rel(got.ior[k], cpu.ior[k], 0.1),
+            rel(got.depth_sq[k], cpu.depth_sq[k], 0.1),
         ]
     };
-    let names = ["alpha", "depth", "normal", "albedo", "roughness", "ior"];
-    let mut worst_covered = [0.0f64; 6];
+    let names = [
+        "alpha",
+        "depth",
+        "normal",
+        "albedo",
+        "roughness",
+        "ior",
+        "depth_sq",
+    ];
+    let mut worst_covered = [0.0f64; 7];
     let mut worst_tail = 0.0f64;
     let mut outliers = Vec::new();
     for k in 0..n {

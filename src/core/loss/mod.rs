@@ -42,6 +42,16 @@ pub struct DepthNormalLossValue {
     pub grad_depth_normal: Vec<f64>,
 }
 
+/// Value of the depth-distortion loss and its gradients with respect to the accumulated opacity,
+/// the α-normalized depth and the α-normalized squared depth.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DistortionLossValue {
+    pub value: f64,
+    pub grad_alpha: Vec<f64>,
+    pub grad_depth: Vec<f64>,
+    pub grad_depth_sq: Vec<f64>,
+}
+
 /// Weights of the loss terms (METHOD.md §6). Plain data; the trainer combines the terms.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LossWeights {
@@ -52,6 +62,10 @@ pub struct LossWeights {
     pub lambda_mask: f64,
     pub lambda_normal_smooth: f64,
     pub lambda_depth_normal: f64,
+    pub lambda_distortion: f64,
+    /// The length the depth distortion is measured in (the object's radius), so that its weight
+    /// does not depend on the capture's units.
+    pub distortion_scale: f64,
 }
 
 impl From<&TrainConfig> for LossWeights {
@@ -62,6 +76,22 @@ impl From<&TrainConfig> for LossWeights {
             lambda_mask: config.lambda_mask,
             lambda_normal_smooth: config.lambda_normal_smooth,
             lambda_depth_normal: config.lambda_depth_normal,
+            lambda_distortion: config.lambda_distortion,
+            distortion_scale: 1.0,
+        }
+    }
+}
+
+impl LossWeights {
+    /// The weights of `config` for an object of radius `radius` (the depth distortion's unit).
+    pub fn for_object(config: &TrainConfig, radius: f64) -> Self {
+        LossWeights {
+            distortion_scale: if radius > 0.0 && radius.is_finite() {
+                radius
+            } else {
+                1.0
+            },
+            ..LossWeights::from(config)
         }
     }
 }
@@ -221,6 +251,56 @@ pub fn mask_mse(alpha: &[f64], mask: &[f64]) -> LossValue {
     LossValue {
         value: value * inv_n,
         grad,
+    }
+}
+
+/// 2DGS's depth distortion `mean_p Σ_i Σ_j w_i w_j (z_i − z_j)² / 2` over the composited
+/// surfels of every pixel (weights `w_i = α_i T_i`, ray–surfel intersection depths `z_i`), in
+/// units of `scale²`: small where a pixel's weight sits at one depth, large where it is spread
+/// along the ray (semi-transparent layers, surfels seen through a hole). From the G-buffers alone:
+/// with `A = Σ w_i = alpha`, `E[z] = depth` and `E[z²] = depth_sq`, the double sum is
+/// `A² (E[z²] − E[z]²)`.
+///
+/// # Panics
+/// If the lengths differ.
+pub fn depth_distortion(
+    alpha: &[f64],
+    depth: &[f64],
+    depth_sq: &[f64],
+    scale: f64,
+) -> DistortionLossValue {
+    assert!(
+        alpha.len() == depth.len() && alpha.len() == depth_sq.len(),
+        "depth_distortion: alpha, depth and depth_sq lengths differ"
+    );
+    let norm = 1.0 / (alpha.len().max(1) as f64 * scale * scale);
+    let mut grad_alpha = vec![0.0; alpha.len()];
+    let mut grad_depth = vec![0.0; alpha.len()];
+    let mut grad_depth_sq = vec![0.0; alpha.len()];
+    let chunks = (
+        grad_alpha.par_chunks_mut(CHUNK),
+        grad_depth.par_chunks_mut(CHUNK),
+        grad_depth_sq.par_chunks_mut(CHUNK),
+    )
+        .into_par_iter();
+    let value = sum_in_chunk_order(chunks, |chunk, (ga, gd, gq)| {
+        let first = chunk * CHUNK;
+        let mut sum = 0.0;
+        for j in 0..ga.len() {
+            let (a, z) = (alpha[first + j], depth[first + j]);
+            let spread = depth_sq[first + j] - z * z;
+            sum += a * a * spread;
+            ga[j] = 2.0 * a * spread * norm;
+            gd[j] = -2.0 * a * a * z * norm;
+            gq[j] = a * a * norm;
+        }
+        sum
+    });
+    DistortionLossValue {
+        value: value * norm,
+        grad_alpha,
+        grad_depth,
+        grad_depth_sq,
     }
 }
 

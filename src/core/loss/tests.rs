@@ -266,6 +266,107 @@ fn mask_mse_of_known_values_and_gradient() {
     }
 }
 
+/// The (weight, depth) of each surfel a pixel composites, front to back.
+type Layers = Vec<(f64, f64)>;
+
+/// Per pixel, a few surfels' weights and depths, and the G-buffers they composite to: α = Σ w,
+/// depth = Σ w z / α, depth_sq = Σ w z² / α.
+fn composited(rng: &mut ChaCha8Rng, pixels: usize) -> (Vec<Layers>, [Vec<f64>; 3]) {
+    let layers: Vec<Layers> = (0..pixels)
+        .map(|_| {
+            let n = rng.random_range(0..4);
+            (0..n)
+                .map(|_| (rng.random_range(0.0..0.4), rng.random_range(2.0..6.0)))
+                .collect()
+        })
+        .collect();
+    let mut buffers = [vec![0.0; pixels], vec![0.0; pixels], vec![0.0; pixels]];
+    for (p, l) in layers.iter().enumerate() {
+        let a: f64 = l.iter().map(|(w, _)| w).sum();
+        buffers[0][p] = a;
+        if a > 0.0 {
+            buffers[1][p] = l.iter().map(|(w, z)| w * z).sum::<f64>() / a;
+            buffers[2][p] = l.iter().map(|(w, z)| w * z * z).sum::<f64>() / a;
+        }
+    }
+    (layers, buffers)
+}
+
+#[test]
+fn depth_distortion_is_the_pairwise_spread_of_the_weights() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let (layers, [alpha, depth, depth_sq]) = composited(&mut rng, W * H);
+        let scale = 0.7;
+        // 2DGS's ordered pairs, Σ_i Σ_{j<i} w_i w_j (z_i − z_j)², in units of the scale.
+        let pairwise: f64 = layers
+            .iter()
+            .map(|l| {
+                let mut sum = 0.0;
+                for (i, (wi, zi)) in l.iter().enumerate() {
+                    for (wj, zj) in &l[..i] {
+                        sum += wi * wj * (zi - zj) * (zi - zj);
+                    }
+                }
+                sum
+            })
+            .sum::<f64>()
+            / ((W * H) as f64 * scale * scale);
+        let r = depth_distortion(&alpha, &depth, &depth_sq, scale);
+        assert!(
+            (r.value - pairwise).abs() < 1e-12 * pairwise.max(1.0),
+            "{} vs {pairwise}",
+            r.value
+        );
+        assert!(pairwise > 0.0);
+    }
+    // One surfel, or all at one depth: no distortion.
+    let r = depth_distortion(&[0.8, 0.5], &[3.0, 2.0], &[9.0, 4.0], 1.0);
+    assert_eq!(r.value, 0.0);
+}
+
+#[test]
+fn depth_distortion_gradients_match_finite_differences() {
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let alpha = random_vec(&mut rng, W * H, 0.0, 1.0);
+        let depth = random_vec(&mut rng, W * H, 1.0, 5.0);
+        let depth_sq: Vec<f64> = depth
+            .iter()
+            .map(|z| z * z + rng.random_range(0.0..0.5))
+            .collect();
+        let scale = rng.random_range(0.5..2.0);
+        let r = depth_distortion(&alpha, &depth, &depth_sq, scale);
+        assert_gradient(
+            "depth_distortion wrt alpha",
+            &mut |a| depth_distortion(a, &depth, &depth_sq, scale).value,
+            &alpha,
+            &r.grad_alpha,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+        assert_gradient(
+            "depth_distortion wrt depth",
+            &mut |d| depth_distortion(&alpha, d, &depth_sq, scale).value,
+            &depth,
+            &r.grad_depth,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+        assert_gradient(
+            "depth_distortion wrt depth_sq",
+            &mut |q| depth_distortion(&alpha, &depth, q, scale).value,
+            &depth_sq,
+            &r.grad_depth_sq,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+    }
+}
+
 #[test]
 fn normal_smoothness_of_a_hand_example() {
     // 2×1 image: one horizontal pair, normals (0,0,1) → (0,1,0), so ‖Δ‖ = √2.
@@ -368,7 +469,16 @@ fn loss_weights_come_from_the_config() {
             lambda_mask: 0.4,
             lambda_normal_smooth: 0.2,
             lambda_depth_normal: 0.1,
+            lambda_distortion: config.lambda_distortion,
+            distortion_scale: 1.0,
         }
+    );
+    let object = LossWeights::for_object(&config, 2.5);
+    assert_eq!(object.distortion_scale, 2.5);
+    assert_eq!(object.lambda_stokes, 4.0);
+    assert_eq!(
+        LossWeights::for_object(&config, f64::NAN).distortion_scale,
+        1.0
     );
 }
 
@@ -442,12 +552,25 @@ fn chunked_losses_match_their_serial_definitions_for_any_thread_count() {
         .collect();
     let serial = terms.iter().sum::<f64>() / terms.len() as f64;
     assert!((dn.value - serial).abs() < 1e-12);
+    let alpha = random_vec(&mut rng, pixels, 0.0, 1.0);
+    let depth = random_vec(&mut rng, pixels, 1.0, 5.0);
+    let depth_sq: Vec<f64> = depth.iter().map(|z| z * z + 0.1).collect();
+    let distortion = depth_distortion(&alpha, &depth, &depth_sq, 1.0);
+    let serial = alpha
+        .iter()
+        .zip(&depth)
+        .zip(&depth_sq)
+        .map(|((a, z), q)| a * a * (q - z * z))
+        .sum::<f64>()
+        / pixels as f64;
+    assert!((distortion.value - serial).abs() < 1e-12);
     // Bit for bit the same on one thread and on three.
     let run = || {
         (
             l1(&pred, &target, None),
             mask_mse(&pred, &target),
             depth_normal_consistency(&normal, &depth_normal, None),
+            depth_distortion(&alpha, &depth, &depth_sq, 1.0),
         )
     };
     assert_eq!(on_threads(1, run), on_threads(3, run));

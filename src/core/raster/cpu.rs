@@ -26,13 +26,16 @@ use super::tiles::TileGrid;
 use super::{
     begin_backward, chain_to_raw, depth_normals, depth_upstream, unnormalize_upstream,
     validate_inputs, GBufferGrads, GBuffers, RasterError, RasterGrads, RasterSettings, RasterStats,
-    Rasterized, SavedForward,
+    Rasterized, SavedForward, NUM_PIXEL_SUMS,
 };
 use crate::core::camera::Camera;
 use crate::core::surfels::Surfels;
 
-/// Running sums per pixel: α, depth, then the features of [`Projected::features`].
-const NUM_SUMS: usize = 2 + NUM_FEATURES;
+/// Running sums per pixel ([`NUM_PIXEL_SUMS`]): α, depth, the features of
+/// [`Projected::features`], the squared depth.
+const NUM_SUMS: usize = NUM_PIXEL_SUMS;
+/// Where the squared depth's sum sits.
+const DEPTH_SQ: usize = NUM_SUMS - 1;
 
 /// The rayon cpu backend.
 #[derive(Clone, Copy, Debug, Default)]
@@ -256,6 +259,7 @@ fn forward_tile(
                 for f in 0..NUM_FEATURES {
                     sums[2 + f] += w * p.features[f];
                 }
+                sums[DEPTH_SQ] += w * hit.z * hit.z;
                 out.transmittance[li] = next_t;
                 out.contributors[li] = k as u32 + 1;
             }
@@ -384,6 +388,7 @@ impl CpuBackend {
                         gb.albedo[k] = [s[5] * inv, s[6] * inv, s[7] * inv];
                         gb.roughness[k] = s[8] * inv;
                         gb.ior[k] = s[9] * inv;
+                        gb.depth_sq[k] = s[DEPTH_SQ] * inv;
                     }
                 }
             }
@@ -529,6 +534,8 @@ fn backward_tile(
                     u += gs[1 + f] * p.features[f];
                     acc.features[f] += weight * gs[1 + f];
                 }
+                let g_depth_sq = gs[DEPTH_SQ - 1];
+                u += g_depth_sq * hit.z * hit.z;
                 let d_alpha = t_i * u - b_acc[li] / one_minus;
                 b_acc[li] += weight * u;
                 trans[li] = t_i;
@@ -540,7 +547,7 @@ fn backward_tile(
                     acc.opacity += hit.g * d_alpha;
                     -0.5 * hit.g * p.opacity * d_alpha
                 };
-                let gz = weight * gs[0];
+                let gz = weight * (gs[0] + 2.0 * hit.z * g_depth_sq);
                 if !hit.use3d {
                     // Filter branch: ρ_2d around the projected centre, z = centre depth. The
                     // plane quantities (s, t, 1/p.z) may be huge or infinite here: not touched.

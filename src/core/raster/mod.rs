@@ -134,6 +134,10 @@ pub struct GBuffers {
     pub roughness: Vec<f64>,
     /// α-normalized index of refraction.
     pub ior: Vec<f64>,
+    /// α-normalized second moment of the intersection depths, `Σ w_i z_i² / α`: with `depth` it
+    /// gives how far the composited depths spread along the ray (the depth-distortion loss,
+    /// [`crate::core::loss::depth_distortion`]).
+    pub depth_sq: Vec<f64>,
     /// Unit world normal from central differences of the back-projected depth map, facing the
     /// camera; zero on the border and where the pixel or one of its 4 neighbours has `α ≤ ε`.
     pub depth_normal: Vec<[f64; 3]>,
@@ -155,6 +159,7 @@ impl GBuffers {
             albedo: vec![[0.0; 3]; n],
             roughness: vec![0.0; n],
             ior: vec![0.0; n],
+            depth_sq: vec![0.0; n],
             depth_normal: vec![[0.0; 3]; n],
         }
     }
@@ -169,6 +174,7 @@ impl GBuffers {
             ("albedo", self.albedo.len()),
             ("roughness", self.roughness.len()),
             ("ior", self.ior.len()),
+            ("depth_sq", self.depth_sq.len()),
             ("depth_normal", self.depth_normal.len()),
         ];
         for (field, len) in lens {
@@ -199,6 +205,7 @@ impl GBuffers {
             + d3(&self.albedo, &other.albedo)
             + d1(&self.roughness, &other.roughness)
             + d1(&self.ior, &other.ior)
+            + d1(&self.depth_sq, &other.depth_sq)
             + d3(&self.depth_normal, &other.depth_normal)
     }
 
@@ -211,6 +218,7 @@ impl GBuffers {
             && f1(self.albedo.as_flattened())
             && f1(&self.roughness)
             && f1(&self.ior)
+            && f1(&self.depth_sq)
             && f1(self.depth_normal.as_flattened())
     }
 }
@@ -488,9 +496,14 @@ pub fn depth_upstream(
     grad
 }
 
+/// Running sums a host engine composites per pixel: α, depth, the features of
+/// [`project::Projected::features`], then the squared depth.
+pub const NUM_PIXEL_SUMS: usize = 3 + project::NUM_FEATURES;
+
 /// Pixel `k`'s upstream gradients before the α-normalization: `dL/dα` (the accumulated
 /// opacity's own, less `Σ_c g_c · out_c / α` where the pixel is normalized) and `dL/dS_c = g_c / α`
-/// on the running sums of depth, normal, albedo, roughness and IoR (zero where `α ≤ eps`).
+/// on the running sums of depth, normal, albedo, roughness, IoR and squared depth (zero where
+/// `α ≤ eps`).
 /// `depth_grad` is [`depth_upstream`]'s. Every host backend's backward starts each pixel here.
 pub fn unnormalize_upstream(
     gbuffers: &GBuffers,
@@ -498,10 +511,10 @@ pub fn unnormalize_upstream(
     depth_grad: &[f64],
     k: usize,
     eps: f64,
-) -> (f64, [f64; 9]) {
+) -> (f64, [f64; NUM_PIXEL_SUMS - 1]) {
     let a = gbuffers.alpha[k];
     let mut g_alpha = upstream.alpha[k];
-    let mut g_sums = [0.0; 9];
+    let mut g_sums = [0.0; NUM_PIXEL_SUMS - 1];
     if a > eps {
         let (n, al) = (upstream.normal[k], upstream.albedo[k]);
         let g = [
@@ -514,6 +527,7 @@ pub fn unnormalize_upstream(
             al[2],
             upstream.roughness[k],
             upstream.ior[k],
+            upstream.depth_sq[k],
         ];
         let (n, al) = (gbuffers.normal[k], gbuffers.albedo[k]);
         let out = [
@@ -526,10 +540,11 @@ pub fn unnormalize_upstream(
             al[2],
             gbuffers.roughness[k],
             gbuffers.ior[k],
+            gbuffers.depth_sq[k],
         ];
         let inv = 1.0 / a;
         let mut dot = 0.0;
-        for c in 0..9 {
+        for c in 0..NUM_PIXEL_SUMS - 1 {
             dot += g[c] * out[c];
             g_sums[c] = g[c] * inv;
         }

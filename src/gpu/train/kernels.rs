@@ -21,7 +21,7 @@ use crate::gpu::GpuError;
 
 /// Words of the step status (`STATUS_*` of train_common.wgsl and the sums from `SUM_FIRST`;
 /// word 0, the entries that fit, is read by the kernels only).
-pub(super) const STATUS_WORDS: usize = 16;
+pub(super) const STATUS_WORDS: usize = 17;
 pub(super) const STATUS_ENTRIES: usize = 1;
 pub(super) const STATUS_OVERFLOW: usize = 2;
 pub(super) const STATUS_NONFINITE: usize = 3;
@@ -100,7 +100,7 @@ wgsl_mirror! {
         lambda_depth_normal: f32,
         normalize_alpha_min: f32,
         shade_alpha_min: f32,
-        pad1: f32,
+        lambda_distortion: f32,
         rot0: [f32; 4],
         rot1: [f32; 4],
         rot2: [f32; 4],
@@ -151,7 +151,10 @@ impl TrainParamsGpu {
             lambda_depth_normal: when(plan.depth_normal, weights.lambda_depth_normal),
             normalize_alpha_min: settings.normalize_alpha_min as f32,
             shade_alpha_min: SHADE_ALPHA_MIN as f32,
-            pad1: 0.0,
+            lambda_distortion: when(
+                plan.distortion,
+                weights.lambda_distortion / (weights.distortion_scale * weights.distortion_scale),
+            ),
             rot0: v4(r.x_axis),
             rot1: v4(r.y_axis),
             rot2: v4(r.z_axis),

@@ -457,6 +457,7 @@ impl<'g> DeviceTrainer<'g> {
                 normal_smooth: sum(4),
                 depth_normal: sum(5),
                 depth_normal_pixels: sum(6),
+                distortion: sum(8),
             },
             angle_grad: sum(7),
             tile_entries: u64::from(status[STATUS_ENTRIES]),

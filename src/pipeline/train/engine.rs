@@ -22,7 +22,6 @@ use crate::core::envmap::{CubeMap, EnvGrad, PrefilterPlan, PreparedEnv};
 use crate::core::events::Stage;
 use crate::core::gridmap::GridMap;
 use crate::core::light::LightProbe;
-use crate::core::loss::LossWeights;
 use crate::core::optim::AdamConfig;
 use crate::gpu::{DeviceStep, DeviceTrainer, GpuError};
 
@@ -67,7 +66,7 @@ impl<'r> StepEngine<'r> {
         let trainer = DeviceTrainer::new(
             gpu,
             run.settings,
-            LossWeights::from(run.config),
+            run.loss_weights,
             AdamConfig::default(),
             run.lut,
             &run.targets,
@@ -195,7 +194,7 @@ impl<'r> StepEngine<'r> {
         let it = state.iteration;
         let view = &run.targets[target];
         let camera = &run.capture.views[view.view].camera;
-        let weights = LossWeights::from(run.config);
+        let weights = run.loss_weights;
         let rates = run.surfel_rates(stage, it);
         let outcome = match self {
             StepEngine::Host => {

@@ -266,6 +266,17 @@ fn gbuffer_losses(
             weights.lambda_normal_smooth,
         );
     }
+    if plan.distortion {
+        let d = loss::depth_distortion(&g.alpha, &g.depth, &g.depth_sq, weights.distortion_scale);
+        losses.insert("distortion".to_owned(), weights.lambda_distortion * d.value);
+        add_into(&mut up.alpha, &d.grad_alpha, weights.lambda_distortion);
+        add_into(&mut up.depth, &d.grad_depth, weights.lambda_distortion);
+        add_into(
+            &mut up.depth_sq,
+            &d.grad_depth_sq,
+            weights.lambda_distortion,
+        );
+    }
     if plan.depth_normal {
         let dn = loss::depth_normal_consistency(
             g.normal.as_flattened(),

@@ -45,6 +45,7 @@ use crate::core::envmap::{EnvMapError, PrefilterPlan, PreparedEnv, WorldUp};
 use crate::core::events::{Stage, TrainEvent};
 use crate::core::gridmap::GridMap;
 use crate::core::light::LightProbe;
+use crate::core::loss::LossWeights;
 use crate::core::mesh::TriangleMesh;
 use crate::core::optim::{
     Adam, AdamConfig, LearningRates, OptimError, ENVMAP_GROUP, POLARIZER_GROUP,
@@ -263,6 +264,8 @@ struct Run<'a> {
     plan: Arc<PrefilterPlan>,
     targets: Vec<ViewTarget<'a>>,
     learning_rates: LearningRates,
+    /// The loss weights, the depth distortion measured in the object's radius.
+    loss_weights: LossWeights,
     densify_rules: DensifyRules,
     model_dir: &'a Path,
 }
@@ -363,6 +366,7 @@ pub fn train_on(
         plan: prefilter_plan(config.envmap_resolution as usize, config.fresnel_irradiance)?,
         targets,
         learning_rates: LearningRates::from_config(config, bounds.radius),
+        loss_weights: LossWeights::for_object(config, bounds.radius),
         densify_rules: DensifyRules::for_extent(
             bounds.radius,
             config.densify_grad_threshold,

@@ -31,7 +31,7 @@ use tracing::info_span;
 
 use self::tile::{
     BackwardScratch, ForwardScratch, LocalGrad, PixelConsts, PixelUpstream, PlaneFrame, Splat,
-    TileOutput, NUM_SUMS, TILE, TILE_PIXELS,
+    TileOutput, DEPTH_SQ, NUM_SUMS, TILE, TILE_PIXELS,
 };
 use super::project::{self, Projected, ProjectionCamera};
 use super::tiles::TileGrid;
@@ -287,27 +287,31 @@ fn assemble(gb: &mut GBuffers, grid: &TileGrid, sums: &[f32], eps: f64) {
         gb.albedo.par_chunks_mut(w),
         gb.roughness.par_chunks_mut(w),
         gb.ior.par_chunks_mut(w),
+        gb.depth_sq.par_chunks_mut(w),
     )
         .into_par_iter()
         .enumerate()
-        .for_each(|(y, (alpha, depth, normal, albedo, roughness, ior))| {
-            let (ty, ly) = (y / TILE, y % TILE);
-            for x in 0..w {
-                let t = ty * grid.nx + x / TILE;
-                let li = ly * TILE + x % TILE;
-                let s = |f: usize| f64::from(sums[(t * NUM_SUMS + f) * TILE_PIXELS + li]);
-                let a = s(0);
-                alpha[x] = a;
-                if a > eps {
-                    let inv = 1.0 / a;
-                    depth[x] = s(1) * inv;
-                    normal[x] = [s(2) * inv, s(3) * inv, s(4) * inv];
-                    albedo[x] = [s(5) * inv, s(6) * inv, s(7) * inv];
-                    roughness[x] = s(8) * inv;
-                    ior[x] = s(9) * inv;
+        .for_each(
+            |(y, (alpha, depth, normal, albedo, roughness, ior, depth_sq))| {
+                let (ty, ly) = (y / TILE, y % TILE);
+                for x in 0..w {
+                    let t = ty * grid.nx + x / TILE;
+                    let li = ly * TILE + x % TILE;
+                    let s = |f: usize| f64::from(sums[(t * NUM_SUMS + f) * TILE_PIXELS + li]);
+                    let a = s(0);
+                    alpha[x] = a;
+                    if a > eps {
+                        let inv = 1.0 / a;
+                        depth[x] = s(1) * inv;
+                        normal[x] = [s(2) * inv, s(3) * inv, s(4) * inv];
+                        albedo[x] = [s(5) * inv, s(6) * inv, s(7) * inv];
+                        roughness[x] = s(8) * inv;
+                        ior[x] = s(9) * inv;
+                        depth_sq[x] = s(DEPTH_SQ) * inv;
+                    }
                 }
-            }
-        });
+            },
+        );
 }
 
 impl FastBackend {

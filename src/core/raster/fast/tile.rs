@@ -24,7 +24,7 @@
 use super::lanes::{exp, F32x8, F64x8, Mask8, LANES};
 use super::SimdPath;
 use crate::core::raster::project::{Projected, ProjectedGrad, NUM_FEATURES};
-use crate::core::raster::RasterSettings;
+use crate::core::raster::{RasterSettings, NUM_PIXEL_SUMS};
 
 /// Tile edge in pixels.
 pub const TILE: usize = 16;
@@ -32,9 +32,11 @@ pub const TILE: usize = 16;
 pub const TILE_PIXELS: usize = TILE * TILE;
 /// Per-pixel state arrays: a tile plus one group of padding.
 const PADDED: usize = TILE_PIXELS + LANES;
-/// Running sums per pixel: α, depth, then the features of [`Projected::features`].
-pub const NUM_SUMS: usize = 2 + NUM_FEATURES;
-/// Per-pixel upstream gradients of the backward replay: depth, then the features.
+/// Running sums per pixel: α, depth, the features of [`Projected::features`], the squared depth.
+pub const NUM_SUMS: usize = NUM_PIXEL_SUMS;
+/// Where the squared depth's sum sits.
+pub const DEPTH_SQ: usize = NUM_SUMS - 1;
+/// Per-pixel upstream gradients of the backward replay: depth, the features, the squared depth.
 const NUM_PIXEL_GRADS: usize = NUM_SUMS - 1;
 
 /// One surfel's projection as the per-pixel loops read it: f32, in the surfel's own frame.
@@ -385,6 +387,7 @@ fn forward_body(
                 for (f, feature) in features.iter().enumerate() {
                     add(&mut s.sums, 2 + f, w * *feature);
                 }
+                add(&mut s.sums, DEPTH_SQ, (w * hit.z * hit.z).and(comp));
                 comp.select_f64(next_t, t).store(&mut s.trans[base..]);
                 let counts = comp.select_u32(entry_count, &s.contrib[base..]);
                 s.contrib[base..base + LANES].copy_from_slice(&counts);
@@ -613,6 +616,8 @@ fn backward_body(
                     u += g * *feature;
                     acc.features[f] += (weight * g).and(valid);
                 }
+                let g_depth_sq = gs(DEPTH_SQ - 1);
+                u += g_depth_sq * hit.z * hit.z;
                 let d_alpha = t_i * u - b_acc / one_minus;
                 valid
                     .select(b_acc + weight * u, b_acc)
@@ -623,7 +628,7 @@ fn backward_body(
                 let free = valid.and_not(hit.clamped);
                 acc.opacity += (hit.g * d_alpha).and(free);
                 let g_rho = (hit.g * sp.opacity * d_alpha * -0.5).and(free);
-                let gz = weight * g_depth;
+                let gz = weight * (g_depth + g_depth_sq * hit.z * 2.0);
                 // Filter branch: ρ_2d around the projected centre, z = centre depth.
                 let filter = valid.and_not(hit.use3d);
                 if filter.any() {

@@ -440,4 +440,9 @@ fn the_loss_budget_scores_every_replacement() {
         .map(|b| b.pixels)
         .sum();
     assert_eq!(banded, normals.pixels);
+    // The trained surface lies near the true one on most covered pixels.
+    let depths = &report.depths;
+    assert!(depths.pixels > 100, "{depths:?}");
+    assert!(depths.median_abs_offset < 0.1, "{depths:?}");
+    assert!(depths.far_behind_share + depths.far_in_front_share < 0.5);
 }

@@ -5,7 +5,8 @@
 //! variant against the captured view, and against the relit ground truth under the relighting
 //! map, says what each component costs. The normals' errors are given as a distribution (mean,
 //! median, 90th and 99th percentiles, cosine distance) and by distance to the silhouette, where
-//! heavy tails live.
+//! heavy tails live; the depths' as offsets from the true surface, which tell a surface seen
+//! through a hole in the learned one (far behind) from a normal that is merely tilted.
 //!
 //! Every variant shades through the same path as rendering (`Backend::shade` on G-buffers, the
 //! light GridMap over an environment with the model's mesh for occlusion), so a variant differs
@@ -108,6 +109,27 @@ pub struct NormalStats {
     pub by_silhouette_distance: Vec<SilhouetteBand>,
 }
 
+/// How the learned depth departs from the true surface, over every test view's pixels that both
+/// cover (the object's mask and `α ≥ ½`), in units of the object's radius.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct DepthStats {
+    pub pixels: usize,
+    /// Median of the learned minus the true z-depth: positive behind the surface.
+    pub median_offset: f64,
+    /// Median of its absolute value.
+    pub median_abs_offset: f64,
+    /// Share of the pixels more than [`FAR_OFFSET`] behind the true surface: the learned surface
+    /// has a hole there, or layers that average to a depth inside the object.
+    pub far_behind_share: f64,
+    /// Share of the pixels more than [`FAR_OFFSET`] in front of it.
+    pub far_in_front_share: f64,
+    /// Normal MAE at the pixels far behind.
+    pub far_behind_normal_mae_degrees: f64,
+}
+
+/// Depth offset, in object radii, beyond which [`DepthStats`] counts a pixel as far off.
+pub const FAR_OFFSET: f64 = 0.05;
+
 /// The loss budget.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Diagnosis {
@@ -115,6 +137,7 @@ pub struct Diagnosis {
     /// `learned` first, then each replacement.
     pub variants: Vec<Variant>,
     pub normals: NormalStats,
+    pub depths: DepthStats,
 }
 
 /// Distance bands of [`NormalStats::by_silhouette_distance`], pixels.
@@ -331,6 +354,8 @@ pub fn diagnose(
     // Per variant: summed S0 PSNR and views, summed relit PSNR and views.
     let mut sums = [(0.0, 0usize, 0.0, 0usize); VARIANTS.len()];
     let mut normal_errors: Vec<(f64, f64, f64)> = Vec::new();
+    let mut depth_offsets: Vec<(f64, f64)> = Vec::new();
+    let radius = capture.object_bounds().radius;
     for truth_view in &views {
         let camera = &truth_view.view.camera;
         let raster = scene
@@ -338,6 +363,7 @@ pub fn diagnose(
             .forward(scene.surfels, camera, &scene.settings)?;
         let g = &raster.gbuffers;
         collect_normal_errors(truth_view, g, &mut normal_errors);
+        collect_depth_offsets(truth_view, g, radius, &mut depth_offsets);
         for ((name, replace), sum) in VARIANTS.iter().zip(sums.iter_mut()) {
             let light: &dyn LightProbe = match (replace.light, &truth_lit) {
                 (true, Some(lit)) => lit.light(),
@@ -381,6 +407,7 @@ pub fn diagnose(
         test_views: views.len(),
         variants,
         normals: normal_stats(normal_errors),
+        depths: depth_stats(depth_offsets),
     })
 }
 
@@ -428,6 +455,51 @@ fn collect_normal_errors(truth: &TruthView, g: &GBuffers, out: &mut Vec<(f64, f6
         }
         let cos = gt.normalize().dot(learned.normalize()).abs().min(1.0);
         out.push((cos.acos().to_degrees(), 1.0 - cos, distance));
+    }
+}
+
+/// Each covered object pixel's depth offset from the truth (object radii, positive behind) and
+/// its normal error (degrees).
+fn collect_depth_offsets(truth: &TruthView, g: &GBuffers, radius: f64, out: &mut Vec<(f64, f64)>) {
+    let scale = if radius > 0.0 { 1.0 / radius } else { 1.0 };
+    for p in 0..g.alpha.len() {
+        let true_depth = truth.depth[p];
+        if !truth.mask[p] || true_depth <= 0.0 || g.alpha[p] < 0.5 {
+            continue;
+        }
+        let gt = DVec3::from_slice(&truth.normal[3 * p..3 * p + 3]);
+        let learned = DVec3::from_array(g.normal[p]);
+        let error = if gt.length_squared() > 0.0 && learned.length_squared() > 0.0 {
+            let cos = gt.normalize().dot(learned.normalize()).abs().min(1.0);
+            cos.acos().to_degrees()
+        } else {
+            f64::NAN
+        };
+        out.push(((g.depth[p] - true_depth) * scale, error));
+    }
+}
+
+fn depth_stats(offsets: Vec<(f64, f64)>) -> DepthStats {
+    let n = offsets.len();
+    let share = |f: &dyn Fn(f64) -> bool| {
+        offsets.iter().filter(|o| f(o.0)).count() as f64 / n.max(1) as f64
+    };
+    let behind: Vec<f64> = offsets
+        .iter()
+        .filter(|o| o.0 > FAR_OFFSET && o.1.is_finite())
+        .map(|o| o.1)
+        .collect();
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v.get(v.len() / 2).copied().unwrap_or(0.0)
+    };
+    DepthStats {
+        pixels: n,
+        median_offset: median(offsets.iter().map(|o| o.0).collect()),
+        median_abs_offset: median(offsets.iter().map(|o| o.0.abs()).collect()),
+        far_behind_share: share(&|d| d > FAR_OFFSET),
+        far_in_front_share: share(&|d| d < -FAR_OFFSET),
+        far_behind_normal_mae_degrees: behind.iter().sum::<f64>() / behind.len().max(1) as f64,
     }
 }
 
@@ -542,5 +614,21 @@ mod tests {
         assert_eq!(stats.by_silhouette_distance[0].pixels, 1);
         assert_eq!(stats.by_silhouette_distance[0].mae_degrees, 91.0);
         assert_eq!(stats.by_silhouette_distance[4].pixels, 99);
+    }
+
+    #[test]
+    fn depth_statistics_find_the_pixels_seen_through_a_hole() {
+        // 90 pixels on the surface (a little behind it), 10 far behind with 40° normals, 5 far
+        // in front.
+        let mut offsets: Vec<(f64, f64)> = (0..90).map(|_| (0.01, 2.0)).collect();
+        offsets.extend((0..10).map(|_| (0.5, 40.0)));
+        offsets.extend((0..5).map(|_| (-0.2, 10.0)));
+        let stats = depth_stats(offsets);
+        assert_eq!(stats.pixels, 105);
+        assert_eq!(stats.median_offset, 0.01);
+        assert_eq!(stats.median_abs_offset, 0.01);
+        assert!((stats.far_behind_share - 10.0 / 105.0).abs() < 1e-12);
+        assert!((stats.far_in_front_share - 5.0 / 105.0).abs() < 1e-12);
+        assert_eq!(stats.far_behind_normal_mae_degrees, 40.0);
     }
 }

@@ -12,7 +12,7 @@ use clap::Args;
 use phygap::core::resolution::Resolution;
 use phygap::io::capture::{self, LoadOptions};
 use phygap::io::model::Model;
-use phygap::pipeline::diagnose::{diagnose, DiagnoseTruth, Diagnosis};
+use phygap::pipeline::diagnose::{diagnose, DiagnoseTruth, Diagnosis, FAR_OFFSET};
 use phygap::pipeline::reconstruction::Reconstruction;
 
 #[derive(Args, Debug)]
@@ -90,5 +90,18 @@ fn describe(report: &Diagnosis) -> String {
             band.mae_degrees
         ));
     }
+    let d = &report.depths;
+    let percent = |share: f64| 100.0 * share;
+    let far = FAR_OFFSET;
+    text.push_str(&format!(
+        "depths over {} pixels (object radii): median offset {:+.4}, median |offset| {:.4}; \
+         {:.2}% more than {far} behind the surface (normal MAE there {:.1}°), {:.2}% more than {far} in front\n",
+        d.pixels,
+        d.median_offset,
+        d.median_abs_offset,
+        percent(d.far_behind_share),
+        d.far_behind_normal_mae_degrees,
+        percent(d.far_in_front_share)
+    ));
     text
 }

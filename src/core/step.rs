@@ -157,8 +157,7 @@ impl StepPlan {
             losses.insert("normal_smooth".to_owned(), value);
         }
         if self.distortion {
-            let scale = weights.distortion_scale * weights.distortion_scale;
-            let value = weights.lambda_distortion * sums.distortion / (pixels * scale);
+            let value = weights.distortion_per_scene_unit() * sums.distortion / pixels;
             losses.insert("distortion".to_owned(), value);
         }
         if self.depth_normal {

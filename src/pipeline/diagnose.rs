@@ -439,22 +439,22 @@ fn shaded_psnr(
     })
 }
 
+/// `|cos|` of the angle between pixel `p`'s true and learned normals (sign-blind, as `phygap
+/// eval`), or `None` where either is absent.
+fn normal_agreement(truth: &TruthView, g: &GBuffers, p: usize) -> Option<f64> {
+    let gt = DVec3::from_slice(&truth.normal[3 * p..3 * p + 3]);
+    let learned = DVec3::from_array(g.normal[p]);
+    (gt.length_squared() > 0.0 && learned.length_squared() > 0.0)
+        .then(|| gt.normalize().dot(learned.normalize()).abs().min(1.0))
+}
+
 /// Each object pixel's normal error (degrees), cosine distance and distance to the silhouette.
 fn collect_normal_errors(truth: &TruthView, g: &GBuffers, out: &mut Vec<(f64, f64, f64)>) {
     let distance = silhouette_distance(&truth.mask, g.width, g.height);
-    let pixels = truth
-        .normal
-        .chunks_exact(3)
-        .zip(&g.normal)
-        .zip(&truth.mask)
-        .zip(distance);
-    for (((gt, learned), &object), distance) in pixels {
-        let (gt, learned) = (DVec3::new(gt[0], gt[1], gt[2]), DVec3::from_array(*learned));
-        if !object || gt.length_squared() == 0.0 || learned.length_squared() == 0.0 {
-            continue;
+    for (p, (&object, distance)) in truth.mask.iter().zip(distance).enumerate() {
+        if let Some(cos) = normal_agreement(truth, g, p).filter(|_| object) {
+            out.push((cos.acos().to_degrees(), 1.0 - cos, distance));
         }
-        let cos = gt.normalize().dot(learned.normalize()).abs().min(1.0);
-        out.push((cos.acos().to_degrees(), 1.0 - cos, distance));
     }
 }
 
@@ -467,14 +467,7 @@ fn collect_depth_offsets(truth: &TruthView, g: &GBuffers, radius: f64, out: &mut
         if !truth.mask[p] || true_depth <= 0.0 || g.alpha[p] < 0.5 {
             continue;
         }
-        let gt = DVec3::from_slice(&truth.normal[3 * p..3 * p + 3]);
-        let learned = DVec3::from_array(g.normal[p]);
-        let error = if gt.length_squared() > 0.0 && learned.length_squared() > 0.0 {
-            let cos = gt.normalize().dot(learned.normalize()).abs().min(1.0);
-            cos.acos().to_degrees()
-        } else {
-            f64::NAN
-        };
+        let error = normal_agreement(truth, g, p).map_or(f64::NAN, |cos| cos.acos().to_degrees());
         out.push(((g.depth[p] - true_depth) * scale, error));
     }
 }

@@ -83,6 +83,11 @@ impl From<&TrainConfig> for LossWeights {
 }
 
 impl LossWeights {
+    /// The depth distortion's weight on depths in scene units: λ / radius².
+    pub fn distortion_per_scene_unit(&self) -> f64 {
+        self.lambda_distortion / (self.distortion_scale * self.distortion_scale)
+    }
+
     /// The weights of `config` for an object of radius `radius` (the depth distortion's unit).
     pub fn for_object(config: &TrainConfig, radius: f64) -> Self {
         LossWeights {

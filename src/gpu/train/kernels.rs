@@ -151,10 +151,7 @@ impl TrainParamsGpu {
             lambda_depth_normal: when(plan.depth_normal, weights.lambda_depth_normal),
             normalize_alpha_min: settings.normalize_alpha_min as f32,
             shade_alpha_min: SHADE_ALPHA_MIN as f32,
-            lambda_distortion: when(
-                plan.distortion,
-                weights.lambda_distortion / (weights.distortion_scale * weights.distortion_scale),
-            ),
+            lambda_distortion: when(plan.distortion, weights.distortion_per_scene_unit()),
             rot0: v4(r.x_axis),
             rot1: v4(r.y_axis),
             rot2: v4(r.z_axis),

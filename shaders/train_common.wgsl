@@ -26,5 +26,6 @@ const SLOT_DEPTH_NORMAL: u32 = 5u;
 const SLOT_DEPTH_NORMAL_COUNT: u32 = 6u;
 const SLOT_ANGLE: u32 = 7u;
 const SLOT_DISTORTION: u32 = 8u;
-const SLOTS: u32 = 9u;
+const SLOT_AOLP: u32 = 9u;
+const SLOTS: u32 = 10u;
 

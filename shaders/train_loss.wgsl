@@ -10,7 +10,8 @@
 //   `ssim_adjoint_h`    the adjoints blurred along rows;
 //   `loss_chain`        the adjoints blurred along columns, and every other term at the pixel:
 //                       L1, mask MSE, the Stokes L1 or the extra L1 of partial views, edge-aware
-//                       normal smoothness, depth distortion, depth–normal consistency (its
+//                       normal smoothness, depth distortion, the AoLP normal prior,
+//                       depth–normal consistency (its
 //                       gradients before the
 //                       factor λ / valid pixels, which is known only after the reduction), and
 //                       the chain from the prediction to the Stokes images, α and albedo, with the
@@ -47,6 +48,8 @@ const SSIM_C1: f32 = 0.0001;
 const SSIM_C2: f32 = 0.0009;
 const NORMAL_SMOOTH_EPS: f32 = 1e-6;
 const MIN_NORMAL_NORM: f32 = 1e-12;
+// `loss::POLARIZATION_MIN_S0`.
+const POLARIZATION_MIN_S0: f32 = 1e-4;
 
 var<workgroup> wg_sum: array<f32, THREADS>;
 
@@ -403,6 +406,40 @@ fn loss_chain(
             up[0] += 2.0 * alpha * spread * scale;
             up[1] -= 2.0 * alpha * alpha * z * scale;
             up[10] += alpha * alpha * scale;
+        }
+        // The AoLP prior DoLP² sin² 2(ψ − φ) on the object's pixels (`loss::aolp_normal`):
+        // φ is the rendered normal's azimuth in the pixel's Stokes frame, ψ and the DoLP are
+        // measured (channel means of the targets); weighted by λ / pixels.
+        let lambda_aolp = train.lambda_aolp;
+        if lambda_aolp > 0.0 && m >= 0.5 {
+            let s0 = max((tgt.x + tgt.y + tgt.z) / 3.0, POLARIZATION_MIN_S0);
+            let t1 = target_rgb(p, 4u);
+            let t2 = target_rgb(p, 7u);
+            var c = (t1.x + t1.y + t1.z) / 3.0 / s0;
+            var s = (t2.x + t2.y + t2.z) / 3.0 / s0;
+            let dolp = sqrt(c * c + s * s);
+            if dolp > 1.0 {
+                c /= dolp;
+                s /= dolp;
+            }
+            let d = normalize(to_world(camera_dir(p)));
+            // The Stokes frame of `camera::stokes_frame`; the camera's up is −(OpenCV down).
+            let frame_x = normalize(cross(d, -train.rot1.xyz));
+            let frame_y = cross(frame_x, d);
+            let n = gbuf_vec3(p, 2u);
+            let a = dot(n, frame_x);
+            let b = dot(n, frame_y);
+            let q = a * a + b * b;
+            if (c != 0.0 || s != 0.0) && q >= 1e-24 {
+                let r = (s * (a * a - b * b) - 2.0 * c * a * b) / q;
+                sums[SLOT_AOLP] = r * r;
+                let dr_da = (2.0 * s * a - 2.0 * c * b - 2.0 * r * a) / q;
+                let dr_db = (-2.0 * s * b - 2.0 * c * a - 2.0 * r * b) / q;
+                let g = (frame_x * dr_da + frame_y * dr_db) * (2.0 * r * lambda_aolp * inv_p);
+                up[2] += g.x;
+                up[3] += g.y;
+                up[4] += g.z;
+            }
         }
         for (var c = 0u; c < NUM_OUT; c++) {
             up_partial[NUM_OUT * p + c] = up[c];

@@ -10,11 +10,11 @@ struct TrainParams {
     pixels: u32,
     groups: u32,
     // Flags (1/0): shaded (PolarDR or warm-up stage; plain 2DGS: 0), S1/S2 targets used, a
-    // polarizer angle θ applies.
+    // polarizer angle θ applies; the weight of the AoLP prior (0 when unused).
     shaded: u32,
     stokes_loss: u32,
     has_theta: u32,
-    pad0: u32,
+    lambda_aolp: f32,
     // cos 2θ, sin 2θ, the unpolarized scale k (½ for a view behind a polarizer fitted as
     // unpolarized, else 1), the weight of the extra L1 on Î(θ) (partial views in the PolarDR
     // stage).

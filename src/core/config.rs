@@ -218,6 +218,10 @@ pub struct TrainConfig {
     /// Weight of the depth-distortion loss (2DGS), on depths in units of the object's radius.
     #[arg(long, default_value_t = TrainConfig::default().lambda_distortion)]
     pub lambda_distortion: f64,
+    /// Weight of polarization's normal-azimuth prior (the AoLP lies along or across the
+    /// rendered normal's azimuth), on views with full Stokes measurements, in every stage.
+    #[arg(long, default_value_t = TrainConfig::default().lambda_aolp)]
+    pub lambda_aolp: f64,
 
     /// Cube-map face size of the learned environment.
     #[arg(long, default_value_t = TrainConfig::default().envmap_resolution)]
@@ -284,6 +288,7 @@ impl Default for TrainConfig {
             lambda_normal_smooth: 0.2,
             lambda_depth_normal: 0.1,
             lambda_distortion: 0.0,
+            lambda_aolp: 3.0,
             envmap_resolution: 64,
             envmap_prefilter_interval: 10,
             checkpoint_interval: 1_000,
@@ -385,6 +390,7 @@ impl TrainConfig {
             ("lambda_normal_smooth", self.lambda_normal_smooth),
             ("lambda_depth_normal", self.lambda_depth_normal),
             ("lambda_distortion", self.lambda_distortion),
+            ("lambda_aolp", self.lambda_aolp),
             ("densify_grad_threshold", self.densify_grad_threshold),
             ("surfels_per_mask_pixel", self.surfels_per_mask_pixel),
             ("prune_opacity", self.prune_opacity),

@@ -67,6 +67,8 @@ pub struct StepPlan {
     pub depth_normal: bool,
     /// The depth distortion applies (λ > 0).
     pub distortion: bool,
+    /// The AoLP normal-azimuth prior applies (a view with Stokes targets, λ > 0).
+    pub aolp: bool,
 }
 
 /// Sums of each loss term over a view's pixels (and channels), before their means and weights.
@@ -87,6 +89,8 @@ pub struct LossSums {
     pub depth_normal_pixels: f64,
     /// Σ α² (E[z²] − E[z]²), the depth distortion in scene units².
     pub distortion: f64,
+    /// Σ DoLP² sin² 2(ψ − φ), the AoLP residual of the rendered normal's azimuth φ.
+    pub aolp: f64,
 }
 
 impl StepPlan {
@@ -126,6 +130,7 @@ impl StepPlan {
             normal_smooth: stage != Stage::Geometry && weights.lambda_normal_smooth > 0.0,
             depth_normal: weights.lambda_depth_normal > 0.0,
             distortion: weights.lambda_distortion > 0.0,
+            aolp: target.stokes.is_some() && weights.lambda_aolp > 0.0,
         }
     }
 
@@ -159,6 +164,10 @@ impl StepPlan {
         if self.distortion {
             let value = weights.distortion_per_scene_unit() * sums.distortion / pixels;
             losses.insert("distortion".to_owned(), value);
+        }
+        if self.aolp {
+            let value = weights.lambda_aolp * sums.aolp / pixels;
+            losses.insert("aolp".to_owned(), value);
         }
         if self.depth_normal {
             let mean = if sums.depth_normal_pixels > 0.0 {

@@ -14,8 +14,10 @@ pub mod ssim;
 
 pub use ssim::{ssim, ssim_map};
 
+use glam::DVec3;
 use rayon::prelude::*;
 
+use crate::core::camera::Camera;
 use crate::core::config::TrainConfig;
 
 /// A scalar loss and its gradient with respect to the (first) differentiable input.
@@ -63,6 +65,8 @@ pub struct LossWeights {
     pub lambda_normal_smooth: f64,
     pub lambda_depth_normal: f64,
     pub lambda_distortion: f64,
+    /// Weight of the AoLP normal-azimuth prior ([`aolp_normal`]).
+    pub lambda_aolp: f64,
     /// The length the depth distortion is measured in (the object's radius), so that its weight
     /// does not depend on the capture's units.
     pub distortion_scale: f64,
@@ -77,6 +81,7 @@ impl From<&TrainConfig> for LossWeights {
             lambda_normal_smooth: config.lambda_normal_smooth,
             lambda_depth_normal: config.lambda_depth_normal,
             lambda_distortion: config.lambda_distortion,
+            lambda_aolp: config.lambda_aolp,
             distortion_scale: 1.0,
         }
     }
@@ -464,3 +469,86 @@ pub fn depth_normal_consistency(
 
 #[cfg(test)]
 mod tests;
+
+/// The floor of S0 in the DoLP of [`measured_polarization`] (a black pixel's S1 and S2 are noise).
+pub const POLARIZATION_MIN_S0: f64 = 1e-4;
+
+/// The measured `DoLP (cos 2ψ, sin 2ψ) = (S1, S2) / S0` of each pixel from a view's interleaved
+/// RGB Stokes targets (the channel means; the DoLP clamped to 1, S0 floored at
+/// [`POLARIZATION_MIN_S0`]), and zero where the mask is below ½ (not the object's).
+pub fn measured_polarization(s0: &[f32], s1: &[f32], s2: &[f32], mask: &[f32]) -> Vec<[f64; 2]> {
+    let mean = |v: &[f32], p: usize| {
+        (f64::from(v[3 * p]) + f64::from(v[3 * p + 1]) + f64::from(v[3 * p + 2])) / 3.0
+    };
+    (0..mask.len())
+        .into_par_iter()
+        .map(|p| {
+            if mask[p] < 0.5 {
+                return [0.0, 0.0];
+            }
+            let s0 = mean(s0, p).max(POLARIZATION_MIN_S0);
+            let (c, s) = (mean(s1, p) / s0, mean(s2, p) / s0);
+            let dolp = c.hypot(s);
+            let k = if dolp > 1.0 { 1.0 / dolp } else { 1.0 };
+            [c * k, s * k]
+        })
+        .collect()
+}
+
+/// The normal azimuth prior of polarization (PolGS, PANDORA): a surface reflects light polarized
+/// along its normal's azimuth φ in the pixel's Stokes frame (diffuse) or across it (specular),
+/// so the measured AoLP ψ satisfies 2ψ ≡ 2φ (mod 2π) for any mix of the two, whatever the light
+/// and the material. The residual `r = DoLP (sin 2ψ cos 2φ − cos 2ψ sin 2φ) = DoLP sin 2(ψ − φ)`
+/// vanishes there and weighs each pixel by how polarized it is; the loss is `mean(r²)` over all
+/// pixels.
+///
+/// `normal` is the rendered normal (3 per pixel, any length: φ depends on its direction only),
+/// seen by `camera` (each pixel's Stokes frame, [`Camera::stokes_frame`]), and `polarization`
+/// the measured `DoLP (cos 2ψ, sin 2ψ)` ([`measured_polarization`]). Returns the gradient with
+/// respect to `normal`.
+///
+/// # Panics
+/// If the lengths differ from the camera's pixel count.
+pub fn aolp_normal(normal: &[f64], camera: &Camera, polarization: &[[f64; 2]]) -> LossValue {
+    let pixels = camera.num_pixels();
+    assert!(
+        normal.len() == 3 * pixels && polarization.len() == pixels,
+        "aolp_normal: normal and polarization do not match the camera"
+    );
+    let width = camera.width as usize;
+    let norm = 1.0 / pixels.max(1) as f64;
+    let mut grad = vec![0.0; normal.len()];
+    let value = sum_in_chunk_order(
+        grad.par_chunks_mut(3 * CHUNK).into_par_iter(),
+        |chunk, g| {
+            let first = chunk * CHUNK;
+            let mut sum = 0.0;
+            for (j, g) in g.chunks_exact_mut(3).enumerate() {
+                let p = first + j;
+                let [c, s] = polarization[p];
+                if c == 0.0 && s == 0.0 {
+                    continue;
+                }
+                let (x, y) =
+                    camera.stokes_frame(camera.pixel_dir((p % width) as u32, (p / width) as u32));
+                let n = DVec3::from_slice(&normal[3 * p..3 * p + 3]);
+                let (a, b) = (n.dot(x), n.dot(y));
+                let q = a * a + b * b;
+                if q < 1e-24 {
+                    continue;
+                }
+                // r = (s (a² − b²) − 2 c a b) / q, with cos 2φ = (a² − b²) / q, sin 2φ = 2ab / q.
+                let r = (s * (a * a - b * b) - 2.0 * c * a * b) / q;
+                sum += r * r;
+                let dr_da = (2.0 * s * a - 2.0 * c * b - 2.0 * r * a) / q;
+                let dr_db = (-2.0 * s * b - 2.0 * c * a - 2.0 * r * b) / q;
+                g.copy_from_slice(&((x * dr_da + y * dr_db) * (2.0 * r * norm)).to_array());
+            }
+            sum
+        },
+    );
+    LossValue {
+        value: value * norm,
+        grad,
+    }
+}

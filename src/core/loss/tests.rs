@@ -1,4 +1,5 @@
 use super::*;
+use crate::core::camera::Camera;
 use crate::core::gradcheck::assert_gradient;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -470,6 +471,7 @@ fn loss_weights_come_from_the_config() {
             lambda_normal_smooth: 0.2,
             lambda_depth_normal: 0.1,
             lambda_distortion: config.lambda_distortion,
+            lambda_aolp: config.lambda_aolp,
             distortion_scale: 1.0,
         }
     );
@@ -574,4 +576,152 @@ fn chunked_losses_match_their_serial_definitions_for_any_thread_count() {
         )
     };
     assert_eq!(on_threads(1, run), on_threads(3, run));
+}
+
+/// A camera of W × H pixels looking at the origin.
+fn aolp_camera() -> Camera {
+    Camera::look_at(
+        W as u32,
+        H as u32,
+        0.8,
+        DVec3::new(0.4, -3.0, 1.2),
+        DVec3::ZERO,
+        DVec3::Z,
+    )
+}
+
+/// Random measured polarization, a fifth of the pixels off the object.
+fn random_polarization(rng: &mut ChaCha8Rng, pixels: usize) -> Vec<[f64; 2]> {
+    (0..pixels)
+        .map(|_| {
+            if rng.random_bool(0.2) {
+                [0.0, 0.0]
+            } else {
+                let (dolp, psi) = (rng.random_range(0.0..1.0), rng.random_range(0.0..3.2f64));
+                [dolp * (2.0 * psi).cos(), dolp * (2.0 * psi).sin()]
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn aolp_normal_vanishes_on_the_normal_azimuth_and_across_it() {
+    let camera = aolp_camera();
+    let pixels = camera.num_pixels();
+    let mut rng = ChaCha8Rng::seed_from_u64(4);
+    // Each pixel's normal at a random azimuth φ in its Stokes frame, tilted towards the camera
+    // and of random length; the AoLP along it (diffuse), across it (specular), at 30° from it, or
+    // nothing measured.
+    let mut normal = Vec::new();
+    let mut polarization = Vec::new();
+    let mut expected = 0.0;
+    for p in 0..pixels {
+        let d = camera.pixel_dir((p % W) as u32, (p / W) as u32);
+        let (x, y) = camera.stokes_frame(d);
+        let phi: f64 = rng.random_range(0.0..6.3);
+        let n = (x * phi.cos() + y * phi.sin() - d * 0.7) * rng.random_range(0.2..2.0);
+        normal.extend(n.to_array());
+        let dolp = 0.6;
+        let psi = phi + [0.0, 90f64.to_radians(), 30f64.to_radians(), 0.0][p % 4];
+        polarization.push(if p % 4 == 3 {
+            [0.0, 0.0]
+        } else {
+            [dolp * (2.0 * psi).cos(), dolp * (2.0 * psi).sin()]
+        });
+        if p % 4 == 2 {
+            expected += (dolp * 60f64.to_radians().sin()).powi(2);
+        }
+    }
+    let r = aolp_normal(&normal, &camera, &polarization);
+    expected /= pixels as f64;
+    assert!(
+        (r.value - expected).abs() < 1e-12 * expected,
+        "{} vs {expected}",
+        r.value
+    );
+    for (p, g) in r.grad.chunks(3).enumerate() {
+        let g = DVec3::from_slice(g);
+        match p % 4 {
+            0 | 1 => assert!(g.length() < 1e-12, "pixel {p}: {g}"),
+            2 => assert!(g.length() > 1e-4, "pixel {p}: {g}"),
+            _ => assert_eq!(g, DVec3::ZERO),
+        }
+    }
+}
+
+#[test]
+fn aolp_normal_gradient_matches_finite_differences() {
+    let camera = aolp_camera();
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let normal = random_vec(&mut rng, 3 * W * H, -1.0, 1.0);
+        let polarization = random_polarization(&mut rng, W * H);
+        let r = aolp_normal(&normal, &camera, &polarization);
+        assert!(r.value > 0.0);
+        assert_gradient(
+            "aolp_normal wrt normal",
+            &mut |n| aolp_normal(n, &camera, &polarization).value,
+            &normal,
+            &r.grad,
+            1e-6,
+            1e-5,
+            1e-5,
+        );
+    }
+}
+
+#[test]
+fn measured_polarization_is_the_channel_mean_stokes_ratio_on_the_object() {
+    // Pixel 0: DoLP 0.5 at ψ = 30°; 1: off the object; 2: S1 > S0 (clamped to DoLP 1); 3: black.
+    let (c, s) = (
+        0.5 * 60f64.to_radians().cos(),
+        0.5 * 60f64.to_radians().sin(),
+    );
+    let s0 = [0.2, 0.4, 0.6, 1.0, 1.0, 1.0, 0.1, 0.1, 0.1, 0.0, 0.0, 0.0];
+    let s1 = [
+        0.4 * c as f32,
+        0.4 * c as f32,
+        0.4 * c as f32,
+        0.3,
+        0.3,
+        0.3,
+        0.3,
+        0.3,
+        0.3,
+        1e-5,
+        0.0,
+        0.0,
+    ];
+    let s2 = [
+        0.4 * s as f32,
+        0.4 * s as f32,
+        0.4 * s as f32,
+        0.3,
+        0.3,
+        0.3,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+    ];
+    let mask = [1.0, 0.2, 1.0, 1.0];
+    let m = measured_polarization(&s0, &s1, &s2, &mask);
+    assert!(
+        (m[0][0] - c).abs() < 1e-6 && (m[0][1] - s).abs() < 1e-6,
+        "{:?}",
+        m[0]
+    );
+    assert_eq!(m[1], [0.0, 0.0]);
+    assert!(
+        (m[2][0] - 1.0).abs() < 1e-12 && m[2][1] == 0.0,
+        "{:?}",
+        m[2]
+    );
+    assert!(
+        (m[3][0] - 1e-5 / 3.0 / POLARIZATION_MIN_S0).abs() < 1e-9,
+        "{:?}",
+        m[3]
+    );
 }

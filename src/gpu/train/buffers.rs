@@ -21,7 +21,7 @@ use crate::core::surfels::Surfels;
 /// one a block.
 pub(super) const SCAN_BLOCK: u64 = 1024;
 /// Partial-sum slots of the loss kernels (`SLOTS` of train_common.wgsl), per workgroup.
-pub(super) const SLOTS: u64 = 9;
+pub(super) const SLOTS: u64 = 10;
 
 /// f32 values per surfel of the raw parameters and of each Adam moment (the layout of `Raw`).
 pub(super) const RAW_FLOATS: usize = 16;

@@ -21,7 +21,7 @@ use crate::gpu::GpuError;
 
 /// Words of the step status (`STATUS_*` of train_common.wgsl and the sums from `SUM_FIRST`;
 /// word 0, the entries that fit, is read by the kernels only).
-pub(super) const STATUS_WORDS: usize = 17;
+pub(super) const STATUS_WORDS: usize = 18;
 pub(super) const STATUS_ENTRIES: usize = 1;
 pub(super) const STATUS_OVERFLOW: usize = 2;
 pub(super) const STATUS_NONFINITE: usize = 3;
@@ -88,7 +88,7 @@ wgsl_mirror! {
         shaded: u32,
         stokes_loss: u32,
         has_theta: u32,
-        pad0: u32,
+        lambda_aolp: f32,
         cos_2theta: f32,
         sin_2theta: f32,
         unpolarized_scale: f32,
@@ -139,7 +139,7 @@ impl TrainParamsGpu {
             shaded: u32::from(plan.shaded),
             stokes_loss: u32::from(plan.stokes_loss),
             has_theta: u32::from(plan.theta.is_some()),
-            pad0: 0,
+            lambda_aolp: when(plan.aolp, weights.lambda_aolp),
             cos_2theta: cos2 as f32,
             sin_2theta: sin2 as f32,
             unpolarized_scale: plan.unpolarized_scale as f32,

@@ -458,6 +458,7 @@ impl<'g> DeviceTrainer<'g> {
                 depth_normal: sum(5),
                 depth_normal_pixels: sum(6),
                 distortion: sum(8),
+                aolp: sum(9),
             },
             angle_grad: sum(7),
             tile_entries: u64::from(status[STATUS_ENTRIES]),

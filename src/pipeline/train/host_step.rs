@@ -110,6 +110,7 @@ pub fn run(
         let _span = tracing::debug_span!("gbuffer_losses").entered();
         gbuffer_losses(
             g,
+            camera,
             &plan,
             target,
             &photometric,
@@ -236,9 +237,12 @@ fn image_losses(
     }
 }
 
-/// Mask, normal smoothness and depth–normal consistency, which act on the G-buffers directly.
+/// Mask, normal smoothness, depth distortion, the AoLP prior and depth–normal consistency,
+/// which act on the G-buffers directly.
+#[allow(clippy::too_many_arguments)]
 fn gbuffer_losses(
     g: &GBuffers,
+    camera: &crate::core::camera::Camera,
     plan: &StepPlan,
     target: &ViewTarget,
     photometric_target: &[f64],
@@ -275,6 +279,16 @@ fn gbuffer_losses(
             &mut up.depth_sq,
             &d.grad_depth_sq,
             weights.lambda_distortion,
+        );
+    }
+    if let (true, Some((s1, s2))) = (plan.aolp, &target.stokes) {
+        let polarization = loss::measured_polarization(&target.photometric, s1, s2, &target.mask);
+        let prior = loss::aolp_normal(g.normal.as_flattened(), camera, &polarization);
+        losses.insert("aolp".to_owned(), weights.lambda_aolp * prior.value);
+        add_into(
+            up.normal.as_flattened_mut(),
+            &prior.grad,
+            weights.lambda_aolp,
         );
     }
     if plan.depth_normal {

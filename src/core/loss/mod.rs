@@ -6,9 +6,10 @@
 //! gradients by the weights of [`LossWeights`] and sums them.
 //!
 //! Threading: [`ssim()`] (and so [`photometric`]) uses rayon over channels and rows; [`l1`],
-//! [`mask_mse`] and [`depth_normal_consistency`] over fixed chunks of [`CHUNK`] elements whose
-//! partial sums are added in chunk order, so every value is the same whatever the thread count;
-//! [`normal_smoothness`] (pairs of neighbours) is a single-threaded pass.
+//! [`mask_mse`], [`depth_normal_consistency`], [`depth_distortion`] and [`aolp_normal`] over fixed
+//! chunks of [`CHUNK`] elements whose partial sums are added in chunk order, so every value is the
+//! same whatever the thread count; [`normal_smoothness`] (pairs of neighbours) is a
+//! single-threaded pass.
 
 pub mod ssim;
 
@@ -497,7 +498,7 @@ pub fn measured_polarization(s0: &[f32], s1: &[f32], s2: &[f32], mask: &[f32]) -
 
 /// The normal azimuth prior of polarization (PolGS, PANDORA): a surface reflects light polarized
 /// along its normal's azimuth φ in the pixel's Stokes frame (diffuse) or across it (specular),
-/// so the measured AoLP ψ satisfies 2ψ ≡ 2φ (mod 2π) for any mix of the two, whatever the light
+/// so the measured AoLP ψ satisfies ψ ≡ φ (mod 90°) for any mix of the two, whatever the light
 /// and the material. The residual `r = DoLP (sin 2ψ cos 2φ − cos 2ψ sin 2φ) = DoLP sin 2(ψ − φ)`
 /// vanishes there and weighs each pixel by how polarized it is; the loss is `mean(r²)` over all
 /// pixels.

@@ -37,7 +37,7 @@ use thiserror::Error;
 
 use crate::core::envmap::grid::Tap;
 use crate::core::envmap::{
-    inverse_activate, texel_dir, CubeMap, EnvMapError, PrefilterPlan, PreparedEnv,
+    inverse_activate, texel_dir, CubeMap, EnvMapError, LookupJacobian, PrefilterPlan, PreparedEnv,
 };
 use crate::core::kdtree::KdTree;
 use crate::core::mesh::bvh::Bvh;
@@ -356,14 +356,13 @@ impl GridMap {
         values
     }
 
-    /// Σ_k w_k E_d,k(n) and its gradients (d/dn, d/dior) for an upstream `grad_out`.
+    /// Σ_k w_k E_d,k(n) and its Jacobian in (n, ior).
     pub(crate) fn blended_irradiance(
         &self,
         x: DVec3,
         normal: DVec3,
         ior: f64,
-        grad_out: DVec3,
-    ) -> (DVec3, DVec3, f64) {
+    ) -> (DVec3, LookupJacobian) {
         let mut weights = [0.0; MAX_ANCHORS];
         let weights = &mut weights[..self.anchors.len()];
         self.weights_into(x, weights);
@@ -376,53 +375,66 @@ impl GridMap {
             &[(a, 1.0 - t), (b, t)]
         };
         let mut value = DVec3::ZERO;
-        let mut grad_n = DVec3::ZERO;
-        let mut per_map = [0.0; 2];
+        let mut jacobian = LookupJacobian::default();
+        let mut per_map = [DVec3::ZERO; 2];
         for (m, &(map, scale)) in maps.iter().enumerate() {
             let blended = self.blend_taps(weights, &taps, |l| &l.irradiance[map]);
-            for ((&(_, w), dw), v) in taps.iter().zip(dw).zip(blended) {
-                value += scale * w * v;
-                let g = v.dot(grad_out);
-                per_map[m] += w * g;
-                grad_n += dw * (g * scale);
-            }
+            accumulate_taps(&taps, &dw, &blended, scale, &mut value, &mut jacobian);
+            per_map[m] = weighted_sum(&taps, &blended);
         }
-        let grad_ior = if maps.len() == 2 {
-            (per_map[1] - per_map[0]) * dt
-        } else {
-            0.0
-        };
-        (value, grad_n, grad_ior)
+        if maps.len() == 2 {
+            jacobian.d_scalar = (per_map[1] - per_map[0]) * dt;
+        }
+        (value, jacobian)
     }
 
-    /// Σ_k w_k E_k(dir, r) and its gradients (d/d dir, d/dr) for an upstream `grad_out`.
+    /// Σ_k w_k E_k(dir, r) and its Jacobian in (dir, r).
     pub(crate) fn blended_specular(
         &self,
         x: DVec3,
         dir: DVec3,
         roughness: f64,
-        grad_out: DVec3,
-    ) -> (DVec3, DVec3, f64) {
+    ) -> (DVec3, LookupJacobian) {
         let mut weights = [0.0; MAX_ANCHORS];
         let weights = &mut weights[..self.anchors.len()];
         self.weights_into(x, weights);
         let (l0, t, dt) = self.global.level_blend(roughness);
         let grids = &self.global.plan().grids;
         let mut value = DVec3::ZERO;
-        let mut grad_dir = DVec3::ZERO;
-        let mut per_level = [0.0; 2];
+        let mut jacobian = LookupJacobian::default();
+        let mut per_level = [DVec3::ZERO; 2];
         for (k, (level, scale)) in [(l0, 1.0 - t), (l0 + 1, t)].into_iter().enumerate() {
             let (taps, dw) = grids[level].taps_with_grad(dir);
             let blended = self.blend_taps(weights, &taps, |l| &l.levels[level]);
-            for ((&(_, w), dw), v) in taps.iter().zip(dw).zip(blended) {
-                value += scale * w * v;
-                let g = v.dot(grad_out);
-                per_level[k] += w * g;
-                grad_dir += dw * (g * scale);
-            }
+            accumulate_taps(&taps, &dw, &blended, scale, &mut value, &mut jacobian);
+            per_level[k] = weighted_sum(&taps, &blended);
         }
-        (value, grad_dir, (per_level[1] - per_level[0]) * dt)
+        jacobian.d_scalar = (per_level[1] - per_level[0]) * dt;
+        (value, jacobian)
     }
+}
+
+/// Adds `scale` × one map's bilinear lookup (tap weights `taps`, their direction gradients `dw`,
+/// blended tap values `values`) into `value` and its direction derivatives into `jacobian`.
+fn accumulate_taps(
+    taps: &[Tap; 4],
+    dw: &[DVec3; 4],
+    values: &[DVec3; 4],
+    scale: f64,
+    value: &mut DVec3,
+    jacobian: &mut LookupJacobian,
+) {
+    for ((&(_, w), dw), v) in taps.iter().zip(dw).zip(values) {
+        *value += scale * w * *v;
+        for (d, dw_i) in jacobian.d_dir.iter_mut().zip(dw.to_array()) {
+            *d += (dw_i * scale) * *v;
+        }
+    }
+}
+
+/// Σ_t w_t v_t: one map's bilinear lookup from its blended tap values.
+fn weighted_sum(taps: &[Tap; 4], values: &[DVec3; 4]) -> DVec3 {
+    taps.iter().zip(values).map(|(&(_, w), v)| w * *v).sum()
 }
 
 #[cfg(test)]
@@ -659,9 +671,9 @@ mod tests {
                     1e-6,
                 );
                 let r = rng.random_range(0.1..0.95);
-                let (_, gd, gr) = grid.blended_specular(x, n, r, g);
+                let (gd, gr) = grid.blended_specular(x, n, r).1.backward(g);
                 let mut f = |p: &[f64]| {
-                    grid.blended_specular(x, DVec3::from_slice(&p[..3]), p[3], DVec3::ZERO)
+                    grid.blended_specular(x, DVec3::from_slice(&p[..3]), p[3])
                         .0
                         .dot(g)
                 };

@@ -24,6 +24,27 @@ pub struct TexelBlock {
 /// One bilinear tap: flat texel index and its weight.
 pub type Tap = (usize, f64);
 
+/// The derivatives of one RGB lookup of a (prefiltered) map in its inputs: a direction (or
+/// normal) and one scalar (roughness or IoR).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LookupJacobian {
+    /// `d_dir[i]` = ∂value/∂dir_i (one RGB vector per input component).
+    pub d_dir: [DVec3; 3],
+    /// ∂value/∂scalar.
+    pub d_scalar: DVec3,
+}
+
+impl LookupJacobian {
+    /// (dL/d dir, dL/d scalar) for an upstream dL/d value.
+    pub fn backward(&self, grad_out: DVec3) -> (DVec3, f64) {
+        let [x, y, z] = self.d_dir;
+        (
+            DVec3::new(x.dot(grad_out), y.dot(grad_out), z.dot(grad_out)),
+            self.d_scalar.dot(grad_out),
+        )
+    }
+}
+
 /// Texel geometry of a D×D cube map.
 #[derive(Clone, Debug)]
 pub struct CubeGrid {

@@ -23,7 +23,7 @@ pub mod prefilter;
 use glam::DVec3;
 use thiserror::Error;
 
-pub use grid::CubeGrid;
+pub use grid::{CubeGrid, LookupJacobian};
 pub use latlong::WorldUp;
 pub use prefilter::{EnvGrad, MipChainSpec, PrefilterPlan, PreparedEnv};
 

@@ -21,7 +21,7 @@ use thiserror::Error;
 use crate::core::brdf_lut::{BrdfLut, LutSample};
 use crate::core::camera::Camera;
 use crate::core::envmap::EnvGrad;
-use crate::core::light::LightProbe;
+use crate::core::light::{LightProbe, SavedLookup};
 
 pub use check::{physics_check, GroundTruthView, ShadingCheck};
 
@@ -250,10 +250,12 @@ struct Forward {
     w_s: f64,
     mirror: DVec3,
     radiance: DVec3,
+    saved_radiance: SavedLookup,
     fresnel: f64,
     dfresnel_dmu: f64,
     dfresnel_df0: f64,
     irradiance: DVec3,
+    saved_irradiance: SavedLookup,
     rho_s: Dual,
     rho_d: Dual,
     cos2: f64,
@@ -287,7 +289,7 @@ fn forward(input: &PixelInput, light: &dyn LightProbe, lut: &BrdfLut) -> Forward
     let lut_sample = lut.lookup_with_grad(mu, input.roughness);
     let w_s = f0 * lut_sample.a + lut_sample.b;
     let mirror = 2.0 * mu * n - input.view;
-    let radiance = light.specular(input.position, mirror, input.roughness);
+    let (radiance, saved_radiance) = light.specular_saved(input.position, mirror, input.roughness);
     let specular = w_s * radiance;
 
     let one_minus_mu = 1.0 - mu;
@@ -295,7 +297,7 @@ fn forward(input: &PixelInput, light: &dyn LightProbe, lut: &BrdfLut) -> Forward
     let fresnel = f0 + (1.0 - f0) * pow5;
     let dfresnel_dmu = -5.0 * (1.0 - f0) * one_minus_mu.powi(4);
     let dfresnel_df0 = 1.0 - pow5;
-    let irradiance = light.irradiance(input.position, n, eta);
+    let (irradiance, saved_irradiance) = light.irradiance_saved(input.position, n, eta);
     let diffuse = (1.0 - fresnel) * input.albedo * irradiance;
 
     let (rho_s, rho_d) = polarization_ratios(mu, eta);
@@ -322,10 +324,12 @@ fn forward(input: &PixelInput, light: &dyn LightProbe, lut: &BrdfLut) -> Forward
         w_s,
         mirror,
         radiance,
+        saved_radiance,
         fresnel,
         dfresnel_dmu,
         dfresnel_df0,
         irradiance,
+        saved_irradiance,
         rho_s,
         rho_d,
         cos2,
@@ -387,8 +391,14 @@ fn backward_from(
     let g_albedo = g_diff * (1.0 - f.fresnel) * f.irradiance;
     let g_irradiance = g_diff * (1.0 - f.fresnel) * input.albedo;
     let g_fresnel = -g_diff.dot(input.albedo * f.irradiance);
-    let (g_n_irr, g_eta_irr) =
-        light.irradiance_backward(input.position, f.n, input.ior, g_irradiance, env_grad);
+    let (g_n_irr, g_eta_irr) = light.irradiance_backward_saved(
+        &f.saved_irradiance,
+        input.position,
+        f.n,
+        input.ior,
+        g_irradiance,
+        env_grad,
+    );
     g_n += g_n_irr;
     g_eta += g_eta_irr;
     g_mu += g_fresnel * f.dfresnel_dmu;
@@ -396,7 +406,8 @@ fn backward_from(
 
     // Specular = (F0 A + B) L_s(2μn − o, r).
     let g_ws = g_spec.dot(f.radiance);
-    let (g_mirror, mut g_roughness) = light.specular_backward(
+    let (g_mirror, mut g_roughness) = light.specular_backward_saved(
+        &f.saved_radiance,
         input.position,
         f.mirror,
         input.roughness,
@@ -615,8 +626,9 @@ pub fn shade_image(
 }
 
 /// The forward intermediates of every active pixel of one view ([`shade_image_saved`]), so that
-/// the backward pass ([`shade_image_backward_saved`]) does not look the light up again: a
-/// training step's backward then costs two light lookups per pixel instead of four.
+/// the backward pass ([`shade_image_backward_saved`]) does not shade again; its light lookups
+/// keep their input Jacobians where the light allows ([`SavedLookup`]: GridMap's blended probes and
+/// their occlusion test are not repeated), the others ask the light for its own gradient.
 pub struct SavedShading {
     /// The active pixels' intermediates, in pixel order.
     forwards: Vec<Forward>,

@@ -236,6 +236,80 @@ fn shade_gradients_match_finite_differences() {
     }
 }
 
+/// Under GridMap the forward keeps its lookups' Jacobians and the backward applies them
+/// ([`SavedLookup`]) instead of asking the light again: the inputs' gradients still match finite
+/// differences, on pixels whose mirror rays are blocked (the probes' blend) and escape (the
+/// global map, which also takes the gradient).
+#[test]
+fn shade_gradients_under_gridmap_match_finite_differences() {
+    use crate::core::gridmap::GridMap;
+    use crate::testing::two_spheres;
+
+    let lut = BrdfLut::compute(32, 64);
+    let (mesh, surfels) = two_spheres();
+    let (mut blocked, mut escaping) = (0, 0);
+    for (seed, fresnel) in [(21u64, false), (22, true)] {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let cube = random_cube(&mut rng);
+        let global = PreparedEnv::new(&cube, tiny_plan(fresnel)).unwrap();
+        let grid = GridMap::build(&mesh, &surfels, &cube, global).unwrap();
+        for k in 0..12 {
+            // A point of sphere A facing sphere B (centre (3, 0, 0)).
+            let towards_b = DVec3::new(
+                1.0,
+                rng.random_range(-0.4..0.4),
+                rng.random_range(-0.4..0.4),
+            );
+            let mut input = random_input(&mut rng, k % 3 == 2);
+            input.position = towards_b.normalize();
+            // Normal near the sphere's, viewed from near it: mirror rays toward B or the sky.
+            let normal = (input.position + 0.2 * random_unit(&mut rng)).normalize();
+            input.view = loop {
+                let v = (normal + 0.8 * random_unit(&mut rng)).normalize();
+                if v.dot(normal) > 0.15 {
+                    break v;
+                }
+            };
+            (input.stokes_x, input.stokes_y) = stokes_frame(-input.view, random_unit(&mut rng));
+            input.normal = normal * input.normal.length() * if k % 3 == 2 { -1.0 } else { 1.0 };
+            let unit = input.normal.normalize() * input.normal.dot(input.view).signum();
+            let mirror = 2.0 * unit.dot(input.view) * unit - input.view;
+            if grid.occluded(input.position, mirror) {
+                blocked += 1;
+            } else {
+                escaping += 1;
+            }
+            let up = random_upstream(&mut rng);
+            let mut scratch = grid.zero_grad();
+            let g = shade_backward(&input, &grid, &lut, &up, &mut scratch);
+            let analytic = [
+                g.normal.x,
+                g.normal.y,
+                g.normal.z,
+                g.albedo.x,
+                g.albedo.y,
+                g.albedo.z,
+                g.roughness,
+                g.ior,
+            ];
+            let mut f = |x: &[f64]| loss(&shade(&unpack(&input, x), &grid, &lut), &up);
+            assert_gradient(
+                &format!("shade inputs under GridMap (seed {seed}, pixel {k})"),
+                &mut f,
+                &pack(&input),
+                &analytic,
+                1e-6,
+                1e-4,
+                1e-6,
+            );
+        }
+    }
+    assert!(
+        blocked >= 3 && escaping >= 3,
+        "{blocked} blocked, {escaping} escaping"
+    );
+}
+
 #[test]
 fn shade_gradient_reaches_the_env_texels() {
     let lut = BrdfLut::compute(32, 64);

@@ -106,6 +106,20 @@ fn unpack(base: &PixelInput, x: &[f64]) -> PixelInput {
     }
 }
 
+/// A pixel's input gradient in the order of [`pack`].
+fn pack_grad(g: &PixelInputGrad) -> [f64; 8] {
+    [
+        g.normal.x,
+        g.normal.y,
+        g.normal.z,
+        g.albedo.x,
+        g.albedo.y,
+        g.albedo.z,
+        g.roughness,
+        g.ior,
+    ]
+}
+
 #[test]
 fn fresnel_ratios_have_the_physical_signs_and_values() {
     for eta in [1.3, 1.5, 2.2] {
@@ -212,16 +226,7 @@ fn shade_gradients_match_finite_differences() {
             let up = random_upstream(&mut rng);
             let mut scratch = env.zero_grad();
             let g = shade_backward(&input, &env, &lut, &up, &mut scratch);
-            let analytic = [
-                g.normal.x,
-                g.normal.y,
-                g.normal.z,
-                g.albedo.x,
-                g.albedo.y,
-                g.albedo.z,
-                g.roughness,
-                g.ior,
-            ];
+            let analytic = pack_grad(&g);
             let mut f = |x: &[f64]| loss(&shade(&unpack(&input, x), &env, &lut), &up);
             assert_gradient(
                 &format!("shade inputs (seed {seed}, pixel {k})"),
@@ -282,16 +287,7 @@ fn shade_gradients_under_gridmap_match_finite_differences() {
             let up = random_upstream(&mut rng);
             let mut scratch = grid.zero_grad();
             let g = shade_backward(&input, &grid, &lut, &up, &mut scratch);
-            let analytic = [
-                g.normal.x,
-                g.normal.y,
-                g.normal.z,
-                g.albedo.x,
-                g.albedo.y,
-                g.albedo.z,
-                g.roughness,
-                g.ior,
-            ];
+            let analytic = pack_grad(&g);
             let mut f = |x: &[f64]| loss(&shade(&unpack(&input, x), &grid, &lut), &up);
             assert_gradient(
                 &format!("shade inputs under GridMap (seed {seed}, pixel {k})"),

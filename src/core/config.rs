@@ -55,7 +55,7 @@ pub const DEFAULT_ITERATIONS: u32 = Iterations::AUTO_MIN;
 const PAPER_SCHEDULE_RATIO: f64 = 15_000.0 / DEFAULT_ITERATIONS as f64;
 
 /// Default surfel budget per pixel of object (see `TrainConfig::surfels_per_mask_pixel`).
-pub const SURFELS_PER_MASK_PIXEL: f64 = 4.0;
+pub const SURFELS_PER_MASK_PIXEL: f64 = 6.0;
 
 /// An on/off setting on the command line (`on`, `off`, `true` or `false`).
 fn parse_switch(value: &str) -> Result<bool, String> {

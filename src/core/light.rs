@@ -192,11 +192,7 @@ impl LightProbe for GridMap {
         grad_out: DVec3,
         grad: &mut EnvGrad,
     ) -> (DVec3, f64) {
-        let saved = if self.occluded(position, dir) {
-            SavedLookup::Jacobian(self.blended_specular(position, dir, roughness).1)
-        } else {
-            SavedLookup::Light
-        };
+        let (_, saved) = self.specular_saved(position, dir, roughness);
         self.specular_backward_saved(&saved, position, dir, roughness, grad_out, grad)
     }
 

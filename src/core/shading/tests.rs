@@ -106,9 +106,18 @@ fn unpack(base: &PixelInput, x: &[f64]) -> PixelInput {
     }
 }
 
-/// A pixel's input gradient in the order of [`pack`].
-fn pack_grad(g: &PixelInputGrad) -> [f64; 8] {
-    [
+/// Checks [`shade_backward`]'s input gradient of one pixel under `light` against finite
+/// differences of [`shade`] (in the order of [`pack`]).
+fn assert_shade_gradient(
+    name: &str,
+    input: &PixelInput,
+    light: &dyn LightProbe,
+    lut: &BrdfLut,
+    up: &PixelStokesGrad,
+) {
+    let mut scratch = light.zero_grad();
+    let g = shade_backward(input, light, lut, up, &mut scratch);
+    let analytic = [
         g.normal.x,
         g.normal.y,
         g.normal.z,
@@ -117,7 +126,9 @@ fn pack_grad(g: &PixelInputGrad) -> [f64; 8] {
         g.albedo.z,
         g.roughness,
         g.ior,
-    ]
+    ];
+    let mut f = |x: &[f64]| loss(&shade(&unpack(input, x), light, lut), up);
+    assert_gradient(name, &mut f, &pack(input), &analytic, 1e-6, 1e-4, 1e-6);
 }
 
 #[test]
@@ -224,18 +235,12 @@ fn shade_gradients_match_finite_differences() {
         for k in 0..12 {
             let input = random_input(&mut rng, k % 3 == 2);
             let up = random_upstream(&mut rng);
-            let mut scratch = env.zero_grad();
-            let g = shade_backward(&input, &env, &lut, &up, &mut scratch);
-            let analytic = pack_grad(&g);
-            let mut f = |x: &[f64]| loss(&shade(&unpack(&input, x), &env, &lut), &up);
-            assert_gradient(
+            assert_shade_gradient(
                 &format!("shade inputs (seed {seed}, pixel {k})"),
-                &mut f,
-                &pack(&input),
-                &analytic,
-                1e-6,
-                1e-4,
-                1e-6,
+                &input,
+                &env,
+                &lut,
+                &up,
             );
         }
     }
@@ -285,18 +290,12 @@ fn shade_gradients_under_gridmap_match_finite_differences() {
                 escaping += 1;
             }
             let up = random_upstream(&mut rng);
-            let mut scratch = grid.zero_grad();
-            let g = shade_backward(&input, &grid, &lut, &up, &mut scratch);
-            let analytic = pack_grad(&g);
-            let mut f = |x: &[f64]| loss(&shade(&unpack(&input, x), &grid, &lut), &up);
-            assert_gradient(
+            assert_shade_gradient(
                 &format!("shade inputs under GridMap (seed {seed}, pixel {k})"),
-                &mut f,
-                &pack(&input),
-                &analytic,
-                1e-6,
-                1e-4,
-                1e-6,
+                &input,
+                &grid,
+                &lut,
+                &up,
             );
         }
     }

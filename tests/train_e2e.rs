@@ -440,6 +440,27 @@ fn the_loss_budget_scores_every_replacement() {
         .map(|b| b.pixels)
         .sum();
     assert_eq!(banded, normals.pixels);
+    // The per-view error images hold the same errors as the statistics: one image per test
+    // view, defined on exactly the pixels counted, averaging to the MAE.
+    assert_eq!(report.normal_error_maps.len(), report.test_views);
+    let defined: Vec<f64> = report
+        .normal_error_maps
+        .iter()
+        .inspect(|map| {
+            assert_eq!((map.degrees.width, map.degrees.height), (32, 32));
+            assert_eq!(map.degrees.channels, 1);
+        })
+        .flat_map(|map| map.degrees.data.iter().copied())
+        .filter(|d| !d.is_nan())
+        .map(f64::from)
+        .collect();
+    assert_eq!(defined.len(), normals.pixels);
+    assert!(defined.iter().all(|d| (0.0..=90.0).contains(d)));
+    let mean = defined.iter().sum::<f64>() / defined.len() as f64;
+    assert!(
+        (mean - normals.mae_degrees).abs() < 1e-3,
+        "{mean} {normals:?}"
+    );
     // The depths are measured on the covered pixels (200 steps leave the surfels a fuzzy volume,
     // so no bound on how far off they are).
     let depths = &report.depths;

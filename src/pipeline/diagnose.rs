@@ -6,7 +6,9 @@
 //! map, says what each component costs. The normals' errors are given as a distribution (mean,
 //! median, 90th and 99th percentiles, cosine distance) and by distance to the silhouette, where
 //! heavy tails live; the depths' as offsets from the true surface, which tell a surface seen
-//! through a hole in the learned one (far behind) from a normal that is merely tilted.
+//! through a hole in the learned one (far behind) from a normal that is merely tilted. Each
+//! test view's normal error is also kept as an image ([`NormalErrorMap`]), to see where the
+//! tail lives.
 //!
 //! Every variant shades through the same path as rendering (`Backend::shade` on G-buffers, the
 //! light GridMap over an environment with the model's mesh for occlusion), so a variant differs
@@ -25,7 +27,7 @@ use crate::core::metrics::{self, MetricsError};
 use crate::core::raster::{GBuffers, RasterError};
 use crate::core::render::ShadingInputs;
 use crate::core::shading::ShadingError;
-use crate::formats::image_io::ImageError;
+use crate::formats::image_io::{Image, ImageError};
 use crate::io::capture::{Capture, Measurement, View};
 use crate::pipeline::evaluate::{read_truth, Truth};
 use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
@@ -138,6 +140,63 @@ pub struct Diagnosis {
     pub variants: Vec<Variant>,
     pub normals: NormalStats,
     pub depths: DepthStats,
+    /// One per test view, in the capture's order (images: not in the JSON report).
+    #[serde(skip)]
+    pub normal_error_maps: Vec<NormalErrorMap>,
+}
+
+/// One test view's normal error, pixel by pixel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NormalErrorMap {
+    /// The view's name, e.g. `frame 3 (test/s0/003.exr)`.
+    pub view: String,
+    /// Its position in the capture's `frames` list.
+    pub frame_index: usize,
+    /// One channel: the angle between the learned and the true normal in degrees (sign-blind,
+    /// as `phygap eval` measures it) on the object's pixels where both exist; NaN elsewhere (the
+    /// background, and object pixels the model leaves without a normal).
+    pub degrees: Image,
+}
+
+/// The false colours of [`NormalErrorMap::colored`]: (degrees, display RGB), linear between
+/// stops, the last colour beyond the last stop.
+const ERROR_COLORS: [(f32, [f32; 3]); 5] = [
+    (0.0, [0.02, 0.02, 0.25]),
+    (5.0, [0.10, 0.35, 0.90]),
+    (15.0, [0.15, 0.80, 0.35]),
+    (30.0, [1.00, 0.85, 0.10]),
+    (45.0, [1.00, 0.10, 0.10]),
+];
+
+impl NormalErrorMap {
+    /// The errors in false colour, for people (display RGB, to be written as it is): dark
+    /// blue at 0°, blue at 5°, green at 15°, yellow at 30°, red from 45° on; black where the
+    /// error is undefined.
+    pub fn colored(&self) -> Image {
+        let d = &self.degrees;
+        Image::from_fn(d.width, d.height, 3, |x, y, rgb| {
+            rgb.copy_from_slice(&error_color(d.data[y * d.width + x]));
+        })
+    }
+}
+
+/// The colour of an error of `degrees` ([`ERROR_COLORS`]).
+fn error_color(degrees: f32) -> [f32; 3] {
+    if degrees.is_nan() {
+        return [0.0; 3];
+    }
+    let (last_degrees, last) = ERROR_COLORS[ERROR_COLORS.len() - 1];
+    if degrees >= last_degrees {
+        return last;
+    }
+    let upper = ERROR_COLORS
+        .iter()
+        .position(|&(stop, _)| degrees < stop)
+        .unwrap_or(0)
+        .max(1);
+    let ((d0, c0), (d1, c1)) = (ERROR_COLORS[upper - 1], ERROR_COLORS[upper]);
+    let t = ((degrees - d0) / (d1 - d0)).clamp(0.0, 1.0);
+    std::array::from_fn(|k| c0[k] + t * (c1[k] - c0[k]))
 }
 
 /// Distance bands of [`NormalStats::by_silhouette_distance`], pixels.
@@ -354,6 +413,7 @@ pub fn diagnose(
     // Per variant: summed S0 PSNR and views, summed relit PSNR and views.
     let mut sums = [(0.0, 0usize, 0.0, 0usize); VARIANTS.len()];
     let mut normal_errors: Vec<(f64, f64, f64)> = Vec::new();
+    let mut normal_error_maps = Vec::with_capacity(views.len());
     let mut depth_offsets: Vec<(f64, f64)> = Vec::new();
     let radius = capture.object_bounds().radius;
     for truth_view in &views {
@@ -363,6 +423,7 @@ pub fn diagnose(
             .forward(scene.surfels, camera, &scene.settings)?;
         let g = &raster.gbuffers;
         collect_normal_errors(truth_view, g, &mut normal_errors);
+        normal_error_maps.push(normal_error_map(truth_view, g));
         collect_depth_offsets(truth_view, g, radius, &mut depth_offsets);
         for ((name, replace), sum) in VARIANTS.iter().zip(sums.iter_mut()) {
             let light: &dyn LightProbe = match (replace.light, &truth_lit) {
@@ -408,6 +469,7 @@ pub fn diagnose(
         variants,
         normals: normal_stats(normal_errors),
         depths: depth_stats(depth_offsets),
+        normal_error_maps,
     })
 }
 
@@ -455,6 +517,21 @@ fn collect_normal_errors(truth: &TruthView, g: &GBuffers, out: &mut Vec<(f64, f6
         if let Some(cos) = normal_agreement(truth, g, p).filter(|_| object) {
             out.push((cos.acos().to_degrees(), 1.0 - cos, distance));
         }
+    }
+}
+
+/// The view's normal errors as an image ([`NormalErrorMap`]).
+fn normal_error_map(truth: &TruthView, g: &GBuffers) -> NormalErrorMap {
+    let degrees = Image::from_fn(g.width, g.height, 1, |x, y, out| {
+        let p = y * g.width + x;
+        out[0] = normal_agreement(truth, g, p)
+            .filter(|_| truth.mask[p])
+            .map_or(f32::NAN, |cos| cos.acos().to_degrees() as f32);
+    });
+    NormalErrorMap {
+        view: truth.view.name.clone(),
+        frame_index: truth.view.frame_index,
+        degrees,
     }
 }
 
@@ -581,6 +658,31 @@ fn normal_stats(mut errors: Vec<(f64, f64, f64)>) -> NormalStats {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn error_colours_follow_their_stops() {
+        assert_eq!(error_color(f32::NAN), [0.0; 3]);
+        assert_eq!(error_color(0.0), ERROR_COLORS[0].1);
+        assert_eq!(error_color(15.0), ERROR_COLORS[2].1);
+        assert_eq!(error_color(90.0), ERROR_COLORS[4].1);
+        // Half-way between 5° and 15°.
+        let mid = error_color(10.0);
+        let (a, b) = (ERROR_COLORS[1].1, ERROR_COLORS[2].1);
+        for k in 0..3 {
+            assert!((mid[k] - 0.5 * (a[k] + b[k])).abs() < 1e-6, "{mid:?}");
+        }
+        let map = NormalErrorMap {
+            view: "v".into(),
+            frame_index: 0,
+            degrees: Image {
+                width: 2,
+                height: 1,
+                channels: 1,
+                data: vec![f32::NAN, 45.0],
+            },
+        };
+        assert_eq!(map.colored().data, [0.0, 0.0, 0.0, 1.0, 0.1, 0.1]);
+    }
 
     #[test]
     fn silhouette_distances_grow_inwards() {

@@ -2,14 +2,16 @@
 //! views rendered with each learned component (geometry, albedo, roughness, IoR, light) in turn
 //! replaced by the capture's ground truth, the S0 and relit PSNR of each, and the distribution of
 //! its normals' errors (mean, median, 90th and 99th percentiles, by distance to the silhouette).
-//! The lighting and relighting maps come from the capture's `scene.json`.
+//! The lighting and relighting maps come from the capture's `scene.json`. `--images DIR`
+//! also writes each test view's normal error as an image (false colour PNG, degrees in EXR).
 
 use std::path::PathBuf;
 
-use anyhow::Result;
+use anyhow::{Context, Result};
 use clap::Args;
 
 use phygap::core::resolution::Resolution;
+use phygap::formats::image_io::{write_exr, write_png};
 use phygap::io::capture::{self, LoadOptions};
 use phygap::io::model::Model;
 use phygap::pipeline::diagnose::{diagnose, DiagnoseTruth, Diagnosis, FAR_OFFSET};
@@ -25,6 +27,11 @@ pub struct DiagnoseArgs {
     /// Print only the JSON object.
     #[arg(long)]
     pub json: bool,
+    /// Also write each test view's normal error to this folder: `normal_error_NNN.png` (false
+    /// colour: dark blue 0°, blue 5°, green 15°, yellow 30°, red from 45°; black off the object)
+    /// and `normal_error_NNN.exr` (degrees; NaN off the object), NNN the view's frame index.
+    #[arg(long, value_name = "DIR")]
+    pub images: Option<PathBuf>,
 }
 
 pub fn run(args: &DiagnoseArgs) -> Result<()> {
@@ -40,6 +47,17 @@ pub fn run(args: &DiagnoseArgs) -> Result<()> {
     let report = diagnose(&reconstruction, &capture, &truth)?;
     if !args.json {
         print!("{}", describe(&report));
+    }
+    if let Some(dir) = &args.images {
+        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+        for map in &report.normal_error_maps {
+            let stem = dir.join(format!("normal_error_{:03}", map.frame_index));
+            write_png(&stem.with_extension("png"), &map.colored(), false)?;
+            write_exr(&stem.with_extension("exr"), &map.degrees)?;
+            if !args.json {
+                println!("{}: {}.png, .exr", map.view, stem.display());
+            }
+        }
     }
     println!("{}", serde_json::to_string_pretty(&report)?);
     Ok(())

@@ -122,18 +122,20 @@ const MOMENTS: usize = 5;
 fn moments(pred: &[f64], target: &[f64], width: usize, height: usize, channels: usize) -> Vec<f64> {
     separable_blur(MOMENTS * channels, width, height, |y, k, row| {
         let (c, q) = (k / MOMENTS, k % MOMENTS);
-        let at = |x: usize| (y * width + x) * channels + c;
-        let fill = |value: &dyn Fn(f64, f64) -> f64, row: &mut [f64]| {
-            for (x, r) in row.iter_mut().enumerate() {
-                *r = value(pred[at(x)], target[at(x)]);
-            }
-        };
+        let start = y * width * channels + c;
+        let pixels = pred[start..]
+            .iter()
+            .step_by(channels)
+            .zip(target[start..].iter().step_by(channels))
+            .zip(row.iter_mut());
+        // One loop per moment, so each is a plain loop the compiler can unroll (no call per
+        // sample).
         match q {
-            0 => fill(&|a, _| a, row),
-            1 => fill(&|_, b| b, row),
-            2 => fill(&|a, _| a * a, row),
-            3 => fill(&|_, b| b * b, row),
-            _ => fill(&|a, b| a * b, row),
+            0 => pixels.for_each(|((&a, _), r)| *r = a),
+            1 => pixels.for_each(|((_, &b), r)| *r = b),
+            2 => pixels.for_each(|((&a, _), r)| *r = a * a),
+            3 => pixels.for_each(|((_, &b), r)| *r = b * b),
+            _ => pixels.for_each(|((&a, &b), r)| *r = a * b),
         }
     })
 }
@@ -377,12 +379,15 @@ fn ssim_sum(
             for c in 0..channels {
                 for x in 0..width {
                     let t = Terms::new(moment_at(&m, width, channels, x, y, c));
-                    let s = t.ssim();
+                    // One division: 1/C = D/(CD) and 1/D = C/(CD).
+                    let inv_cd = 1.0 / (t.c * t.d);
+                    let s = t.a * t.b * inv_cd;
                     sum += s;
-                    let ds_da = t.b / (t.c * t.d) * inv_n;
-                    let ds_db = t.a / (t.c * t.d) * inv_n;
-                    let ds_dc = -s / t.c * inv_n;
-                    let ds_dd = -s / t.d * inv_n;
+                    let scaled = inv_cd * inv_n;
+                    let ds_da = t.b * scaled;
+                    let ds_db = t.a * scaled;
+                    let ds_dc = -s * t.d * scaled;
+                    let ds_dd = -s * t.c * scaled;
                     // A = 2μxμy + C1, B = 2(E[xy] − μxμy) + C2, C = μx² + μy² + C1,
                     // D = E[x²] − μx² + E[y²] − μy² + C2.
                     let base = ADJOINTS * c * width + x;

@@ -440,6 +440,16 @@ fn the_loss_budget_scores_every_replacement() {
         .map(|b| b.pixels)
         .sum();
     assert_eq!(banded, normals.pixels);
+    // The contours split the cosine distance in two: theirs and the others'.
+    let contours = &normals.contours;
+    assert!(
+        contours.pixel_share > 0.0 && contours.pixel_share < 1.0,
+        "{contours:?}"
+    );
+    assert!((0.0..=1.0).contains(&contours.cosine_distance_share));
+    let others = contours.cosine_distance_elsewhere * (1.0 - contours.pixel_share);
+    let expected = normals.cosine_distance * (1.0 - contours.cosine_distance_share);
+    assert!((others - expected).abs() < 1e-9, "{others} {expected}");
     // The per-view error images hold the same errors as the statistics: one image per test
     // view, defined on exactly the pixels counted, averaging to the MAE.
     assert_eq!(report.normal_error_maps.len(), report.test_views);

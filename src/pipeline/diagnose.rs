@@ -109,7 +109,28 @@ pub struct NormalStats {
     pub p99_degrees: f64,
     pub cosine_distance: f64,
     pub by_silhouette_distance: Vec<SilhouetteBand>,
+    /// The errors at the object's contours against those elsewhere.
+    pub contours: ContourStats,
 }
+
+/// The normal errors within one pixel of a contour: the silhouette (an object pixel next to
+/// the background) or a jump of the true depth by more than [`DEPTH_JUMP`] of itself between
+/// neighbouring object pixels (where one part of the object passes in front of another, and
+/// surfaces seen within about 15° of grazing). There a pixel straddles two surfaces, and the
+/// true normal, sampled at its centre, is the one of whichever the centre hits.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ContourStats {
+    /// Share of the pixels within one pixel (4-neighbourhood) of a contour.
+    pub pixel_share: f64,
+    /// Share of the summed cosine distance those pixels carry.
+    pub cosine_distance_share: f64,
+    /// The cosine distance over the other pixels.
+    pub cosine_distance_elsewhere: f64,
+}
+
+/// Relative jump of the true depth between neighbouring object pixels that [`ContourStats`]
+/// counts as a contour.
+pub const DEPTH_JUMP: f64 = 0.05;
 
 /// How the learned depth departs from the true surface, over every test view's pixels that both
 /// cover (the object's mask and `α ≥ ½`), in units of the object's radius.
@@ -412,7 +433,7 @@ pub fn diagnose(
     let scene = reconstruction.scene();
     // Per variant: summed S0 PSNR and views, summed relit PSNR and views.
     let mut sums = [(0.0, 0usize, 0.0, 0usize); VARIANTS.len()];
-    let mut normal_errors: Vec<(f64, f64, f64)> = Vec::new();
+    let mut normal_errors: Vec<PixelNormalError> = Vec::new();
     let mut normal_error_maps = Vec::with_capacity(views.len());
     let mut depth_offsets: Vec<(f64, f64)> = Vec::new();
     let radius = capture.object_bounds().radius;
@@ -510,14 +531,63 @@ fn normal_agreement(truth: &TruthView, g: &GBuffers, p: usize) -> Option<f64> {
         .then(|| gt.normalize().dot(learned.normalize()).abs().min(1.0))
 }
 
-/// Each object pixel's normal error (degrees), cosine distance and distance to the silhouette.
-fn collect_normal_errors(truth: &TruthView, g: &GBuffers, out: &mut Vec<(f64, f64, f64)>) {
+/// One object pixel's normal error.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct PixelNormalError {
+    degrees: f64,
+    cosine_distance: f64,
+    /// To the nearest background pixel, pixels.
+    silhouette_distance: f64,
+    /// Within one pixel of a contour ([`ContourStats`]).
+    contour: bool,
+}
+
+/// Each object pixel's normal error.
+fn collect_normal_errors(truth: &TruthView, g: &GBuffers, out: &mut Vec<PixelNormalError>) {
     let distance = silhouette_distance(&truth.mask, g.width, g.height);
-    for (p, (&object, distance)) in truth.mask.iter().zip(distance).enumerate() {
+    let contour = near_contours(&truth.mask, &truth.depth, g.width, g.height);
+    for (p, (&object, silhouette_distance)) in truth.mask.iter().zip(distance).enumerate() {
         if let Some(cos) = normal_agreement(truth, g, p).filter(|_| object) {
-            out.push((cos.acos().to_degrees(), 1.0 - cos, distance));
+            out.push(PixelNormalError {
+                degrees: cos.acos().to_degrees(),
+                cosine_distance: 1.0 - cos,
+                silhouette_distance,
+                contour: contour[p],
+            });
         }
     }
+}
+
+/// The object pixels within one pixel (4-neighbourhood) of a contour ([`ContourStats`]).
+fn near_contours(mask: &[bool], depth: &[f64], width: usize, height: usize) -> Vec<bool> {
+    let neighbours = |p: usize| {
+        let (x, y) = (p % width, p / width);
+        [
+            (x > 0).then(|| p - 1),
+            (x + 1 < width).then(|| p + 1),
+            (y > 0).then(|| p - width),
+            (y + 1 < height).then(|| p + width),
+        ]
+    };
+    let on_contour: Vec<bool> = (0..mask.len())
+        .map(|p| {
+            mask[p]
+                && neighbours(p).iter().any(|n| match *n {
+                    None => true,
+                    Some(n) if !mask[n] => true,
+                    Some(n) => (depth[n] - depth[p]).abs() > DEPTH_JUMP * depth[p].abs(),
+                })
+        })
+        .collect();
+    (0..mask.len())
+        .map(|p| {
+            mask[p]
+                && (on_contour[p]
+                    || neighbours(p)
+                        .iter()
+                        .any(|n| n.is_some_and(|n| on_contour[n])))
+        })
+        .collect()
 }
 
 /// The view's normal errors as an image ([`NormalErrorMap`]).
@@ -617,18 +687,17 @@ fn silhouette_distance(mask: &[bool], width: usize, height: usize) -> Vec<f64> {
     d
 }
 
-fn normal_stats(mut errors: Vec<(f64, f64, f64)>) -> NormalStats {
+fn normal_stats(mut errors: Vec<PixelNormalError>) -> NormalStats {
     let n = errors.len().max(1);
-    let mean = |f: &dyn Fn(&(f64, f64, f64)) -> f64| errors.iter().map(f).sum::<f64>() / n as f64;
-    let mae_degrees = mean(&|e| e.0);
-    let cosine_distance = mean(&|e| e.1);
+    let mae_degrees = errors.iter().map(|e| e.degrees).sum::<f64>() / n as f64;
+    let total_cosine: f64 = errors.iter().map(|e| e.cosine_distance).sum();
     let by_silhouette_distance = BANDS
         .iter()
         .map(|&(from, to)| {
             let band: Vec<f64> = errors
                 .iter()
-                .filter(|e| e.2 >= from && e.2 < to)
-                .map(|e| e.0)
+                .filter(|e| e.silhouette_distance >= from && e.silhouette_distance < to)
+                .map(|e| e.degrees)
                 .collect();
             SilhouetteBand {
                 from,
@@ -638,11 +707,27 @@ fn normal_stats(mut errors: Vec<(f64, f64, f64)>) -> NormalStats {
             }
         })
         .collect();
-    errors.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let at_contours = errors.iter().filter(|e| e.contour).count();
+    let contour_cosine: f64 = errors
+        .iter()
+        .filter(|e| e.contour)
+        .map(|e| e.cosine_distance)
+        .sum();
+    let contours = ContourStats {
+        pixel_share: at_contours as f64 / n as f64,
+        cosine_distance_share: if total_cosine > 0.0 {
+            contour_cosine / total_cosine
+        } else {
+            0.0
+        },
+        cosine_distance_elsewhere: (total_cosine - contour_cosine)
+            / (errors.len() - at_contours).max(1) as f64,
+    };
+    errors.sort_by(|a, b| a.degrees.total_cmp(&b.degrees));
     let quantile = |q: f64| {
         errors
             .get(((errors.len() as f64 - 1.0) * q).round().max(0.0) as usize)
-            .map_or(0.0, |e| e.0)
+            .map_or(0.0, |e| e.degrees)
     };
     NormalStats {
         pixels: errors.len(),
@@ -650,8 +735,9 @@ fn normal_stats(mut errors: Vec<(f64, f64, f64)>) -> NormalStats {
         median_degrees: quantile(0.5),
         p90_degrees: quantile(0.9),
         p99_degrees: quantile(0.99),
-        cosine_distance,
+        cosine_distance: total_cosine / n as f64,
         by_silhouette_distance,
+        contours,
     }
 }
 
@@ -699,9 +785,17 @@ mod tests {
 
     #[test]
     fn normal_statistics_report_the_tail() {
-        let mut errors: Vec<(f64, f64, f64)> =
-            (0..100).map(|i| (1.0, 0.0, 12.0 + i as f64)).collect();
-        errors[0] = (91.0, 1.0, 0.5);
+        let error = |degrees: f64, silhouette_distance: f64, contour: bool| PixelNormalError {
+            degrees,
+            cosine_distance: 1.0 - degrees.to_radians().cos(),
+            silhouette_distance,
+            contour,
+        };
+        let mut errors: Vec<PixelNormalError> = (0..100)
+            .map(|i| error(1.0, 12.0 + i as f64, false))
+            .collect();
+        errors[0] = error(91.0, 0.5, true);
+        errors[1] = error(1.0, 13.0, true);
         let stats = normal_stats(errors);
         assert_eq!(stats.pixels, 100);
         assert!((stats.mae_degrees - 1.9).abs() < 1e-9);
@@ -709,6 +803,41 @@ mod tests {
         assert_eq!(stats.by_silhouette_distance[0].pixels, 1);
         assert_eq!(stats.by_silhouette_distance[0].mae_degrees, 91.0);
         assert_eq!(stats.by_silhouette_distance[4].pixels, 99);
+        let (small, large) = (
+            1.0 - 1f64.to_radians().cos(),
+            1.0 - 91f64.to_radians().cos(),
+        );
+        let contours = &stats.contours;
+        assert_eq!(contours.pixel_share, 0.02);
+        assert!(
+            (contours.cosine_distance_share - (large + small) / (large + 99.0 * small)).abs()
+                < 1e-12
+        );
+        assert!((contours.cosine_distance_elsewhere - small).abs() < 1e-15);
+    }
+
+    #[test]
+    fn contours_are_silhouettes_and_depth_jumps() {
+        // A 13 × 5 image: background in column 0, object elsewhere, a nearer part (depth 1)
+        // in columns 7–12 in front of a farther one in columns 1–6 that slopes away smoothly
+        // (2% a pixel, below the jump).
+        let (w, h) = (13, 5);
+        let mask: Vec<bool> = (0..w * h).map(|p| p % w != 0).collect();
+        let depth: Vec<f64> = (0..w * h)
+            .map(|p| match p % w {
+                0 => 0.0,
+                x @ 1..=6 => 2.0 + 0.04 * x as f64,
+                _ => 1.0,
+            })
+            .collect();
+        let near = near_contours(&mask, &depth, w, h);
+        let row = &near[2 * w..3 * w];
+        // Contours: column 1 (next to the background), 6 and 7 (the jump), 12 (the image's
+        // border counts as background); their neighbours are within one pixel; 3, 4, 9 and
+        // 10 are not, the slope notwithstanding.
+        let expected: Vec<bool> = (0..w).map(|x| ![0, 3, 4, 9, 10].contains(&x)).collect();
+        assert_eq!(row, expected.as_slice());
+        assert!(near[w + 3] && !near[2 * w + 3]);
     }
 
     #[test]

@@ -14,7 +14,7 @@ use phygap::core::resolution::Resolution;
 use phygap::formats::image_io::{write_exr, write_png};
 use phygap::io::capture::{self, LoadOptions};
 use phygap::io::model::Model;
-use phygap::pipeline::diagnose::{diagnose, DiagnoseTruth, Diagnosis, FAR_OFFSET};
+use phygap::pipeline::diagnose::{diagnose, DiagnoseTruth, Diagnosis, DEPTH_JUMP, FAR_OFFSET};
 use phygap::pipeline::reconstruction::Reconstruction;
 
 #[derive(Args, Debug)]
@@ -108,6 +108,15 @@ fn describe(report: &Diagnosis) -> String {
             band.mae_degrees
         ));
     }
+    let c = &n.contours;
+    text.push_str(&format!(
+        "  within 1 px of a contour (the silhouette or a jump of the true depth by more than {:.0}%): \
+         {:.1}% of the pixels, {:.1}% of the cosine distance; the others' cosine distance {:.4}\n",
+        100.0 * DEPTH_JUMP,
+        100.0 * c.pixel_share,
+        100.0 * c.cosine_distance_share,
+        c.cosine_distance_elsewhere
+    ));
     let d = &report.depths;
     let percent = |share: f64| 100.0 * share;
     let far = FAR_OFFSET;

@@ -206,18 +206,13 @@ fn error_color(degrees: f32) -> [f32; 3] {
     if degrees.is_nan() {
         return [0.0; 3];
     }
-    let (last_degrees, last) = ERROR_COLORS[ERROR_COLORS.len() - 1];
-    if degrees >= last_degrees {
-        return last;
+    match ERROR_COLORS.windows(2).find(|pair| degrees < pair[1].0) {
+        Some(&[(d0, c0), (d1, c1)]) => {
+            let t = ((degrees - d0) / (d1 - d0)).clamp(0.0, 1.0);
+            std::array::from_fn(|k| c0[k] + t * (c1[k] - c0[k]))
+        }
+        _ => ERROR_COLORS[ERROR_COLORS.len() - 1].1,
     }
-    let upper = ERROR_COLORS
-        .iter()
-        .position(|&(stop, _)| degrees < stop)
-        .unwrap_or(0)
-        .max(1);
-    let ((d0, c0), (d1, c1)) = (ERROR_COLORS[upper - 1], ERROR_COLORS[upper]);
-    let t = ((degrees - d0) / (d1 - d0)).clamp(0.0, 1.0);
-    std::array::from_fn(|k| c0[k] + t * (c1[k] - c0[k]))
 }
 
 /// Distance bands of [`NormalStats::by_silhouette_distance`], pixels.
@@ -443,8 +438,7 @@ pub fn diagnose(
             .backend
             .forward(scene.surfels, camera, &scene.settings)?;
         let g = &raster.gbuffers;
-        collect_normal_errors(truth_view, g, &mut normal_errors);
-        normal_error_maps.push(normal_error_map(truth_view, g));
+        normal_error_maps.push(collect_normal_errors(truth_view, g, &mut normal_errors));
         collect_depth_offsets(truth_view, g, radius, &mut depth_offsets);
         for ((name, replace), sum) in VARIANTS.iter().zip(sums.iter_mut()) {
             let light: &dyn LightProbe = match (replace.light, &truth_lit) {
@@ -542,19 +536,31 @@ struct PixelNormalError {
     contour: bool,
 }
 
-/// Each object pixel's normal error.
-fn collect_normal_errors(truth: &TruthView, g: &GBuffers, out: &mut Vec<PixelNormalError>) {
+/// Each object pixel's normal error, added to `out`, and the view's errors as an image.
+fn collect_normal_errors(
+    truth: &TruthView,
+    g: &GBuffers,
+    out: &mut Vec<PixelNormalError>,
+) -> NormalErrorMap {
     let distance = silhouette_distance(&truth.mask, g.width, g.height);
     let contour = near_contours(&truth.mask, &truth.depth, g.width, g.height);
+    let mut degrees = Image::filled(g.width, g.height, 1, f32::NAN);
     for (p, (&object, silhouette_distance)) in truth.mask.iter().zip(distance).enumerate() {
         if let Some(cos) = normal_agreement(truth, g, p).filter(|_| object) {
-            out.push(PixelNormalError {
+            let error = PixelNormalError {
                 degrees: cos.acos().to_degrees(),
                 cosine_distance: 1.0 - cos,
                 silhouette_distance,
                 contour: contour[p],
-            });
+            };
+            degrees.data[p] = error.degrees as f32;
+            out.push(error);
         }
+    }
+    NormalErrorMap {
+        view: truth.view.name.clone(),
+        frame_index: truth.view.frame_index,
+        degrees,
     }
 }
 
@@ -588,21 +594,6 @@ fn near_contours(mask: &[bool], depth: &[f64], width: usize, height: usize) -> V
                         .any(|n| n.is_some_and(|n| on_contour[n])))
         })
         .collect()
-}
-
-/// The view's normal errors as an image ([`NormalErrorMap`]).
-fn normal_error_map(truth: &TruthView, g: &GBuffers) -> NormalErrorMap {
-    let degrees = Image::from_fn(g.width, g.height, 1, |x, y, out| {
-        let p = y * g.width + x;
-        out[0] = normal_agreement(truth, g, p)
-            .filter(|_| truth.mask[p])
-            .map_or(f32::NAN, |cos| cos.acos().to_degrees() as f32);
-    });
-    NormalErrorMap {
-        view: truth.view.name.clone(),
-        frame_index: truth.view.frame_index,
-        degrees,
-    }
 }
 
 /// Each covered object pixel's depth offset from the truth (object radii, positive behind) and

@@ -10,6 +10,7 @@ use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
 use crate::core::envmap::EnvGrad;
 use crate::core::light::LightProbe;
+use crate::core::loss::LossPrecision;
 use crate::core::mesh::{GridLayout, ScalarGrid};
 use crate::core::raster::{
     GBufferGrads, RasterError, RasterGrads, RasterSettings, Rasterized, StageTime,
@@ -55,6 +56,12 @@ pub trait Backend: Send + Sync {
         _grid: &GridLayout,
     ) -> Option<Result<ScalarGrid, RasterError>> {
         None
+    }
+    /// The precision of the losses a host step computes for this backend where the computation
+    /// allows a choice (SSIM, [`crate::core::loss::ssim_in`]): f64 (the default, the reference's)
+    /// unless the engine trades it for speed.
+    fn loss_precision(&self) -> LossPrecision {
+        LossPrecision::F64
     }
     /// Device time per stage since the last call, where the backend measures it (the gpu
     /// backend with [`crate::gpu::GpuOptions::profile`]); empty otherwise.

@@ -13,13 +13,24 @@
 
 pub mod ssim;
 
-pub use ssim::{ssim, ssim_map};
+pub use ssim::{ssim, ssim_in, ssim_map};
 
 use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::core::camera::Camera;
 use crate::core::config::TrainConfig;
+
+/// The float type a loss computes in where an engine may choose it (SSIM: [`ssim_in`]); inputs
+/// and gradients are `f64` either way.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LossPrecision {
+    /// The reference's precision.
+    #[default]
+    F64,
+    /// Single precision, for the fast host engine.
+    F32,
+}
 
 /// A scalar loss and its gradient with respect to the (first) differentiable input.
 #[derive(Clone, Debug, PartialEq)]
@@ -196,7 +207,7 @@ pub fn l1(pred: &[f64], target: &[f64], weight_mask: Option<&[f64]>) -> LossValu
 }
 
 /// Photometric loss `(1 − λ)·L1 + λ·(1 − SSIM)` (METHOD.md §6, λ = 0.2) and its gradient with
-/// respect to `pred`.
+/// respect to `pred`, SSIM computed in `precision`.
 ///
 /// # Panics
 /// If either image is not `width · height · channels` long.
@@ -207,9 +218,10 @@ pub fn photometric(
     height: usize,
     channels: usize,
     lambda_ssim: f64,
+    precision: LossPrecision,
 ) -> LossValue {
     let l1_term = l1(pred, target, None);
-    let ssim_term = ssim(pred, target, width, height, channels);
+    let ssim_term = ssim_in(precision, pred, target, width, height, channels);
     let grad = l1_term
         .grad
         .iter()

@@ -186,12 +186,12 @@ fn photometric_combines_l1_and_ssim_and_its_gradient_matches() {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let x = random_vec(&mut rng, W * H * C, 0.0, 1.0);
         let y = random_vec(&mut rng, W * H * C, 0.0, 1.0);
-        let r = photometric(&x, &y, W, H, C, 0.2);
+        let r = photometric(&x, &y, W, H, C, 0.2, LossPrecision::F64);
         let expected = 0.8 * l1(&x, &y, None).value + 0.2 * (1.0 - ssim(&x, &y, W, H, C).value);
         assert!((r.value - expected).abs() < 1e-14);
         assert_gradient(
             "photometric",
-            &mut |p| photometric(p, &y, W, H, C, 0.2).value,
+            &mut |p| photometric(p, &y, W, H, C, 0.2, LossPrecision::F64).value,
             &x,
             &r.grad,
             1e-6,
@@ -200,7 +200,12 @@ fn photometric_combines_l1_and_ssim_and_its_gradient_matches() {
         );
     }
     let same = vec![0.25; W * H * C];
-    assert!(photometric(&same, &same, W, H, C, 0.2).value.abs() < 1e-14);
+    assert!(
+        photometric(&same, &same, W, H, C, 0.2, LossPrecision::F64)
+            .value
+            .abs()
+            < 1e-14
+    );
 }
 
 #[test]

@@ -102,7 +102,7 @@ pub fn run(
             &plan,
             target,
             &photometric,
-            weights,
+            inputs,
             &mut losses,
         )
     };
@@ -195,20 +195,30 @@ fn predict(g: &GBuffers, shaded: Option<&Shaded>, plan: &StepPlan) -> Vec<f64> {
     pred
 }
 
-/// The photometric loss against `photometric_target` (the view's, widened), and in the PolarDR
-/// stage the Stokes loss on S1/S2 (full views) or the extra L1 on I(θ) (partial views).
+/// The photometric loss against `photometric_target` (the view's, widened; SSIM in the backend's
+/// loss precision), and in the PolarDR stage the Stokes loss on S1/S2 (full views) or the extra
+/// L1 on I(θ) (partial views).
 fn image_losses(
     g: &GBuffers,
     shaded: Option<&Shaded>,
     plan: &StepPlan,
     target: &ViewTarget,
     photometric_target: &[f64],
-    weights: &LossWeights,
+    inputs: &StepInputs,
     losses: &mut BTreeMap<String, f64>,
 ) -> ImageGrads {
+    let weights = &inputs.weights;
     let (w, h) = (g.width, g.height);
     let pred = predict(g, shaded, plan);
-    let photometric = loss::photometric(&pred, photometric_target, w, h, 3, weights.lambda_ssim);
+    let photometric = loss::photometric(
+        &pred,
+        photometric_target,
+        w,
+        h,
+        3,
+        weights.lambda_ssim,
+        inputs.backend.loss_precision(),
+    );
     losses.insert("photometric".to_owned(), photometric.value);
     let mut grad_pred = photometric.grad;
     let mut grad_s12 = None;

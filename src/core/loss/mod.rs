@@ -23,10 +23,9 @@ use crate::core::config::TrainConfig;
 
 /// The float type a loss computes in where an engine may choose it (SSIM: [`ssim_in`]); inputs
 /// and gradients are `f64` either way.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LossPrecision {
     /// The reference's precision.
-    #[default]
     F64,
     /// Single precision, for the fast host engine.
     F32,

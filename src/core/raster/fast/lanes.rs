@@ -96,19 +96,6 @@ impl F32x8 {
         F32x8([v; LANES])
     }
 
-    /// The first [`LANES`] values of `values` (panics when it is shorter).
-    #[inline(always)]
-    pub fn load(values: &[f32]) -> Self {
-        let v = &values[..LANES];
-        F32x8(std::array::from_fn(|l| v[l]))
-    }
-
-    /// Writes the lanes to the first [`LANES`] values of `out`.
-    #[inline(always)]
-    pub fn store(self, out: &mut [f32]) {
-        out[..LANES].copy_from_slice(&self.0);
-    }
-
     /// `start, start + 1, …, start + 7`.
     #[inline(always)]
     pub fn ramp(start: f32) -> Self {
@@ -159,17 +146,6 @@ impl Mask8 {
         let mut out = [0; LANES];
         for l in 0..LANES {
             out[l] = if v[l] > k { u32::MAX } else { 0 };
-        }
-        Mask8(out)
-    }
-
-    /// Lanes where `values[l] != 0`.
-    #[inline(always)]
-    pub fn nonzero(values: &[u32]) -> Self {
-        let v = &values[..LANES];
-        let mut out = [0; LANES];
-        for l in 0..LANES {
-            out[l] = if v[l] != 0 { u32::MAX } else { 0 };
         }
         Mask8(out)
     }
@@ -288,17 +264,6 @@ impl F64x8 {
     #[inline(always)]
     pub fn splat(v: f64) -> Self {
         F64x8([v; LANES])
-    }
-
-    #[inline(always)]
-    pub fn load(values: &[f64]) -> Self {
-        let v = &values[..LANES];
-        F64x8(std::array::from_fn(|l| v[l]))
-    }
-
-    #[inline(always)]
-    pub fn store(self, out: &mut [f64]) {
-        out[..LANES].copy_from_slice(&self.0);
     }
 
     #[inline(always)]

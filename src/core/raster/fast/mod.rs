@@ -499,6 +499,58 @@ mod tests {
     use super::*;
     use glam::DVec3;
 
+    /// Pairing the rows of narrow boxes changes which vector holds a pixel, not its arithmetic:
+    /// every tile's sums, transmittance and counts are the same bits as walking rows.
+    #[test]
+    fn the_paired_walk_composites_the_same_bits_as_rows() {
+        let (w, h) = (96, 80);
+        let camera = Camera::look_at(w, h, 0.9, DVec3::new(0.4, -3.2, 0.9), DVec3::ZERO, DVec3::Z);
+        let mut surfels = crate::pipeline::bench::shell_surfels(3000, 5);
+        // Opaque enough that some pixels stop early.
+        surfels.opacity.iter_mut().for_each(|o| *o = 3.0);
+        let settings = RasterSettings::default();
+        let grid = TileGrid::new(w as usize, h as usize, TILE);
+        let bins = project_and_bin(&surfels, &camera, &settings, &grid);
+        let consts = PixelConsts::new(&settings);
+        let (mut narrow, mut wide, mut stopped) = (0, 0, 0);
+        let mut list = Vec::new();
+        for t in 0..grid.count() {
+            bins.gather(t, &mut list);
+            let bounds = grid.bounds(t).map(|v| v as u32);
+            let run = |walk| {
+                let mut sums = vec![0.0f32; NUM_SUMS * TILE_PIXELS];
+                let mut transmittance = vec![0.0f64; TILE_PIXELS];
+                let mut contributors = vec![0u32; TILE_PIXELS];
+                let out = TileOutput {
+                    sums: &mut sums,
+                    transmittance: &mut transmittance,
+                    contributors: &mut contributors,
+                };
+                let mut scratch = ForwardScratch::default();
+                let evaluations =
+                    tile::forward_body(&list, bounds, &consts, &mut scratch, out, walk);
+                (sums, transmittance, contributors, evaluations)
+            };
+            let rows = run(tile::Walk::Rows);
+            let paired = run(tile::Walk::PairNarrowRows);
+            let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&rows.0), bits(&paired.0), "tile {t}");
+            assert_eq!(rows.1, paired.1, "tile {t}");
+            assert_eq!((&rows.2, rows.3), (&paired.2, paired.3), "tile {t}");
+            stopped += rows.1.iter().filter(|&&v| v < 1e-3).count();
+            for sp in &list {
+                let (x0, x1) = (sp.rect[0].max(bounds[0]), sp.rect[2].min(bounds[2]));
+                if x1 - x0 <= 4 {
+                    narrow += 1;
+                } else {
+                    wide += 1;
+                }
+            }
+        }
+        assert!(narrow > 100 && wide > 100, "narrow {narrow}, wide {wide}");
+        assert!(stopped > 0, "some pixels are nearly opaque");
+    }
+
     /// Every entry has its own slot, among its surfel's contiguous slots.
     #[test]
     fn entry_slots_are_a_permutation_grouped_by_surfel() {

@@ -21,6 +21,7 @@ mod tiles;
 use std::any::Any;
 
 use glam::DVec3;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
@@ -406,11 +407,12 @@ fn depth_normal_pixel(
 }
 
 /// Unit world normals from central differences of the back-projected depth map, facing the
-/// camera; zero where undefined (see [`GBuffers::depth_normal`]).
+/// camera; zero where undefined (see [`GBuffers::depth_normal`]). Pixels in parallel (rayon).
 pub fn depth_normals(camera: &Camera, depth: &[f64], alpha: &[f64], eps: f64) -> Vec<[f64; 3]> {
     let (w, h) = (camera.width as usize, camera.height as usize);
     let rot = camera.rotation_opencv();
     (0..w * h)
+        .into_par_iter()
         .map(|k| {
             let (i, j) = (k % w, k / w);
             if !depth_normal_defined(alpha, w, h, i, j, eps) {
@@ -424,7 +426,8 @@ pub fn depth_normals(camera: &Camera, depth: &[f64], alpha: &[f64], eps: f64) ->
         .collect()
 }
 
-/// Gradient on the (α-normalized) depth buffer of `Σ upstream · depth_normals(depth)`.
+/// Gradient on the (α-normalized) depth buffer of `Σ upstream · depth_normals(depth)`; pixels in
+/// parallel (rayon), each a sum of its neighbours' terms in a fixed order.
 pub fn depth_normals_backward(
     camera: &Camera,
     depth: &[f64],
@@ -435,24 +438,25 @@ pub fn depth_normals_backward(
     let (w, h) = (camera.width as usize, camera.height as usize);
     let rot_t = camera.rotation_opencv().transpose();
     // Gradients on dx and dy of every pixel.
-    let mut gdx = vec![DVec3::ZERO; w * h];
-    let mut gdy = vec![DVec3::ZERO; w * h];
-    for k in 0..w * h {
-        let (i, j) = (k % w, k / w);
-        let g = DVec3::from_array(upstream[k]);
-        if g == DVec3::ZERO || !depth_normal_defined(alpha, w, h, i, j, eps) {
-            continue;
-        }
-        let Some(px) = depth_normal_pixel(camera, depth, w, i, j) else {
-            continue;
-        };
-        let gc = rot_t * g;
-        let n = px.v / px.len;
-        let gv = px.sign * (gc - n * n.dot(gc)) / px.len;
-        gdx[k] = px.dy.cross(gv);
-        gdy[k] = gv.cross(px.dx);
-    }
+    let (gdx, gdy): (Vec<DVec3>, Vec<DVec3>) = (0..w * h)
+        .into_par_iter()
+        .map(|k| {
+            let (i, j) = (k % w, k / w);
+            let g = DVec3::from_array(upstream[k]);
+            if g == DVec3::ZERO || !depth_normal_defined(alpha, w, h, i, j, eps) {
+                return (DVec3::ZERO, DVec3::ZERO);
+            }
+            let Some(px) = depth_normal_pixel(camera, depth, w, i, j) else {
+                return (DVec3::ZERO, DVec3::ZERO);
+            };
+            let gc = rot_t * g;
+            let n = px.v / px.len;
+            let gv = px.sign * (gc - n * n.dot(gc)) / px.len;
+            (px.dy.cross(gv), gv.cross(px.dx))
+        })
+        .unzip();
     (0..w * h)
+        .into_par_iter()
         .map(|k| {
             let (i, j) = (k % w, k / w);
             // dx(i, j) = P(i+1, j) − P(i−1, j): P(i, j) receives +gdx(i−1, j) − gdx(i+1, j).

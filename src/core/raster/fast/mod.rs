@@ -506,13 +506,13 @@ mod tests {
         let (w, h) = (96, 80);
         let camera = Camera::look_at(w, h, 0.9, DVec3::new(0.4, -3.2, 0.9), DVec3::ZERO, DVec3::Z);
         let mut surfels = crate::pipeline::bench::shell_surfels(3000, 5);
-        // Opaque enough that some pixels stop early.
+        // Opaque enough that pixels near the stopping threshold occur.
         surfels.opacity.iter_mut().for_each(|o| *o = 3.0);
         let settings = RasterSettings::default();
         let grid = TileGrid::new(w as usize, h as usize, TILE);
         let bins = project_and_bin(&surfels, &camera, &settings, &grid);
         let consts = PixelConsts::new(&settings);
-        let (mut narrow, mut wide, mut stopped) = (0, 0, 0);
+        let (mut narrow, mut wide, mut nearly_opaque) = (0, 0, 0);
         let mut list = Vec::new();
         for t in 0..grid.count() {
             bins.gather(t, &mut list);
@@ -537,7 +537,7 @@ mod tests {
             assert_eq!(bits(&rows.0), bits(&paired.0), "tile {t}");
             assert_eq!(rows.1, paired.1, "tile {t}");
             assert_eq!((&rows.2, rows.3), (&paired.2, paired.3), "tile {t}");
-            stopped += rows.1.iter().filter(|&&v| v < 1e-3).count();
+            nearly_opaque += rows.1.iter().filter(|&&v| v < 1e-3).count();
             for sp in &list {
                 let (x0, x1) = (sp.rect[0].max(bounds[0]), sp.rect[2].min(bounds[2]));
                 if x1 - x0 <= 4 {
@@ -548,7 +548,7 @@ mod tests {
             }
         }
         assert!(narrow > 100 && wide > 100, "narrow {narrow}, wide {wide}");
-        assert!(stopped > 0, "some pixels are nearly opaque");
+        assert!(nearly_opaque > 0, "some pixels are nearly opaque");
     }
 
     /// Every entry has its own slot, among its surfel's contiguous slots.

@@ -507,14 +507,13 @@ pub(super) fn forward_body(
         let entry_count = [k as u32 + 1; LANES];
         let features = sp.features.map(F32x8::splat);
         for group in Groups::new(in_tile, offset, walk) {
-            let group = &group;
             let done = Mask8(group.load(&s.done));
             let alive = group.inside.and_not(done);
             if !alive.any() {
                 continue;
             }
             evaluations += u64::from(alive.count());
-            let row = RowConsts::new(sp, group);
+            let row = RowConsts::new(sp, &group);
             let Some(hit) = evaluate(sp, &row, group.x, alive, c) else {
                 continue;
             };
@@ -739,16 +738,14 @@ fn backward_body(
         let features = sp.features.map(F32x8::splat);
         let mut acc = GradLanes::default();
         for group in Groups::new(in_tile, offset, Walk::Rows) {
-            let group = &group;
             let alive = group
                 .inside
                 .and(Mask8::greater(&group.load(&s.contrib), k as u32));
             if !alive.any() {
                 continue;
             }
-            let row = RowConsts::new(sp, group);
-            let (lxv, lyv) = (group.x, group.y);
-            let Some(hit) = evaluate(sp, &row, lxv, alive, c) else {
+            let row = RowConsts::new(sp, &group);
+            let Some(hit) = evaluate(sp, &row, group.x, alive, c) else {
                 continue;
             };
             let valid = hit.ok;
@@ -802,8 +799,8 @@ fn backward_body(
                     (-(hit.inv * hit.inv) * g_inv).and(plane),
                 ];
                 for (r, g) in acc.plane.iter_mut().zip(gp) {
-                    r[0] += g * lxv;
-                    r[1] += g * lyv;
+                    r[0] += g * group.x;
+                    r[1] += g * group.y;
                     r[2] += g;
                 }
             }

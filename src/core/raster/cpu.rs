@@ -463,9 +463,13 @@ impl CpuBackend {
             per_surfel[i as usize].add(g);
         }
         drop(entry_grads);
-        Ok(chain_to_raw(surfels, camera, &bins.projected, |i, _| {
-            per_surfel[i]
-        }))
+        Ok(chain_to_raw(
+            surfels,
+            camera,
+            &bins.projected,
+            Projected::activations,
+            |i, _| per_surfel[i],
+        ))
     }
 }
 

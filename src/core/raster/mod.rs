@@ -557,14 +557,16 @@ pub fn unnormalize_upstream(
     (g_alpha, g_sums)
 }
 
-/// Chains per-surfel gradients on the projections (`grad_of(i, p)` for visible surfel `i`) to
-/// the raw surfel parameters through [`project::project_backward`] (rayon over surfels); culled
-/// surfels get zero gradients.
-pub fn chain_to_raw(
+/// Chains per-surfel gradients on the projections (`grad_of(i, p)` for visible surfel `i`, whose
+/// engine kept `p` of its projection, holding its [`project::Activations`]) to the raw surfel
+/// parameters through [`project::project_backward`] (rayon over surfels); culled surfels get zero
+/// gradients.
+pub fn chain_to_raw<P: Sync>(
     surfels: &Surfels,
     camera: &Camera,
-    projected: &[Option<project::Projected>],
-    grad_of: impl Fn(usize, &project::Projected) -> project::ProjectedGrad + Sync,
+    projected: &[Option<P>],
+    activations: impl Fn(&P) -> project::Activations + Sync,
+    grad_of: impl Fn(usize, &P) -> project::ProjectedGrad + Sync,
 ) -> RasterGrads {
     use rayon::prelude::*;
     let _span = tracing::info_span!("project_backward").entered();
@@ -588,7 +590,7 @@ pub fn chain_to_raw(
             let Some(p) = p else {
                 return;
             };
-            let r = project::project_backward(surfels, p, &cam, &grad_of(i, p));
+            let r = project::project_backward(surfels, i, &activations(p), &cam, &grad_of(i, p));
             *pos = r.position;
             *ls = r.log_scale;
             *rot = r.rotation;

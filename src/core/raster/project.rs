@@ -54,6 +54,31 @@ pub struct Projected {
     pub rect: [u32; 4],
 }
 
+impl Projected {
+    /// The activated values [`project_backward`] reads.
+    pub fn activations(&self) -> Activations {
+        let f = &self.features;
+        Activations {
+            opacity: self.opacity,
+            albedo: [f[3], f[4], f[5]],
+            roughness: f[6],
+            ior: f[7],
+        }
+    }
+}
+
+/// The activated values of a projected surfel that [`project_backward`] reads, for the
+/// derivatives of their sigmoids (σ′ = σ (1 − σ)): what an engine keeps for the backward pass
+/// besides the frame of its own per-pixel values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Activations {
+    pub opacity: f64,
+    pub albedo: [f64; 3],
+    pub roughness: f64,
+    /// `IOR_MIN + σ(ior)`.
+    pub ior: f64,
+}
+
 /// Camera quantities shared by every surfel of one projection.
 #[derive(Clone, Copy, Debug)]
 pub struct ProjectionCamera {
@@ -341,14 +366,16 @@ pub struct RawGrad {
     pub mean2d_norm: f64,
 }
 
-/// Chains the gradient on a surfel's projected values back to its raw parameters.
+/// Chains the gradient on the projected values of surfel `index` back to its raw parameters
+/// (`activations`: those its projection computed).
 pub fn project_backward(
     surfels: &Surfels,
-    projected: &Projected,
+    index: usize,
+    activations: &Activations,
     cam: &ProjectionCamera,
     grad: &ProjectedGrad,
 ) -> RawGrad {
-    let geo = geometry(surfels, projected.index as usize, cam);
+    let geo = geometry(surfels, index, cam);
     let [m0, m1, m2] = geo.m;
     let px = m1.cross(m2);
     let py = m2.cross(m0);
@@ -397,19 +424,19 @@ pub fn project_backward(
 
     // sigmoid' = σ (1 − σ), from the activated values the projection kept.
     let dsig = |s: f64| s * (1.0 - s);
-    let act = &projected.features;
+    let act = activations;
     RawGrad {
         position,
         log_scale,
         rotation,
-        opacity: grad.opacity * dsig(projected.opacity),
+        opacity: grad.opacity * dsig(act.opacity),
         albedo: [
-            f[3] * dsig(act[3]),
-            f[4] * dsig(act[4]),
-            f[5] * dsig(act[5]),
+            f[3] * dsig(act.albedo[0]),
+            f[4] * dsig(act.albedo[1]),
+            f[5] * dsig(act.albedo[2]),
         ],
-        roughness: f[6] * dsig(act[6]),
-        ior: f[7] * dsig(act[7] - IOR_MIN),
+        roughness: f[6] * dsig(act.roughness),
+        ior: f[7] * dsig(act.ior - IOR_MIN),
         mean2d_norm: (mean2d[0] * mean2d[0] + mean2d[1] * mean2d[1]).sqrt(),
     }
 }

@@ -33,7 +33,7 @@ use self::tile::{
     BackwardScratch, ForwardScratch, LocalGrad, PixelConsts, PixelUpstream, PlaneFrame, Splat,
     TileOutput, DEPTH_SQ, NUM_SUMS, TILE, TILE_PIXELS,
 };
-use super::project::{self, Projected, ProjectionCamera};
+use super::project::{self, Activations, ProjectionCamera};
 use super::tiles::TileGrid;
 use super::{
     begin_backward, chain_to_raw, depth_normals, depth_upstream, unnormalize_upstream,
@@ -111,10 +111,22 @@ impl FastBackend {
     }
 }
 
+/// What the backward pass keeps of a visible surfel's projection: the frame its splat was made in
+/// and the activated values the projection's backward reads: about a third of a whole
+/// [`project::Projected`]'s bytes (the projection and binning are bound by the memory they move).
+#[derive(Clone, Copy, Debug)]
+struct Kept {
+    frame: PlaneFrame,
+    activations: Activations,
+    /// The centre depth's bits (the sort key; depths are > near ≥ 0, so the bits order like
+    /// the values).
+    depth_bits: u64,
+}
+
 /// Visible surfels binned into tiles.
 struct Bins {
-    /// Per surfel, its projection (`None`: culled).
-    projected: Vec<Option<Projected>>,
+    /// Per surfel, what the backward keeps of its projection (`None`: culled).
+    kept: Vec<Option<Kept>>,
     /// The visible surfels in depth order (front to back, ties by index).
     splats: Vec<Splat>,
     /// Per tile `t`, entries `tile_offsets[t]..tile_offsets[t + 1]`, front to back.
@@ -153,24 +165,31 @@ fn project_and_bin(
     grid: &TileGrid,
 ) -> Bins {
     let cam = ProjectionCamera::new(camera);
-    let (projected, splats_by_index): (Vec<Option<Projected>>, Vec<Splat>) = {
+    // Per surfel: what the backward keeps (and the sort key), the splat.
+    let (kept, splats_by_index): (Vec<Option<Kept>>, Vec<Splat>) = {
         let _span = info_span!("project", surfels = surfels.len()).entered();
         (0..surfels.len())
             .into_par_iter()
-            .map(|i| {
-                let p = project::project(surfels, i, &cam, settings);
-                let splat = p.as_ref().map(Splat::new).unwrap_or_default();
-                (p, splat)
+            .map(|i| match project::project(surfels, i, &cam, settings) {
+                None => (None, Splat::default()),
+                Some(p) => {
+                    let frame = PlaneFrame::of(&p);
+                    let kept = Kept {
+                        frame,
+                        activations: p.activations(),
+                        depth_bits: p.view_depth.to_bits(),
+                    };
+                    (Some(kept), Splat::in_frame(&p, &frame))
+                }
             })
             .unzip()
     };
     let _span = info_span!("bin").entered();
-    // Sort by centre depth; depths are > near ≥ 0, so their bit patterns order like the values.
-    // Ties are broken by index: the order is deterministic.
-    let mut keys: Vec<(u64, u32)> = projected
+    // Sorted by centre depth, ties by index: the order is deterministic.
+    let mut keys: Vec<(u64, u32)> = kept
         .iter()
         .enumerate()
-        .filter_map(|(i, p)| p.as_ref().map(|p| (p.view_depth.to_bits(), i as u32)))
+        .filter_map(|(i, k)| k.as_ref().map(|k| (k.depth_bits, i as u32)))
         .collect();
     keys.par_sort_unstable();
     let splats: Vec<Splat> = keys
@@ -214,7 +233,7 @@ fn project_and_bin(
         }
     }
     Bins {
-        projected,
+        kept,
         splats,
         tile_offsets: offsets,
         entries,
@@ -466,13 +485,19 @@ impl FastBackend {
         }
 
         // Per surfel, its entries in tile order: a fixed order, no shared writes.
-        Ok(chain_to_raw(surfels, camera, &bins.projected, |i, p| {
-            let mut sum = LocalGrad::<f64>::default();
-            for g in &slot_grads[bins.surfel_slots[i]..bins.surfel_slots[i + 1]] {
-                sum.add(g);
-            }
-            sum.to_projected(&PlaneFrame::of(p))
-        }))
+        Ok(chain_to_raw(
+            surfels,
+            camera,
+            &bins.kept,
+            |kept| kept.activations,
+            |i, kept| {
+                let mut sum = LocalGrad::<f64>::default();
+                for g in &slot_grads[bins.surfel_slots[i]..bins.surfel_slots[i + 1]] {
+                    sum.add(g);
+                }
+                sum.to_projected(&kept.frame)
+            },
+        ))
     }
 }
 
@@ -577,9 +602,12 @@ mod tests {
         }
         assert_eq!(bins.surfel_slots[surfels.len()], total);
         // Splat of each surfel index, to map entries (depth ranks) back to surfels.
+        let cam = ProjectionCamera::new(&camera);
+        let splat_of =
+            |i: usize| project::project(&surfels, i, &cam, &settings).map(|p| Splat::new(&p));
         let index_of = |sp: &Splat| {
             (0..surfels.len())
-                .find(|&i| bins.projected[i].as_ref().map(Splat::new).as_ref() == Some(sp))
+                .find(|&i| splat_of(i).as_ref() == Some(sp))
                 .unwrap()
         };
         for t in 0..grid.count() {

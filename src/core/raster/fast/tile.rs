@@ -94,7 +94,12 @@ impl PlaneFrame {
 impl Splat {
     /// `p` in its frame ([`PlaneFrame::of`]).
     pub fn new(p: &Projected) -> Self {
-        let PlaneFrame { scale, origin } = PlaneFrame::of(p);
+        Self::in_frame(p, &PlaneFrame::of(p))
+    }
+
+    /// `p` in `frame`, which must be [`PlaneFrame::of`]`(p)` (for a caller that keeps it).
+    pub fn in_frame(p: &Projected, frame: &PlaneFrame) -> Self {
+        let PlaneFrame { scale, origin } = *frame;
         let [ox, oy] = origin;
         let q = &p.q;
         let row = |k: usize| {

@@ -34,8 +34,6 @@ pub const NUM_FEATURES: usize = 8;
 /// A surfel projected into one camera: everything the per-pixel loop needs.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Projected {
-    /// Index of the surfel in its [`Surfels`].
-    pub index: u32,
     /// Rows of `Q = adj(M)`: `p = (q[0..3]·(x,y,1), q[3..6]·(x,y,1), q[6..9]·(x,y,1))`.
     pub q: [f64; 9],
     /// `det(M)`: the intersection depth is `det / p.z`.
@@ -311,7 +309,6 @@ pub fn project(
         return None;
     }
     Some(Projected {
-        index: i as u32,
         q,
         det,
         mean,

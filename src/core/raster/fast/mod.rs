@@ -113,7 +113,7 @@ impl FastBackend {
 
 /// What the backward pass keeps of a visible surfel's projection: the frame its splat was made in
 /// and the activated values the projection's backward reads, with the sort key: 88 bytes a
-/// surfel against a whole [`project::Projected`]'s 216 (the projection and binning are bound by
+/// surfel against a whole [`project::Projected`]'s 208 (the projection and binning are bound by
 /// the memory they move).
 #[derive(Clone, Copy, Debug)]
 struct Kept {

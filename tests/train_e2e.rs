@@ -371,6 +371,39 @@ fn a_capture_trains_at_its_working_resolution_and_evaluates_at_both() {
     // misregistration (a wrongly scaled camera would cost far more than a few dB).
     assert!(full.psnr.unwrap() > working.psnr.unwrap() - 3.0);
     assert_ne!(working.psnr, full.psnr, "two resolutions, two comparisons");
+
+    // The same object rendered at twice the size (a raw capture's reference is the sensor's
+    // size): `eval`'s working resolution brings it to the model's 24×16 by ÷ 4, not ÷ 2.
+    let trained = model.info.working_resolution.unwrap();
+    assert_eq!(trained.for_views(48, 32), Resolution::Downscale(2));
+    let larger_dir = dir.path().join("larger");
+    let larger = SynthOptions {
+        size: 96,
+        height: Some(64),
+        ..options
+    };
+    synth(&larger_dir, &larger).unwrap();
+    let resolution = trained.for_views(96, 64);
+    assert_eq!(resolution, Resolution::LongestSide(24));
+    let options = LoadOptions {
+        resolution,
+        ..LoadOptions::default()
+    };
+    let reference = capture::load_with(&larger_dir, &options).unwrap();
+    assert_eq!(
+        (
+            reference.views[0].camera.width,
+            reference.views[0].camera.height
+        ),
+        (24, 16)
+    );
+    let truth = phygap::pipeline::scorecard::GroundTruth::default();
+    let shrunk = phygap::pipeline::scorecard::score(&model, &reference, &truth).unwrap();
+    println!(
+        "the larger render at the working size: PSNR {:?}",
+        shrunk.psnr
+    );
+    assert!((shrunk.psnr.unwrap() - working.psnr.unwrap()).abs() < 1.5);
 }
 
 /// `phygap diagnose`'s budget on a trained synthetic capture: every variant is scored, the

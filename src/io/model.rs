@@ -26,6 +26,7 @@ use crate::core::camera::Camera;
 use crate::core::config::{Mode, TrainConfig};
 use crate::core::envmap::{CubeMap, EnvMapError, WorldUp};
 use crate::core::raster::RasterSettings;
+use crate::core::resolution::Resolution;
 use crate::core::surfels::{self, Surfels};
 use crate::formats::image_io::{self, Image, ImageError};
 use crate::formats::ply::PlyError;
@@ -98,6 +99,18 @@ impl WorkingResolution {
             height,
             full_width: capture.full_size.0,
             full_height: capture.full_size.1,
+        }
+    }
+
+    /// The resolution that shows views of `width × height` at this working size: this factor for
+    /// views of the size trained from, else the factor that brings their longest side to the
+    /// working one (a raw capture's full-Stokes reference, rendered at the sensor's size, is
+    /// compared at the size its mosaics were demosaiced and shrunk to for training).
+    pub fn for_views(&self, width: u32, height: u32) -> Resolution {
+        if (width, height) == (self.full_width, self.full_height) {
+            Resolution::Downscale(self.downscale)
+        } else {
+            Resolution::LongestSide(self.width.max(self.height))
         }
     }
 }

@@ -3,14 +3,14 @@
 //! was trained at, or the capture's own); with a relighting map, the relit S0 against the
 //! views' `relight_s0` ground truth; with a ground-truth mesh, the Chamfer-L1 of the model's mesh.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::Result;
 use clap::Args;
 
 use phygap::core::resolution::Resolution;
 use phygap::io::capture;
-use phygap::io::model::Model;
+use phygap::io::model::{Model, WorkingResolution};
 use phygap::pipeline::evaluate::EvalReport;
 use phygap::pipeline::scorecard::{self, GroundTruth};
 
@@ -33,9 +33,22 @@ pub struct EvalArgs {
     #[arg(long, help = crate::GRIDMAP_OVERRIDE_HELP)]
     pub gridmap: Option<crate::Switch>,
     /// Evaluate at the resolution the model was trained at (`working`: the capture's views
-    /// shrunk as they were for training) or at the capture's own (`full`).
+    /// shrunk as they were for training, or, for views of another size such as a raw capture's
+    /// full-Stokes reference, to the working size's longest side) or at the capture's own
+    /// (`full`).
     #[arg(long, value_enum, default_value = "working")]
     pub resolution: EvalResolution,
+}
+
+/// The resolution that shows `capture`'s views at the size `trained` ran at
+/// ([`WorkingResolution::for_views`], from the capture's cameras alone).
+fn working_resolution(trained: &WorkingResolution, capture: &Path) -> Result<Resolution> {
+    let cameras = capture::load_cameras(capture)?;
+    Ok(cameras
+        .first()
+        .map_or(Resolution::Downscale(trained.downscale), |(_, camera)| {
+            trained.for_views(camera.width, camera.height)
+        }))
 }
 
 /// The resolution `phygap eval` renders and compares at.
@@ -48,7 +61,7 @@ pub enum EvalResolution {
 pub fn run(args: &EvalArgs) -> Result<()> {
     let mut model = Model::load(&args.model)?;
     let resolution = match (args.resolution, model.info.working_resolution) {
-        (EvalResolution::Working, Some(trained)) => Resolution::Downscale(trained.downscale),
+        (EvalResolution::Working, Some(trained)) => working_resolution(&trained, &args.capture)?,
         _ => Resolution::Full,
     };
     let options = capture::LoadOptions {

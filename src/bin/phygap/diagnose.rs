@@ -4,13 +4,14 @@
 //! its normals' errors (mean, median, 90th and 99th percentiles, by distance to the silhouette).
 //! The lighting and relighting maps come from the capture's `scene.json`. `--images DIR`
 //! also writes each test view's normal error as an image (false colour PNG, degrees in EXR).
+//! The views are compared at the size the model was trained at (a capture of another size, such
+//! as a raw capture's full-Stokes reference, shrunk to it).
 
 use std::path::PathBuf;
 
 use anyhow::{Context, Result};
 use clap::Args;
 
-use phygap::core::resolution::Resolution;
 use phygap::formats::image_io::{write_exr, write_png};
 use phygap::io::capture::{self, LoadOptions};
 use phygap::io::model::Model;
@@ -36,9 +37,8 @@ pub struct DiagnoseArgs {
 
 pub fn run(args: &DiagnoseArgs) -> Result<()> {
     let model = Model::load(&args.model)?;
-    let downscale = model.info.working_resolution.map_or(1, |r| r.downscale);
     let options = LoadOptions {
-        resolution: Resolution::Downscale(downscale),
+        resolution: crate::working_resolution(&model, &args.capture)?,
         ..LoadOptions::default()
     };
     let capture = capture::load_with(&args.capture, &options)?;

@@ -3,14 +3,14 @@
 //! was trained at, or the capture's own); with a relighting map, the relit S0 against the
 //! views' `relight_s0` ground truth; with a ground-truth mesh, the Chamfer-L1 of the model's mesh.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use anyhow::Result;
 use clap::Args;
 
 use phygap::core::resolution::Resolution;
 use phygap::io::capture;
-use phygap::io::model::{Model, WorkingResolution};
+use phygap::io::model::Model;
 use phygap::pipeline::evaluate::EvalReport;
 use phygap::pipeline::scorecard::{self, GroundTruth};
 
@@ -40,17 +40,6 @@ pub struct EvalArgs {
     pub resolution: EvalResolution,
 }
 
-/// The resolution that shows `capture`'s views at the size `trained` ran at
-/// ([`WorkingResolution::for_views`], from the capture's cameras alone).
-fn working_resolution(trained: &WorkingResolution, capture: &Path) -> Result<Resolution> {
-    let cameras = capture::load_cameras(capture)?;
-    Ok(cameras
-        .first()
-        .map_or(Resolution::Downscale(trained.downscale), |(_, camera)| {
-            trained.for_views(camera.width, camera.height)
-        }))
-}
-
 /// The resolution `phygap eval` renders and compares at.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EvalResolution {
@@ -60,9 +49,9 @@ pub enum EvalResolution {
 
 pub fn run(args: &EvalArgs) -> Result<()> {
     let mut model = Model::load(&args.model)?;
-    let resolution = match (args.resolution, model.info.working_resolution) {
-        (EvalResolution::Working, Some(trained)) => working_resolution(&trained, &args.capture)?,
-        _ => Resolution::Full,
+    let resolution = match args.resolution {
+        EvalResolution::Working => crate::working_resolution(&model, &args.capture)?,
+        EvalResolution::Full => Resolution::Full,
     };
     let options = capture::LoadOptions {
         resolution,

@@ -78,6 +78,27 @@ fn override_gridmap(model: &mut phygap::io::model::Model, switch: Option<Switch>
     }
 }
 
+/// The resolution that shows `capture`'s views at the size `model` was trained at
+/// ([`WorkingResolution::for_views`](phygap::io::model::WorkingResolution::for_views), from the
+/// capture's cameras alone): a raw capture's full-Stokes reference, rendered at the sensor's
+/// size, is compared at the size its mosaics were demosaiced and shrunk to. A model that records
+/// no working resolution was trained at the capture's own.
+fn working_resolution(
+    model: &phygap::io::model::Model,
+    capture: &std::path::Path,
+) -> anyhow::Result<phygap::core::resolution::Resolution> {
+    use phygap::core::resolution::Resolution;
+    let Some(trained) = model.info.working_resolution else {
+        return Ok(Resolution::Full);
+    };
+    let cameras = phygap::io::capture::load_cameras(capture)?;
+    Ok(cameras
+        .first()
+        .map_or(Resolution::Downscale(trained.downscale), |(_, camera)| {
+            trained.for_views(camera.width, camera.height)
+        }))
+}
+
 /// Runs `command`; `matches` are the command line's (the training settings need to know which
 /// flags were given, to override a config file with those only).
 fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {

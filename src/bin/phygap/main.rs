@@ -79,10 +79,9 @@ fn override_gridmap(model: &mut phygap::io::model::Model, switch: Option<Switch>
 }
 
 /// The resolution that shows `capture`'s views at the size `model` was trained at
-/// ([`WorkingResolution::for_views`](phygap::io::model::WorkingResolution::for_views), from the
-/// capture's cameras alone): a raw capture's full-Stokes reference, rendered at the sensor's
-/// size, is compared at the size its mosaics were demosaiced and shrunk to. A model that records
-/// no working resolution was trained at the capture's own.
+/// ([`WorkingResolution::for_views`](phygap::io::model::WorkingResolution::for_views) of the
+/// capture's first camera, read without its images). A model that records no working resolution
+/// was trained at the capture's own.
 fn working_resolution(
     model: &phygap::io::model::Model,
     capture: &std::path::Path,

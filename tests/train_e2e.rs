@@ -8,10 +8,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use phygap::core::config::{Mode, TrainConfig};
 use phygap::core::events::{Stage, TrainEvent};
-use phygap::io::capture::{self, Capture};
+use phygap::io::capture::{self, Capture, Measurement};
+use phygap::io::model::Model;
 use phygap::pipeline::synth::{synth, SynthOptions};
 use phygap::pipeline::train::state::{TrainState, CHECKPOINT_FILE};
-use phygap::pipeline::train::{train, TrainOutcome};
+use phygap::pipeline::train::{train, TrainError, TrainOutcome};
 
 fn synthetic_capture(dir: &Path, views: usize, size: u32) -> Capture {
     let options = SynthOptions {
@@ -207,6 +208,52 @@ fn resumed_run_is_bit_identical_and_seeds_are_deterministic() {
     };
     let err = train(&capture, &resumed, &changed, true, &cancel, &mut |_| {}).unwrap_err();
     assert!(err.to_string().contains("different configuration"), "{err}");
+}
+
+#[test]
+fn a_darker_exposure_of_the_same_views_trains_to_the_same_surfels() {
+    let dir = tempfile::tempdir().unwrap();
+    let bright = synthetic_capture(&dir.path().join("capture"), 12, 32);
+    // The same views a quarter as bright: dividing by a power of two is exact, so after the
+    // run's exposure normalization both fit the same bits.
+    let mut dark = bright.clone();
+    for view in &mut dark.views {
+        let Measurement::Stokes { s0, s1, s2 } = &mut view.measurement else {
+            panic!("synth writes full Stokes");
+        };
+        for image in [s0, s1, s2] {
+            image.data.iter_mut().for_each(|v| *v *= 0.25);
+        }
+    }
+    let config = small_config(120);
+    let (bright_dir, dark_dir) = (dir.path().join("bright"), dir.path().join("dark"));
+    run(&bright, &bright_dir, &config, false, None);
+    run(&dark, &dark_dir, &config, false, None);
+
+    let load = |dir: &Path| TrainState::load(&dir.join(CHECKPOINT_FILE)).unwrap().0;
+    let (a, b) = (load(&bright_dir), load(&dark_dir));
+    assert_eq!(b.radiance_scale, 0.25 * a.radiance_scale);
+    // (`assert!`, not `assert_eq!`: a failure would print thousands of surfels.)
+    assert!(
+        a.surfels == b.surfels,
+        "the exposure changed what the views train to"
+    );
+    assert!(a.envmap == b.envmap, "the exposure changed the run's light");
+    // The models' light is in their captures' units (stored as f32).
+    let (a, b) = (
+        Model::load(&bright_dir).unwrap().envmap.radiance(),
+        Model::load(&dark_dir).unwrap().envmap.radiance(),
+    );
+    for (bright, dark) in a.iter().zip(&b) {
+        assert!(
+            (dark - 0.25 * bright).abs() <= 1e-6 * bright.max(1e-3),
+            "{dark} {bright}"
+        );
+    }
+    // A checkpoint resumed against views of another exposure is refused, not refitted.
+    let cancel = AtomicBool::new(false);
+    let err = train(&bright, &dark_dir, &config, true, &cancel, &mut |_| {}).unwrap_err();
+    assert!(matches!(err, TrainError::ExposureChanged { .. }), "{err}");
 }
 
 #[test]

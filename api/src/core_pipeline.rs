@@ -115,9 +115,24 @@ impl Pipeline for CorePipeline {
         let capture = train::load_capture(capture_dir, config, &engine, &self.capture_limits)
             .map_err(capture_error)?;
         capture.check_trainable().map_err(capture_error)?;
-        match train::train_on(
-            &engine, &capture, model_dir, config, resume, cancel, on_event,
-        ) {
+        let mut run = |resume| {
+            train::train_on(
+                &engine, &capture, model_dir, config, resume, cancel, on_event,
+            )
+        };
+        let outcome = match run(resume) {
+            // A job's checkpoint from before exposure normalization cannot go on (its light is
+            // in other units): the job starts over rather than failing.
+            Err(train::TrainError::ExposureChanged { path, .. }) => {
+                tracing::warn!(
+                    checkpoint = %path.display(),
+                    "the job's checkpoint predates exposure normalization: training from the start"
+                );
+                run(false)
+            }
+            outcome => outcome,
+        };
+        match outcome {
             Ok(phygap::pipeline::train::TrainOutcome::Finished) => Ok(RunOutcome::Finished),
             Ok(phygap::pipeline::train::TrainOutcome::Interrupted { iteration }) => {
                 Ok(RunOutcome::Interrupted { iteration })
@@ -164,5 +179,77 @@ impl Pipeline for CorePipeline {
     ) -> Result<Vec<PathBuf>, PipelineError> {
         phygap::pipeline::relight::relight(model_dir, envmap, cameras, out_dir, rotate_deg)
             .map_err(|e| failed("relighting", e))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use phygap::pipeline::synth::{synth, SynthOptions};
+    use phygap::pipeline::train::state::{TrainState, CHECKPOINT_FILE};
+
+    #[test]
+    fn a_checkpoint_from_before_exposure_normalization_trains_again_from_the_start() {
+        let dir = tempfile::tempdir().unwrap();
+        let capture = dir.path().join("capture");
+        let options = SynthOptions {
+            views: 8,
+            size: 24,
+            ..SynthOptions::default()
+        };
+        synth(&capture, &options).unwrap();
+        let model = dir.path().join("model");
+        let config = TrainConfig {
+            iterations: 40u32.into(),
+            initial_surfels: 500,
+            max_surfels: 2000,
+            checkpoint_interval: 20,
+            ..TrainConfig::default()
+        };
+        let pipeline = CorePipeline::default();
+        let cancel = AtomicBool::new(false);
+        let mut events = Vec::new();
+        let mut stop_at_first_checkpoint = |e: &TrainEvent| {
+            if matches!(e, TrainEvent::Checkpoint { .. }) {
+                cancel.store(true, std::sync::atomic::Ordering::Relaxed);
+            }
+        };
+        let outcome = pipeline
+            .train(
+                &capture,
+                &model,
+                &config,
+                false,
+                &cancel,
+                &mut stop_at_first_checkpoint,
+            )
+            .unwrap();
+        assert_eq!(outcome, RunOutcome::Interrupted { iteration: 20 });
+        // Rewrite the checkpoint as an earlier version left it: the light in the capture's units.
+        let path = model.join(CHECKPOINT_FILE);
+        let (mut state, fingerprint) = TrainState::load(&path).unwrap();
+        let scale = state.radiance_scale;
+        assert_ne!(scale, 1.0);
+        state.radiance_scale = 1.0;
+        state.save(&path, &fingerprint).unwrap();
+
+        cancel.store(false, std::sync::atomic::Ordering::Relaxed);
+        let outcome = pipeline
+            .train(&capture, &model, &config, true, &cancel, &mut |e| {
+                events.push(e.clone())
+            })
+            .unwrap();
+        assert_eq!(outcome, RunOutcome::Finished);
+        // The refused resume started nothing; the run started afresh.
+        let starts: Vec<Option<u32>> = events
+            .iter()
+            .filter_map(|e| match e {
+                TrainEvent::Started { resumed_from, .. } => Some(*resumed_from),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(starts, [None]);
+        let (state, _) = TrainState::load(&path).unwrap();
+        assert_eq!((state.iteration, state.radiance_scale), (40, scale));
     }
 }

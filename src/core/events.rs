@@ -32,6 +32,10 @@ pub enum TrainEvent {
         /// The views' size as trained, e.g. `306×256 (1224×1024 ÷ 4)`.
         #[serde(default)]
         resolution: String,
+        /// The capture's radiance per unit of the run's: the views are divided by it
+        /// (`pipeline::train::exposure`; 1 in a log from before exposure normalization).
+        #[serde(default = "unit_scale")]
+        radiance_scale: f64,
     },
     /// One optimization step finished (emitted every few steps, not every one).
     Step {
@@ -54,4 +58,9 @@ pub enum TrainEvent {
     Checkpoint { iteration: u32 },
     /// The run finished; the model folder is complete.
     Finished { iteration: u32, seconds: f64 },
+}
+
+/// The radiance scale of a run logged before exposure normalization: the capture's own units.
+fn unit_scale() -> f64 {
+    1.0
 }

@@ -223,6 +223,18 @@ pub fn evaluate(
     capture: &Capture,
     angles: &BTreeMap<String, f64>,
 ) -> Result<EvalReport, EvalError> {
+    evaluate_scaled(scene, 1.0, capture, angles)
+}
+
+/// [`evaluate`] of a scene whose light is in units of `radiance_scale` of the capture's (a
+/// training run's, `train::exposure`): its renders are multiplied by the scale (shading is linear
+/// in the light) before they are compared.
+pub fn evaluate_scaled(
+    scene: &Scene,
+    radiance_scale: f64,
+    capture: &Capture,
+    angles: &BTreeMap<String, f64>,
+) -> Result<EvalReport, EvalError> {
     let _span = tracing::info_span!("evaluate").entered();
     let tests: Vec<&View> = capture.test_views().collect();
     if tests.is_empty() {
@@ -234,7 +246,8 @@ pub fn evaluate(
             view: view.name.clone(),
             source,
         };
-        let rendered = scene.render(&view.camera)?;
+        let mut rendered = scene.render(&view.camera)?;
+        rendered.shaded.scale_radiance(radiance_scale);
         let g = rendered.gbuffers();
         let (w, h) = (g.width, g.height);
         let mask_pixels: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();

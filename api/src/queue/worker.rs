@@ -631,6 +631,7 @@ mod tests {
                 test_views: 1,
                 resumed_from: Some(100),
                 resolution: "306×256 (1224×1024 ÷ 4)".into(),
+                radiance_scale: 0.5,
             },
         );
         assert_eq!(p.resolution.as_deref(), Some("306×256 (1224×1024 ÷ 4)"));

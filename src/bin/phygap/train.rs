@@ -118,11 +118,12 @@ pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
             train_views,
             resumed_from,
             resolution,
+            radiance_scale,
             ..
         } => {
             bar.println(format!(
                 "training: {iterations} steps, mode {mode}, backend {backend}, {train_views} \
-                 training views of {resolution}{}",
+                 training views of {resolution} (exposure normalized: ÷ {radiance_scale:.3}){}",
                 resumed_from.map_or(String::new(), |it| format!(", resumed at {it}"))
             ));
             bar.set_length(u64::from(*iterations));

@@ -553,6 +553,24 @@ pub struct StokesImage {
     pub specular: Vec<DVec3>,
 }
 
+impl StokesImage {
+    /// Multiplies every radiance (Stokes, diffuse, specular) by `scale`.
+    pub fn scale_radiance(&mut self, scale: f64) {
+        if scale == 1.0 {
+            return;
+        }
+        for image in [
+            &mut self.s0,
+            &mut self.s1,
+            &mut self.s2,
+            &mut self.diffuse,
+            &mut self.specular,
+        ] {
+            image.iter_mut().for_each(|v| *v *= scale);
+        }
+    }
+}
+
 /// Upstream gradients of one view's Stokes images.
 #[derive(Clone, Copy, Debug)]
 pub struct StokesImageGrad<'a> {

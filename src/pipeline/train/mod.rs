@@ -20,6 +20,7 @@
 mod angles;
 mod engine;
 mod eta;
+pub mod exposure;
 pub mod host_step;
 pub mod init;
 pub mod schedule;
@@ -107,6 +108,10 @@ pub enum TrainError {
     Eval(#[from] EvalError),
     #[error("cannot resume: the checkpoint in {0} was written with a different configuration")]
     ConfigChanged(PathBuf),
+    #[error(
+        "cannot resume: the checkpoint in {path} holds its light in units of {saved} of the capture's, but the capture's exposure now gives {now} (a checkpoint from before exposure normalization, or views that changed since): train again without resuming"
+    )]
+    ExposureChanged { path: PathBuf, saved: f64, now: f64 },
     #[error(
         "training diverged at iteration {0} (non-finite parameters); try a lower learning rate"
     )]
@@ -262,7 +267,10 @@ struct Run<'a> {
     settings: RasterSettings,
     lut: &'static BrdfLut,
     plan: Arc<PrefilterPlan>,
+    /// The training views, divided by `radiance_scale`.
     targets: Vec<ViewTarget<'a>>,
+    /// The capture's radiance per unit of the run's light ([`exposure`]).
+    radiance_scale: f64,
     learning_rates: LearningRates,
     /// The loss weights, the depth distortion measured in the object's radius.
     loss_weights: LossWeights,
@@ -339,13 +347,16 @@ pub fn train_on(
         source,
     })?;
     let mode = resolve_mode(capture, config.mode);
-    let targets: Vec<ViewTarget> = capture
+    let mut targets: Vec<ViewTarget> = capture
         .views
         .iter()
         .enumerate()
         .filter(|(_, v)| v.split == crate::io::capture::Split::Train)
         .map(|(i, v)| view_target(i, v, mode))
         .collect();
+    let radiance_scale = exposure::radiance_scale(&targets);
+    exposure::normalize(&mut targets, radiance_scale);
+    tracing::info!(radiance_scale, "views normalized to the reference exposure");
     if mode == Mode::Full && targets.iter().all(|t| t.stokes.is_none()) {
         return Err(TrainError::Mode {
             mode,
@@ -365,6 +376,7 @@ pub fn train_on(
         lut: BrdfLut::shared(),
         plan: prefilter_plan(config.envmap_resolution as usize, config.fresnel_irradiance)?,
         targets,
+        radiance_scale,
         learning_rates: LearningRates::from_config(config, bounds.radius),
         loss_weights: LossWeights::for_object(config, bounds.radius),
         densify_rules: DensifyRules::for_extent(
@@ -404,6 +416,7 @@ impl Run<'_> {
             adam: Adam::new(AdamConfig::default()),
             densify: DensifyStats::new(n),
             elapsed_seconds: 0.0,
+            radiance_scale: self.radiance_scale,
         })
     }
 
@@ -439,6 +452,13 @@ impl Run<'_> {
             if !same_config(&saved_fp, self.config) {
                 return Err(TrainError::ConfigChanged(checkpoint));
             }
+            if state.radiance_scale != self.radiance_scale {
+                return Err(TrainError::ExposureChanged {
+                    path: checkpoint,
+                    saved: state.radiance_scale,
+                    now: self.radiance_scale,
+                });
+            }
             let it = state.iteration;
             (state, Some(it))
         } else {
@@ -453,6 +473,7 @@ impl Run<'_> {
             test_views: self.capture.test_views().count(),
             resumed_from,
             resolution: self.capture.working_resolution(),
+            radiance_scale: self.radiance_scale,
         });
         let env = HostEnv::new(&state, &self.plan)?;
         engine.load(&state)?;
@@ -889,8 +910,9 @@ impl Run<'_> {
         if self.capture.test_views().next().is_none() {
             return Ok(None);
         }
-        let report = evaluate::evaluate(
+        let report = evaluate::evaluate_scaled(
             &self.scene(state, light),
+            self.radiance_scale,
             self.capture,
             &state.polarizer_angles,
         )?;
@@ -925,7 +947,7 @@ impl Run<'_> {
                 ..self.config.clone()
             },
             surfels: state.surfels.clone(),
-            envmap: state.envmap.clone(),
+            envmap: exposure::in_capture_units(&state.envmap, self.radiance_scale)?,
             train_cameras: self.train_cameras(),
         };
         WorldUp::from_vector(up.to_array())?;
@@ -940,8 +962,9 @@ impl Run<'_> {
             &crate::io::capture::cameras_to_json(&test_cameras),
         )?;
         if self.capture.test_views().next().is_some() {
-            let mut report = evaluate::evaluate(
+            let mut report = evaluate::evaluate_scaled(
                 &self.scene(state, light),
+                self.radiance_scale,
                 self.capture,
                 &state.polarizer_angles,
             )?;

@@ -30,6 +30,9 @@ pub struct TrainState {
     pub densify: DensifyStats,
     /// Wall time spent in earlier sessions of this run.
     pub elapsed_seconds: f64,
+    /// The capture's radiance per unit of `envmap`'s (`train::exposure`); 1 in a checkpoint
+    /// written before runs normalized their exposure.
+    pub radiance_scale: f64,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -42,6 +45,13 @@ struct Meta {
     elapsed_seconds: f64,
     /// Fingerprint of the config the run started with (a resume with another config is refused).
     config_fingerprint: String,
+    #[serde(default = "capture_units")]
+    radiance_scale: f64,
+}
+
+/// The radiance scale of a checkpoint from before exposure normalization: the capture's units.
+fn capture_units() -> f64 {
+    1.0
 }
 
 impl TrainState {
@@ -63,6 +73,7 @@ impl TrainState {
             adam_groups,
             elapsed_seconds: self.elapsed_seconds,
             config_fingerprint: config_fingerprint.to_owned(),
+            radiance_scale: self.radiance_scale,
         };
         let mut archive = Archive::new(serde_json::to_value(&meta).expect("plain data"));
         for (name, values) in self.surfels.groups() {
@@ -129,6 +140,7 @@ impl TrainState {
             adam,
             densify,
             elapsed_seconds: meta.elapsed_seconds,
+            radiance_scale: meta.radiance_scale,
         };
         Ok((state, meta.config_fingerprint))
     }

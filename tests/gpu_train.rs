@@ -61,6 +61,7 @@ fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget<'stat
         stokes,
         polarizer,
         mask: mask.into(),
+        gain: 0.5,
     }
 }
 

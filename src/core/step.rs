@@ -24,7 +24,7 @@ pub type Samples<'a> = Cow<'a, [f32]>;
 
 /// Training data of one view, in the capture's f32 samples: borrowed from the capture's view
 /// where its layout already fits (RGB images, the mask), so a run holds its views once; a step
-/// widens the one view it fits to f64 ([`widen`]).
+/// widens the one view it fits to f64 ([`ViewTarget::fitted`], [`widen`]).
 #[derive(Clone, Debug)]
 pub struct ViewTarget<'a> {
     /// Index into `Capture::views`.
@@ -37,6 +37,16 @@ pub struct ViewTarget<'a> {
     pub polarizer: Option<Polarizer>,
     /// Object mask in [0, 1], one value per pixel.
     pub mask: Samples<'a>,
+    /// What the photometric and Stokes samples are multiplied by to give the values the run fits:
+    /// the inverse of its radiance scale (`pipeline::train::exposure`), 1 in the capture's units.
+    pub gain: f32,
+}
+
+impl ViewTarget<'_> {
+    /// The photometric or Stokes `samples` as the run fits them: times [`Self::gain`], in f64.
+    pub fn fitted(&self, samples: &[f32]) -> Vec<f64> {
+        samples.iter().map(|&v| f64::from(v * self.gain)).collect()
+    }
 }
 
 /// `samples` in f64, as the host step's losses take them.

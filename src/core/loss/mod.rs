@@ -486,11 +486,21 @@ mod tests;
 pub const POLARIZATION_MIN_S0: f64 = 1e-4;
 
 /// The measured `DoLP (cos 2ψ, sin 2ψ) = (S1, S2) / S0` of each pixel from a view's interleaved
-/// RGB Stokes targets (the channel means; the DoLP clamped to 1, S0 floored at
-/// [`POLARIZATION_MIN_S0`]), and zero where the mask is below ½ (not the object's).
-pub fn measured_polarization(s0: &[f32], s1: &[f32], s2: &[f32], mask: &[f32]) -> Vec<[f64; 2]> {
+/// RGB Stokes targets, each sample times `gain` (the run's exposure,
+/// [`crate::core::step::ViewTarget::gain`]; the channel means; the DoLP clamped to 1, S0 floored
+/// at [`POLARIZATION_MIN_S0`]), and zero where the mask is below ½ (not the object's).
+pub fn measured_polarization(
+    s0: &[f32],
+    s1: &[f32],
+    s2: &[f32],
+    mask: &[f32],
+    gain: f32,
+) -> Vec<[f64; 2]> {
     let mean = |v: &[f32], p: usize| {
-        (f64::from(v[3 * p]) + f64::from(v[3 * p + 1]) + f64::from(v[3 * p + 2])) / 3.0
+        (f64::from(v[3 * p] * gain)
+            + f64::from(v[3 * p + 1] * gain)
+            + f64::from(v[3 * p + 2] * gain))
+            / 3.0
     };
     (0..mask.len())
         .into_par_iter()

@@ -712,7 +712,7 @@ fn measured_polarization_is_the_channel_mean_stokes_ratio_on_the_object() {
         0.0,
     ];
     let mask = [1.0, 0.2, 1.0, 1.0];
-    let m = measured_polarization(&s0, &s1, &s2, &mask);
+    let m = measured_polarization(&s0, &s1, &s2, &mask, 1.0);
     assert!(
         (m[0][0] - c).abs() < 1e-6 && (m[0][1] - s).abs() < 1e-6,
         "{:?}",

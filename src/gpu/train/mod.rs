@@ -129,7 +129,8 @@ fn target_values(target: &ViewTarget) -> Vec<f32> {
     let pixels = target.mask.len();
     let mut out = Vec::with_capacity(pixels * TARGET_FLOATS as usize);
     for p in 0..pixels {
-        let rgb = |v: &[f32]| [v[3 * p], v[3 * p + 1], v[3 * p + 2]];
+        let g = target.gain;
+        let rgb = |v: &[f32]| [v[3 * p] * g, v[3 * p + 1] * g, v[3 * p + 2] * g];
         let (s1, s2) = match &target.stokes {
             Some((s1, s2)) => (rgb(s1), rgb(s2)),
             None => ([0.0; 3], [0.0; 3]),

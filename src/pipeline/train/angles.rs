@@ -44,7 +44,7 @@ pub(super) fn estimate(
                     continue;
                 }
                 for c in 0..3 {
-                    let captured = f64::from(target.photometric[p * 3 + c]);
+                    let captured = f64::from(target.photometric[p * 3 + c] * target.gain);
                     fit.add(a, s.s0[p][c], s.s1[p][c], s.s2[p][c], captured);
                 }
             }

@@ -9,27 +9,27 @@
 //! sensor units did to them) trained to 8.67° normal error instead of 5.88°.
 //!
 //! The scale is the capture's [`radiance_level`] (a bright percentile of S0 over the objects of
-//! the training views) over [`REFERENCE_LEVEL`]; the run's light is in units of the scale, and
-//! the model's light is saved back in the capture's units (`capture = scale × run`). Dividing by
-//! a power of two is exact, so a capture scaled by one trains to the same surfels bit for bit.
-
-use std::borrow::Cow;
+//! the training views) over [`REFERENCE_LEVEL`]. Each view's samples are multiplied by its
+//! inverse as the run reads them ([`ViewTarget::gain`]; nothing is copied); the run's light is in
+//! units of the scale, and the model's light is saved back in the capture's units
+//! (`capture = scale × run`). Dividing by a power of two is exact, so a capture scaled by one
+//! trains to the same surfels bit for bit.
 
 use crate::core::envmap::{CubeMap, EnvMapError};
-use crate::core::step::{Samples, ViewTarget};
+use crate::core::step::ViewTarget;
 
 /// The percentile of the object's S0 that sets the level: bright enough to follow the
 /// exposure's highlights, below the few pixels that clip or catch a light source.
 pub const LEVEL_PERCENTILE: f64 = 0.999;
 
 /// The level a run's views are scaled to. It is the level of the Mitsuba captures the defaults
-/// were set on (1.6–2.3: the knot, the sphere and the homer figure), so that their runs train
-/// at about the exposure they were tuned at.
+/// were set on (2.40, 2.13 and 1.81: the knot, the sphere and the homer figure), so that their
+/// runs train at about the exposure they were tuned at.
 pub const REFERENCE_LEVEL: f64 = 2.0;
 
-/// The [`LEVEL_PERCENTILE`] of S0 inside the masks of `targets` (each pixel's brightest
-/// channel; a view behind a polarizer counts twice its intensity, its S0 if unpolarized), or
-/// `None` when no masked pixel is positive and finite.
+/// The [`LEVEL_PERCENTILE`] of the captured S0 inside the masks of `targets` (each pixel's
+/// brightest channel, before any gain; a view behind a polarizer counts twice its intensity, its
+/// S0 if unpolarized), or `None` when no masked pixel is positive and finite.
 pub fn radiance_level(targets: &[ViewTarget]) -> Option<f64> {
     let mut values: Vec<f32> = targets
         .iter()
@@ -57,25 +57,12 @@ pub fn radiance_scale(targets: &[ViewTarget]) -> f64 {
     radiance_level(targets).map_or(1.0, |level| level / REFERENCE_LEVEL)
 }
 
-/// Divides every target's photometric and Stokes samples by `scale` (copies the borrowed ones;
-/// masks are unchanged).
+/// Sets every target's [`ViewTarget::gain`] to `1 / scale`: the run fits its photometric and
+/// Stokes samples divided by `scale` (the samples themselves, borrowed or not, are not copied).
 pub fn normalize(targets: &mut [ViewTarget], scale: f64) {
-    if scale == 1.0 {
-        return;
-    }
-    let inverse = (1.0 / scale) as f32;
-    let divide = |samples: &mut Samples| match samples {
-        Cow::Borrowed(borrowed) => {
-            *samples = Cow::Owned(borrowed.iter().map(|v| v * inverse).collect());
-        }
-        Cow::Owned(owned) => owned.iter_mut().for_each(|v| *v *= inverse),
-    };
+    let gain = (1.0 / scale) as f32;
     for target in targets {
-        divide(&mut target.photometric);
-        if let Some((s1, s2)) = &mut target.stokes {
-            divide(s1);
-            divide(s2);
-        }
+        target.gain = gain;
     }
 }
 
@@ -91,6 +78,8 @@ pub fn in_capture_units(envmap: &CubeMap, scale: f64) -> Result<CubeMap, EnvMapE
 
 #[cfg(test)]
 mod tests {
+    use std::borrow::Cow;
+
     use super::*;
     use crate::core::step::Polarizer;
 
@@ -109,6 +98,7 @@ mod tests {
             stokes,
             polarizer,
             mask: Cow::Owned(mask),
+            gain: 1.0,
         }
     }
 
@@ -145,13 +135,12 @@ mod tests {
     }
 
     #[test]
-    fn a_capture_scaled_by_a_power_of_two_normalizes_to_the_same_bits() {
+    fn a_capture_scaled_by_a_power_of_two_is_fitted_to_the_same_bits() {
         let bright = ramp();
         let mut dark = ramp();
-        dark.photometric
-            .to_mut()
-            .iter_mut()
-            .for_each(|v| *v *= 0.125);
+        for samples in [&mut dark.photometric, &mut dark.stokes.as_mut().unwrap().0] {
+            samples.to_mut().iter_mut().for_each(|v| *v *= 0.125);
+        }
         let scales = [
             radiance_scale(std::slice::from_ref(&bright)),
             radiance_scale(std::slice::from_ref(&dark)),
@@ -160,17 +149,19 @@ mod tests {
         let (mut a, mut b) = ([bright], [dark]);
         normalize(&mut a, scales[0]);
         normalize(&mut b, scales[1]);
-        assert_eq!(a[0].photometric, b[0].photometric);
-        // Normalized to the reference level; S1 and S2 divided alike, the mask untouched.
-        let level = radiance_level(&a).unwrap();
+        let fitted = |t: &ViewTarget| {
+            let (s1, _) = t.stokes.as_ref().unwrap();
+            (t.fitted(&t.photometric), t.fitted(s1))
+        };
+        assert_eq!(fitted(&a[0]), fitted(&b[0]));
+        // Fitted at the reference level: the brightest channel of the 1,998th pixel.
+        let (photometric, _) = fitted(&a[0]);
+        let level = photometric[3 * 1997 + 1];
         assert!((level - REFERENCE_LEVEL).abs() < 1e-6, "{level}");
-        let (s1, _) = a[0].stokes.as_ref().unwrap();
-        assert_eq!(s1[..], a[0].photometric[..]);
-        assert_eq!(a[0].mask[1999], 1.0);
     }
 
     #[test]
-    fn borrowed_samples_are_copied_not_changed() {
+    fn normalizing_copies_no_samples() {
         let captured = vec![1.0f32, 2.0, 4.0];
         let mut targets = [ViewTarget {
             view: 0,
@@ -178,9 +169,10 @@ mod tests {
             stokes: None,
             polarizer: None,
             mask: Cow::Owned(vec![1.0]),
+            gain: 1.0,
         }];
         normalize(&mut targets, 2.0);
-        assert_eq!(targets[0].photometric[..], [0.5, 1.0, 2.0]);
-        assert_eq!(captured, [1.0, 2.0, 4.0]);
+        assert!(matches!(targets[0].photometric, Cow::Borrowed(_)));
+        assert_eq!(targets[0].fitted(&targets[0].photometric), [0.5, 1.0, 2.0]);
     }
 }

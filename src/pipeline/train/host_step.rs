@@ -93,7 +93,7 @@ pub fn run(
         })
     };
     // The view's photometric target in f64, which both groups of losses read.
-    let photometric = widen(&target.photometric);
+    let photometric = target.fitted(&target.photometric);
     let image_grads = {
         let _span = tracing::debug_span!("image_losses").entered();
         image_losses(
@@ -230,7 +230,7 @@ fn image_losses(
                     .flat_map(|(x, &a)| (*x * a).to_array())
                     .collect()
             };
-            let (t1, t2) = (widen(t1), widen(t2));
+            let (t1, t2) = (target.fitted(t1), target.fitted(t2));
             let stokes = loss::stokes_l1(&premul(&s.s1), &t1, &premul(&s.s2), &t2, None);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * stokes.value);
             let scale = |v: Vec<f64>| v.into_iter().map(|x| x * weights.lambda_stokes).collect();
@@ -292,7 +292,8 @@ fn gbuffer_losses(
         );
     }
     if let (true, Some((s1, s2))) = (plan.aolp, &target.stokes) {
-        let polarization = loss::measured_polarization(&target.photometric, s1, s2, &target.mask);
+        let polarization =
+            loss::measured_polarization(&target.photometric, s1, s2, &target.mask, target.gain);
         let prior = loss::aolp_normal(g.normal.as_flattened(), camera, &polarization);
         losses.insert("aolp".to_owned(), weights.lambda_aolp * prior.value);
         add_into(

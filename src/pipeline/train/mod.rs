@@ -1105,6 +1105,7 @@ mod tests {
             mask: (0..10_000)
                 .map(|i| f32::from(u8::from(i < mask_pixels)))
                 .collect(),
+            gain: 1.0,
         };
         let config = TrainConfig {
             initial_surfels: 1_000,

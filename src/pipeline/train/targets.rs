@@ -45,6 +45,7 @@ pub fn view_target(index: usize, view: &View, mode: Mode) -> ViewTarget<'_> {
         stokes,
         polarizer,
         mask,
+        gain: 1.0,
     }
 }
 

@@ -124,12 +124,13 @@ pub struct DeviceTrainer<'g> {
     host_stale: bool,
 }
 
-/// A view's target laid out per pixel: photometric RGB, mask, S1 and S2 RGB (zero without them).
+/// A view's target laid out per pixel as the run fits it: photometric RGB, mask, S1 and S2 RGB
+/// (zero without them), the photometric and Stokes samples times the view's gain.
 fn target_values(target: &ViewTarget) -> Vec<f32> {
     let pixels = target.mask.len();
     let mut out = Vec::with_capacity(pixels * TARGET_FLOATS as usize);
+    let g = target.gain;
     for p in 0..pixels {
-        let g = target.gain;
         let rgb = |v: &[f32]| [v[3 * p] * g, v[3 * p + 1] * g, v[3 * p + 2] * g];
         let (s1, s2) = match &target.stokes {
             Some((s1, s2)) => (rgb(s1), rgb(s2)),

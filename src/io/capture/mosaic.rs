@@ -1,8 +1,9 @@
 //! Polarization mosaics of Sony's IMX250MZR (mono) and IMX250MYR (colour) sensors, as pure maths on
-//! f32 planes: the micro-polarizer layout, the colour sensor's Bayer layer, demosaicing (half-
-//! resolution sampling or bilinear full resolution), Stokes S0, S1, S2 by least squares over the
-//! four polarizer angles, and the forward model (Stokes → mosaic counts) that tests and simulations
-//! use. No file access here (`raw.rs` reads frames).
+//! f32 planes: the micro-polarizer layout, the colour sensor's Bayer layer, demosaicing (half
+//! resolution, every channel interpolated to the 2×2 block centres, or bilinear full resolution),
+//! Stokes S0, S1, S2 by least squares over the four polarizer angles, and the forward model
+//! (Stokes → mosaic counts) that tests and simulations use. No file access here (`raw.rs` reads
+//! frames).
 //!
 //! Layout: every 2×2 block holds polarizers at 90° (top left), 45° (top right), 135° (bottom left)
 //! and 0° (bottom right), angles as the sensor labels them. On the IMX250MYR each polarizer's
@@ -76,8 +77,9 @@ impl Sensor {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Demosaic {
-    /// One output pixel per 2×2 block (its four samples, no interpolation): half the width and
-    /// height, so the intrinsics are halved too.
+    /// One output pixel per 2×2 block, each polarizer (and colour) channel interpolated to the
+    /// block's centre from its own samples: half the width and height, so the intrinsics are
+    /// halved too.
     Half,
     /// Bilinear interpolation of each polarizer (and colour) channel at every sensor pixel.
     #[default]
@@ -247,19 +249,44 @@ fn polarization_planes(mosaic: &Mosaic, mode: Demosaic) -> [Vec<f32>; 4] {
     std::array::from_fn(|k| {
         let (ox, oy) = CHANNEL_OFFSETS[k];
         match mode {
-            Demosaic::Half => {
-                let (w, h) = (mosaic.width / 2, mosaic.height / 2);
-                let mut plane = Vec::with_capacity(w * h);
-                for j in 0..h {
-                    for i in 0..w {
-                        plane.push(mosaic.at(2 * i + ox, 2 * j + oy));
-                    }
-                }
-                plane
-            }
+            Demosaic::Half => interpolate_to_block_centres(mosaic, ox, oy),
             Demosaic::Bilinear => interpolate_lattice(mosaic, ox, oy),
         }
     })
+}
+
+/// Bilinear interpolation, at the centre of every 2×2 block of `mosaic`, of the samples on the
+/// lattice `(ox + 2k, oy + 2l)`: the 2×2 block mean of [`interpolate_lattice`]. A block's own
+/// sample lies half a pixel from the centre in x and in y, so it weighs 9/16, the lattice
+/// neighbours on the centre's side 3/16 each and the diagonal one 1/16; beyond the outermost
+/// lattice rows and columns the nearest ones are repeated.
+///
+/// Taking a block's four samples as they are would leave each polarizer half a pixel from the
+/// centre (where the halved camera puts the view's pixel), in a different direction for each:
+/// S1 = I0 − I90 and S2 = I45 − I135 would then also hold half of S0's change across the block, a
+/// bias that follows S0's gradient and does not average away when the views are shrunk further.
+fn interpolate_to_block_centres(mosaic: &Mosaic, ox: usize, oy: usize) -> Vec<f32> {
+    let (w, h) = (mosaic.width / 2, mosaic.height / 2);
+    // The lattice neighbour on the side of the block centre; at the border, the sample itself.
+    let towards_centre = |k: usize, n: usize, offset: usize| {
+        if offset == 0 {
+            (k + 1).min(n - 1)
+        } else {
+            k.saturating_sub(1)
+        }
+    };
+    let sample = |i: usize, j: usize| mosaic.at(2 * i + ox, 2 * j + oy);
+    let mut plane = Vec::with_capacity(w * h);
+    for j in 0..h {
+        let j_next = towards_centre(j, h, oy);
+        for i in 0..w {
+            let i_next = towards_centre(i, w, ox);
+            let own_row = 0.75 * sample(i, j) + 0.25 * sample(i_next, j);
+            let next_row = 0.75 * sample(i, j_next) + 0.25 * sample(i_next, j_next);
+            plane.push(0.75 * own_row + 0.25 * next_row);
+        }
+    }
+    plane
 }
 
 /// Bilinear interpolation, at every pixel of `mosaic`, of the samples on the lattice
@@ -572,16 +599,80 @@ mod tests {
     }
 
     #[test]
-    fn half_mode_samples_each_block_without_interpolation() {
-        // Sample values that name their position.
-        let mosaic = Mosaic::new(4, 2, (0..8).map(|v| v as f32).collect()).unwrap();
+    fn half_mode_puts_every_channel_at_the_block_centre() {
+        // Sample values that name their position: 90° = 0, 45° = 1, 135° = 6, 0° = 7 in the first
+        // block of a 6 × 4 mosaic; the next block along a row adds 2, the next block row 12.
+        let mosaic = Mosaic::new(6, 4, (0..24).map(|v| v as f32).collect()).unwrap();
         let pol = demosaic(&mosaic, Sensor::Imx250Mzr, Demosaic::Half).unwrap();
-        // Block 0: 90° = 0, 45° = 1, 135° = 4, 0° = 5; block 1 adds 2.
         let at = |k: usize| pol.images[k].data.clone();
-        assert_eq!(at(0), vec![5.0, 7.0]);
-        assert_eq!(at(1), vec![1.0, 3.0]);
-        assert_eq!(at(2), vec![0.0, 2.0]);
-        assert_eq!(at(3), vec![4.0, 6.0]);
+        // 9/16 of the channel's own sample, 3/16 of each neighbour on the centre's side, 1/16 of
+        // the diagonal one; at the border, the sample itself in the neighbour's place.
+        let centre = |own: f32, across: f32, along: f32, diagonal: f32| {
+            (9.0 * own + 3.0 * across + 3.0 * along + diagonal) / 16.0
+        };
+        // 0° (bottom right) leans left and up.
+        assert_eq!(
+            at(0),
+            vec![
+                7.0,
+                centre(9.0, 7.0, 9.0, 7.0),
+                centre(11.0, 9.0, 11.0, 9.0),
+                centre(19.0, 19.0, 7.0, 7.0),
+                centre(21.0, 19.0, 9.0, 7.0),
+                centre(23.0, 21.0, 11.0, 9.0),
+            ]
+        );
+        // 90° (top left) leans right and down.
+        assert_eq!(
+            at(2),
+            vec![
+                centre(0.0, 2.0, 12.0, 14.0),
+                centre(2.0, 4.0, 14.0, 16.0),
+                centre(4.0, 4.0, 16.0, 16.0),
+                centre(12.0, 14.0, 12.0, 14.0),
+                centre(14.0, 16.0, 14.0, 16.0),
+                16.0,
+            ]
+        );
+        // 45° (top right) leans left and down, 135° (bottom left) right and up.
+        assert_eq!(at(1)[4], centre(15.0, 13.0, 15.0, 13.0));
+        assert_eq!(at(3)[1], centre(8.0, 10.0, 8.0, 10.0));
+    }
+
+    #[test]
+    fn half_mode_is_the_block_mean_of_bilinear_and_sees_a_plane_alike_in_every_channel() {
+        let (w, h) = (12, 10);
+        let f = |x: f32, y: f32| 0.1 + 0.02 * x + 0.03 * y;
+        let mosaic = Mosaic::new(
+            w,
+            h,
+            (0..w * h)
+                .map(|p| f((p % w) as f32, (p / w) as f32))
+                .collect(),
+        )
+        .unwrap();
+        let half = demosaic(&mosaic, Sensor::Imx250Mzr, Demosaic::Half).unwrap();
+        let full = demosaic(&mosaic, Sensor::Imx250Mzr, Demosaic::Bilinear).unwrap();
+        for (k, (half, full)) in half.images.iter().zip(&full.images).enumerate() {
+            for j in 0..h / 2 {
+                for i in 0..w / 2 {
+                    let block = [(0, 0), (1, 0), (0, 1), (1, 1)]
+                        .map(|(dx, dy)| full.pixel(2 * i + dx, 2 * j + dy)[0]);
+                    let mean = block.iter().sum::<f32>() / 4.0;
+                    let v = half.pixel(i, j)[0];
+                    assert!(
+                        (v - mean).abs() < 1e-6,
+                        "channel {k} ({i}, {j}): {v} {mean}"
+                    );
+                    // Away from the border every channel holds the plane at the block's centre
+                    // (2i + ½, 2j + ½ in sample coordinates), so an unpolarized ramp has no S1, S2.
+                    if (1..w / 2 - 1).contains(&i) && (1..h / 2 - 1).contains(&j) {
+                        let at_centre = f(2.0 * i as f32 + 0.5, 2.0 * j as f32 + 0.5);
+                        assert!((v - at_centre).abs() < 1e-6, "channel {k} ({i}, {j}): {v}");
+                    }
+                }
+            }
+        }
     }
 
     #[test]

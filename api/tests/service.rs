@@ -34,6 +34,10 @@ async fn upload_train_and_download_every_artifact() {
         job["backend"].is_null(),
         "no backend before training: {job}"
     );
+    assert!(
+        job["peak_rss_bytes"].is_null(),
+        "no memory before training: {job}"
+    );
     let id = job["id"].as_str().unwrap().to_string();
     let done = t.wait_succeeded(&id).await;
     assert_eq!(done["iteration"], 40);
@@ -44,6 +48,12 @@ async fn upload_train_and_download_every_artifact() {
         backend.starts_with("fast (") || backend.starts_with("gpu on "),
         "{done}"
     );
+    // The training process's peak resident memory (Linux reports it): more than the
+    // 10-view capture's decoded samples alone, less than this machine could hold.
+    if cfg!(target_os = "linux") {
+        let peak = done["peak_rss_bytes"].as_u64().unwrap_or_default();
+        assert!(peak > 8 << 20 && peak < 1 << 40, "{done}");
+    }
     let psnr = done["test_psnr"].as_f64().unwrap();
     // (8 dB: a 10-step job on the same capture scores 9.99 dB since exposure normalization.)
     assert!(psnr > 8.0 && psnr < 100.0, "a real test PSNR: {done}");

@@ -48,6 +48,10 @@ pub enum TrainEvent {
         num_surfels: usize,
         elapsed_seconds: f64,
         eta_seconds: f64,
+        /// The training process's peak resident memory so far, bytes (`None` where the system
+        /// does not say, and in logs from before it was reported).
+        #[serde(default)]
+        peak_rss_bytes: Option<u64>,
     },
     /// Test-view PSNR (sRGB 8-bit S0 inside the mask).
     Evaluated { iteration: u32, test_psnr: f64 },
@@ -57,7 +61,13 @@ pub enum TrainEvent {
     /// A checkpoint was written; training can resume from here.
     Checkpoint { iteration: u32 },
     /// The run finished; the model folder is complete.
-    Finished { iteration: u32, seconds: f64 },
+    Finished {
+        iteration: u32,
+        seconds: f64,
+        /// The training process's peak resident memory over the run, bytes (as in `Step`).
+        #[serde(default)]
+        peak_rss_bytes: Option<u64>,
+    },
 }
 
 /// The radiance scale of a run logged before exposure normalization: the capture's own units.

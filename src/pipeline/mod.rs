@@ -9,6 +9,7 @@ pub mod diagnose;
 pub mod evaluate;
 pub mod export;
 pub mod mesh_extraction;
+pub mod peak_memory;
 pub mod previews;
 pub mod reconstruction;
 pub mod relight;

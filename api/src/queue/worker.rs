@@ -237,6 +237,8 @@ pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
             progress.resumed_from = *resumed_from;
             progress.backend = Some(backend.clone());
             progress.resolution = Some(resolution.clone()).filter(|r| !r.is_empty());
+            // A new process: its peak starts over.
+            progress.peak_rss_bytes = None;
         }
         TrainEvent::Step {
             iteration,
@@ -245,6 +247,7 @@ pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
             loss,
             losses,
             eta_seconds,
+            peak_rss_bytes,
             ..
         } => {
             progress.iteration = *iteration;
@@ -253,15 +256,21 @@ pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
             progress.losses = losses.clone();
             progress.losses.insert("total".into(), *loss);
             progress.eta_seconds = Some(*eta_seconds);
+            progress.peak_rss_bytes = peak_rss_bytes.or(progress.peak_rss_bytes);
         }
         TrainEvent::Evaluated { test_psnr, .. } => progress.test_psnr = Some(*test_psnr),
         TrainEvent::Checkpoint { iteration } => progress.checkpoint_iteration = Some(*iteration),
         TrainEvent::Warning { iteration, message } => {
             progress.warning = Some(format!("iteration {iteration}: {message}"));
         }
-        TrainEvent::Finished { iteration, .. } => {
+        TrainEvent::Finished {
+            iteration,
+            peak_rss_bytes,
+            ..
+        } => {
             progress.iteration = *iteration;
             progress.eta_seconds = Some(0.0);
+            progress.peak_rss_bytes = peak_rss_bytes.or(progress.peak_rss_bytes);
         }
     }
 }
@@ -620,7 +629,11 @@ mod tests {
 
     #[test]
     fn events_fold_into_progress() {
-        let mut p = Progress::default();
+        // An earlier attempt's peak: a new run (a new process) starts it over.
+        let mut p = Progress {
+            peak_rss_bytes: Some(900),
+            ..Progress::default()
+        };
         apply_event(
             &mut p,
             &TrainEvent::Started {
@@ -640,6 +653,7 @@ mod tests {
             (100, 300, Some(100))
         );
         assert_eq!(p.backend.as_deref(), Some("cpu (2 threads)"));
+        assert_eq!(p.peak_rss_bytes, None);
         apply_event(
             &mut p,
             &TrainEvent::Step {
@@ -651,8 +665,10 @@ mod tests {
                 num_surfels: 10,
                 elapsed_seconds: 1.0,
                 eta_seconds: 2.0,
+                peak_rss_bytes: Some(500),
             },
         );
+        assert_eq!(p.peak_rss_bytes, Some(500));
         assert_eq!(p.stage.as_deref(), Some("material"));
         assert_eq!(p.losses.get("total"), Some(&0.5));
         assert_eq!(p.losses.get("l1"), Some(&0.25));
@@ -684,8 +700,20 @@ mod tests {
             &TrainEvent::Finished {
                 iteration: 300,
                 seconds: 3.0,
+                peak_rss_bytes: Some(700),
             },
         );
         assert_eq!((p.iteration, p.eta_seconds), (300, Some(0.0)));
+        assert_eq!(p.peak_rss_bytes, Some(700));
+        // A system that does not say keeps the last figure.
+        apply_event(
+            &mut p,
+            &TrainEvent::Finished {
+                iteration: 300,
+                seconds: 3.0,
+                peak_rss_bytes: None,
+            },
+        );
+        assert_eq!(p.peak_rss_bytes, Some(700));
     }
 }

@@ -89,6 +89,10 @@ pub struct JobView {
     /// `resolution`), e.g. "306×256 (1224×1024 ÷ 4)"; null before training starts.
     #[schema(required = true)]
     resolution: Option<String>,
+    /// The most memory the latest run's training process has held so far (its peak resident
+    /// set, bytes); null before training starts or where the worker's system does not say.
+    #[schema(required = true)]
+    peak_rss_bytes: Option<u64>,
     /// A cancel was asked for and the running job has not stopped yet.
     cancel_requested: bool,
     /// Training jobs only: the training configuration, defaults filled in.
@@ -151,6 +155,7 @@ impl From<JobRecord> for JobView {
             backend: job.progress.backend,
             warning: job.progress.warning,
             resolution: job.progress.resolution,
+            peak_rss_bytes: job.progress.peak_rss_bytes,
             cancel_requested: job.cancel_requested,
             config,
             webhook: job.webhook,

@@ -159,6 +159,10 @@ pub struct Progress {
     /// The size of the views the latest run trains on, e.g. `306×256 (1224×1024 ÷ 4)`.
     #[serde(default)]
     pub resolution: Option<String>,
+    /// The latest run's peak resident memory so far, bytes (its process's; absent in rows
+    /// written before it was reported).
+    #[serde(default)]
+    pub peak_rss_bytes: Option<u64>,
 }
 
 /// A job as stored.

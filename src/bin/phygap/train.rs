@@ -153,8 +153,18 @@ pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
             bar.println(format!("warning at step {iteration}: {message}"));
         }
         TrainEvent::Checkpoint { .. } => {}
-        TrainEvent::Finished { seconds, .. } => {
-            bar.finish_with_message(format!("done in {seconds:.1} s"));
+        TrainEvent::Finished {
+            seconds,
+            peak_rss_bytes,
+            ..
+        } => {
+            let memory = peak_rss_bytes.map_or(String::new(), |bytes| {
+                format!(
+                    ", {:.1} MiB resident at the peak",
+                    bytes as f64 / (1024.0 * 1024.0)
+                )
+            });
+            bar.finish_with_message(format!("done in {seconds:.1} s{memory}"));
         }
     }
 }

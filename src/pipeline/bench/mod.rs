@@ -266,17 +266,9 @@ impl MemoryPeaks {
     pub fn of(backend: &Engine) -> Self {
         MemoryPeaks {
             device_peak_bytes: backend.gpu().map(|g| g.buffer_memory().peak_bytes),
-            host_peak_rss_bytes: host_peak_rss_bytes(),
+            host_peak_rss_bytes: crate::pipeline::peak_memory::peak_resident_bytes(),
         }
     }
-}
-
-/// The process's peak resident set size, from `/proc/self/status` (`None` elsewhere).
-fn host_peak_rss_bytes() -> Option<u64> {
-    let status = std::fs::read_to_string("/proc/self/status").ok()?;
-    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
-    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kib * 1024)
 }
 
 /// Trains `capture` for `iterations` steps held in `stage` (the schedule's densification,

@@ -61,6 +61,7 @@ use crate::io::model::{self, Model, ModelError, ModelInfo};
 use crate::pipeline::backend::{self, BackendError, Engine};
 use crate::pipeline::evaluate::{self, EvalError};
 use crate::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
+use crate::pipeline::peak_memory::peak_resident_bytes;
 use crate::pipeline::reconstruction::prefilter_plan;
 use sparse::init_for_capture;
 
@@ -611,6 +612,7 @@ impl Run<'_> {
                 num_surfels: session.state.surfels.len(),
                 elapsed_seconds: session.elapsed(),
                 eta_seconds: session.eta.remaining(done, self.config),
+                peak_rss_bytes: peak_resident_bytes(),
             });
         }
         if after.evaluate {
@@ -980,6 +982,7 @@ impl Run<'_> {
         reporter.emit(TrainEvent::Finished {
             iteration: state.iteration,
             seconds: state.elapsed_seconds,
+            peak_rss_bytes: peak_resident_bytes(),
         });
         Ok(())
     }

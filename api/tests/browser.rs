@@ -306,6 +306,11 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
         stats.contains(&done) && stats.contains("test PSNR"),
         "{stats}"
     );
+    // The training process's peak memory (Linux reports it), as the job shows it.
+    assert!(
+        !cfg!(target_os = "linux") || stats.contains(" peak memory"),
+        "{stats}"
+    );
     let (_, job) = {
         let response = t.get_with_token(&format!("/v1/jobs/{job_id}"), TOKEN).await;
         status_and_json(response).await

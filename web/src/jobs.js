@@ -195,6 +195,8 @@ function updateCard(card, job) {
   if (job.test_psnr != null) parts.push(`test PSNR ${job.test_psnr.toFixed(2)} dB`);
   if (live && job.eta_seconds != null) parts.push(`ETA ${duration(job.eta_seconds)}`);
   if (job.backend) parts.push(job.backend);
+  if (job.resolution) parts.push(job.resolution);
+  if (job.peak_rss_bytes != null) parts.push(`${size(job.peak_rss_bytes)} peak memory`);
   stats.textContent = parts.join(' · ');
   const progress = card.querySelector('.job-progress');
   progress.value = job.iterations ? job.iteration / job.iterations : job.state === 'succeeded' ? 1 : 0;

@@ -210,6 +210,52 @@ fn resumed_run_is_bit_identical_and_seeds_are_deterministic() {
     assert!(err.to_string().contains("different configuration"), "{err}");
 }
 
+/// Surfels no training view sees (`prune_hidden`) are pruned at the opacity reset and only there:
+/// runs with and without it report the same surfels up to the reset, and fewer after it.
+#[test]
+fn surfels_hidden_at_an_opacity_reset_are_pruned() {
+    let dir = tempfile::tempdir().unwrap();
+    let capture = synthetic_capture(&dir.path().join("capture"), 12, 32);
+    let reset = 200;
+    let base = TrainConfig {
+        opacity_reset_interval: reset,
+        gridmap: false,
+        ..small_config(300)
+    };
+    let surfel_counts = |prune_hidden: bool, name: &str| -> Vec<(u32, usize)> {
+        let config = TrainConfig {
+            prune_hidden,
+            ..base.clone()
+        };
+        let (outcome, events) = run(&capture, &dir.path().join(name), &config, false, None);
+        assert_eq!(outcome, TrainOutcome::Finished);
+        events
+            .iter()
+            .filter_map(|e| match e {
+                TrainEvent::Step {
+                    iteration,
+                    num_surfels,
+                    ..
+                } => Some((*iteration, *num_surfels)),
+                _ => None,
+            })
+            .collect()
+    };
+    let (kept, pruned) = (surfel_counts(false, "kept"), surfel_counts(true, "pruned"));
+    let upto = |c: &[(u32, usize)]| -> Vec<(u32, usize)> {
+        c.iter().copied().filter(|&(i, _)| i <= reset).collect()
+    };
+    assert_eq!(
+        upto(&kept),
+        upto(&pruned),
+        "the runs differ before the reset"
+    );
+    let after = |c: &[(u32, usize)]| c.iter().find(|&&(i, _)| i == reset + 1).unwrap().1;
+    let (n_kept, n_pruned) = (after(&kept), after(&pruned));
+    println!("surfels after the reset: {n_kept} kept, {n_pruned} with the hidden ones pruned");
+    assert!(n_pruned < n_kept, "{n_pruned} >= {n_kept}");
+}
+
 #[test]
 fn a_darker_exposure_of_the_same_views_trains_to_the_same_surfels() {
     let dir = tempfile::tempdir().unwrap();

@@ -167,6 +167,17 @@ pub struct TrainConfig {
     /// Steps between opacity resets.
     #[arg(long, default_value_t = TrainConfig::default().opacity_reset_interval)]
     pub opacity_reset_interval: u32,
+    /// Before each opacity reset, prune the surfels that every training view renders a surface
+    /// well in front of (`pipeline::train::hidden`), so that the reset cannot bring them back
+    /// into view through the surface.
+    #[arg(
+        long,
+        value_name = "on|off",
+        value_parser = parse_switch,
+        action = clap::ArgAction::Set,
+        default_value = "off"
+    )]
+    pub prune_hidden: bool,
 
     /// Learning rate of positions at the start of the run (METHOD.md §7), scaled by the scene
     /// extent.
@@ -272,6 +283,7 @@ impl Default for TrainConfig {
             densify_grad_threshold: 2e-4,
             prune_opacity: 0.05,
             opacity_reset_interval: 3_000,
+            prune_hidden: false,
             lr_position_init: 2e-4,
             lr_position_final: 2e-6,
             lr_albedo: 0.0075,

@@ -28,6 +28,14 @@ impl DensifyStats {
         }
     }
 
+    /// Keeps the statistics of the surfels `keep` marks (as [`Surfels::retain`] keeps them).
+    pub fn retain(&mut self, keep: &[bool]) {
+        let mut k = keep.iter();
+        self.grad_sum.retain(|_| *k.next().unwrap_or(&true));
+        let mut k = keep.iter();
+        self.seen.retain(|_| *k.next().unwrap_or(&true));
+    }
+
     /// Adds one view's per-surfel gradient norms, given in pixels, for an image of `width × height`.
     /// Converted to normalized device units (half the image spans 1) as in 3DGS, so the 3DGS
     /// threshold (2e-4) keeps its meaning at any resolution.

@@ -21,6 +21,7 @@ mod angles;
 mod engine;
 mod eta;
 pub mod exposure;
+pub mod hidden;
 pub mod host_step;
 pub mod init;
 pub mod schedule;
@@ -810,8 +811,32 @@ impl Run<'_> {
             state.densify = DensifyStats::new(state.surfels.len());
         }
         if due.reset_opacity {
+            if self.config.prune_hidden {
+                self.prune_hidden(state)?;
+            }
             densify::reset_opacity(&mut state.surfels, 0.01);
             state.adam.reset_group("opacity");
+        }
+        Ok(())
+    }
+
+    /// Prunes the surfels no training view sees ([`hidden::hidden_surfels`]).
+    fn prune_hidden(&self, state: &mut TrainState) -> Result<(), TrainError> {
+        let cameras: Vec<_> = self.train_cameras().into_iter().map(|(_, c)| c).collect();
+        let hidden =
+            hidden::hidden_surfels(&state.surfels, &cameras, &**self.backend, &self.settings)?;
+        let keep: Vec<bool> = hidden.iter().map(|&h| !h).collect();
+        let pruned = hidden.iter().filter(|&&h| h).count();
+        tracing::info!(
+            iteration = state.iteration,
+            pruned,
+            of = hidden.len(),
+            "pruned the surfels no training view sees"
+        );
+        if pruned > 0 {
+            state.surfels.retain(&keep);
+            state.adam.retain_surfels(&keep)?;
+            state.densify.retain(&keep);
         }
         Ok(())
     }

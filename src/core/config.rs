@@ -175,7 +175,7 @@ pub struct TrainConfig {
         value_name = "on|off",
         value_parser = parse_switch,
         action = clap::ArgAction::Set,
-        default_value = "off"
+        default_value = "on"
     )]
     pub prune_hidden: bool,
 
@@ -283,7 +283,7 @@ impl Default for TrainConfig {
             densify_grad_threshold: 2e-4,
             prune_opacity: 0.05,
             opacity_reset_interval: 3_000,
-            prune_hidden: false,
+            prune_hidden: true,
             lr_position_init: 2e-4,
             lr_position_final: 2e-6,
             lr_albedo: 0.0075,

@@ -183,7 +183,8 @@ fn fingerprint(config: &TrainConfig) -> String {
 
 /// Whether a checkpoint's fingerprint was written with `config`: read back as a config, so
 /// that a checkpoint written before a setting existed matches a config holding that setting's
-/// default (the setting behaves as it did then).
+/// default (the setting behaves as it did then, except `prune_hidden`, on by default since it
+/// was added: a run checkpointed before it prunes at the resets still ahead of it).
 fn same_config(saved: &str, config: &TrainConfig) -> bool {
     match serde_json::from_str::<TrainConfig>(saved) {
         Ok(saved) => saved == *config,

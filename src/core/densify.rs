@@ -9,7 +9,7 @@ use glam::{DVec2, DVec3};
 use rand::Rng;
 use serde::{Deserialize, Serialize};
 
-use crate::core::surfels::{logit, sigmoid, Surfels};
+use crate::core::surfels::{logit, retain_flagged, sigmoid, Surfels};
 
 /// Screen-space gradient statistics accumulated between densifications.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -30,10 +30,8 @@ impl DensifyStats {
 
     /// Keeps the statistics of the surfels `keep` marks (as [`Surfels::retain`] keeps them).
     pub fn retain(&mut self, keep: &[bool]) {
-        let mut k = keep.iter();
-        self.grad_sum.retain(|_| *k.next().unwrap_or(&true));
-        let mut k = keep.iter();
-        self.seen.retain(|_| *k.next().unwrap_or(&true));
+        retain_flagged(&mut self.grad_sum, keep);
+        retain_flagged(&mut self.seen, keep);
     }
 
     /// Adds one view's per-surfel gradient norms, given in pixels, for an image of `width × height`.

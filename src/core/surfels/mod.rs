@@ -61,6 +61,13 @@ pub fn rotation_matrix(q: [f64; 4]) -> DMat3 {
     DMat3::from_quat(DQuat::from_xyzw(q[1], q[2], q[3], q[0]).normalize())
 }
 
+/// Keeps the entries of a per-surfel array whose flag in `keep` is true, in order (entries past
+/// the end of `keep` are kept).
+pub fn retain_flagged<T>(values: &mut Vec<T>, keep: &[bool]) {
+    let mut k = keep.iter();
+    values.retain(|_| *k.next().unwrap_or(&true));
+}
+
 impl Surfels {
     /// N surfels with every parameter zero (the layout of a gradient buffer).
     pub fn zeros(n: usize) -> Self {
@@ -122,18 +129,14 @@ impl Surfels {
 
     /// Keeps the surfels whose flag is true, in order.
     pub fn retain(&mut self, keep: &[bool]) {
-        fn filter<T: Copy>(v: &mut Vec<T>, keep: &[bool]) {
-            let mut k = keep.iter();
-            v.retain(|_| *k.next().unwrap_or(&true));
-        }
         assert_eq!(keep.len(), self.len(), "one flag per surfel");
-        filter(&mut self.position, keep);
-        filter(&mut self.log_scale, keep);
-        filter(&mut self.rotation, keep);
-        filter(&mut self.opacity, keep);
-        filter(&mut self.albedo, keep);
-        filter(&mut self.roughness, keep);
-        filter(&mut self.ior, keep);
+        retain_flagged(&mut self.position, keep);
+        retain_flagged(&mut self.log_scale, keep);
+        retain_flagged(&mut self.rotation, keep);
+        retain_flagged(&mut self.opacity, keep);
+        retain_flagged(&mut self.albedo, keep);
+        retain_flagged(&mut self.roughness, keep);
+        retain_flagged(&mut self.ior, keep);
     }
 
     /// Appends copies of the surfels at `indices`.

@@ -23,7 +23,7 @@
 //! Threading: the views are rendered one after another by the engine; each view's test runs
 //! rayon-parallel over surfels. The result does not depend on the number of threads.
 
-use glam::{DMat3, DVec3};
+use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::core::camera::Camera;
@@ -63,12 +63,11 @@ pub fn hidden_surfels(
     for camera in cameras {
         let rendered = backend.forward(surfels, camera, settings)?;
         let gb = &rendered.gbuffers;
-        let world_to_camera = camera.world_to_camera_opencv();
         (framed.par_iter_mut(), behind_everywhere.par_iter_mut())
             .into_par_iter()
             .enumerate()
             .for_each(|(i, (framed, behind))| {
-                match seen_from(surfels, i, camera, world_to_camera, gb, settings.near) {
+                match seen_from(surfels, i, camera, gb, settings.near) {
                     Seen::OutOfFrame => {}
                     Seen::InView => {
                         *framed = true;
@@ -85,23 +84,12 @@ pub fn hidden_surfels(
         .collect())
 }
 
-/// What `camera`'s rendered G-buffers `gb` say of surfel `i` (`world_to_camera`: the camera's
-/// [`Camera::world_to_camera_opencv`]).
-fn seen_from(
-    surfels: &Surfels,
-    i: usize,
-    camera: &Camera,
-    (rotation, translation): (DMat3, DVec3),
-    gb: &GBuffers,
-    near: f64,
-) -> Seen {
-    let c = rotation * DVec3::from_array(surfels.position[i]) + translation;
-    if c.z.is_nan() || c.z <= near {
+/// What `camera`'s rendered G-buffers `gb` say of surfel `i`.
+fn seen_from(surfels: &Surfels, i: usize, camera: &Camera, gb: &GBuffers, near: f64) -> Seen {
+    let Some((x, y, z)) = camera.project(DVec3::from_array(surfels.position[i])) else {
         return Seen::OutOfFrame;
-    }
-    let x = camera.fx * c.x / c.z + camera.cx;
-    let y = camera.fy * c.y / c.z + camera.cy;
-    if !(x >= 0.0 && y >= 0.0 && x < gb.width as f64 && y < gb.height as f64) {
+    };
+    if z <= near || !(x >= 0.0 && y >= 0.0 && x < gb.width as f64 && y < gb.height as f64) {
         return Seen::OutOfFrame;
     }
     let (px, py) = (x as usize, y as usize);
@@ -122,7 +110,7 @@ fn seen_from(
     }
     let [su, sv] = surfels.log_scale[i];
     let extent = su.max(sv).exp();
-    if c.z > surface + BEHIND_SIGMAS * extent {
+    if z > surface + BEHIND_SIGMAS * extent {
         Seen::Behind
     } else {
         Seen::InView

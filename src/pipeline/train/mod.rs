@@ -823,7 +823,7 @@ impl Run<'_> {
 
     /// Prunes the surfels no training view sees ([`hidden::hidden_surfels`]).
     fn prune_hidden(&self, state: &mut TrainState) -> Result<(), TrainError> {
-        let cameras: Vec<_> = self.train_cameras().into_iter().map(|(_, c)| c).collect();
+        let cameras = self.train_camera_poses();
         let hidden =
             hidden::hidden_surfels(&state.surfels, &cameras, &**self.backend, &self.settings)?;
         let keep: Vec<bool> = hidden.iter().map(|&h| !h).collect();
@@ -840,6 +840,15 @@ impl Run<'_> {
             state.densify.retain(&keep);
         }
         Ok(())
+    }
+
+    /// The training views' cameras without their names (what mesh extraction and the hidden
+    /// surfels' test render).
+    fn train_camera_poses(&self) -> Vec<crate::core::camera::Camera> {
+        self.targets
+            .iter()
+            .map(|t| self.capture.views[t.view].camera)
+            .collect()
     }
 
     /// Cameras of the training views (saved with the model; the mesh is extracted from them).
@@ -868,7 +877,7 @@ impl Run<'_> {
         occlusion.current = true;
         let mut warning = None;
         if remesh {
-            let cameras: Vec<_> = self.train_cameras().into_iter().map(|(_, c)| c).collect();
+            let cameras = self.train_camera_poses();
             match mesh_extraction::mesh_from_surfels(
                 &state.surfels,
                 &cameras,

@@ -559,8 +559,8 @@ pub fn unnormalize_upstream(
 
 /// Chains per-surfel gradients on the projections (`grad_of(i, p)` for visible surfel `i`, whose
 /// engine kept `p` of its projection, holding its [`project::Activations`]) to the raw surfel
-/// parameters through [`project::project_backward`] (rayon over surfels); culled surfels get zero
-/// gradients.
+/// parameters through [`project::project_backward`] (rayon over surfels); culled surfels, and
+/// those whose projection received no gradient, get zero gradients.
 pub fn chain_to_raw<P: Sync>(
     surfels: &Surfels,
     camera: &Camera,
@@ -590,7 +590,12 @@ pub fn chain_to_raw<P: Sync>(
             let Some(p) = p else {
                 return;
             };
-            let r = project::project_backward(surfels, i, &activations(p), &cam, &grad_of(i, p));
+            let grad = grad_of(i, p);
+            // A surfel this view's pixels did not reach (all behind opaque ones) chains nothing.
+            if grad == project::ProjectedGrad::default() {
+                return;
+            }
+            let r = project::project_backward(surfels, i, &activations(p), &cam, &grad);
             *pos = r.position;
             *ls = r.log_scale;
             *rot = r.rotation;

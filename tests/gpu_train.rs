@@ -893,7 +893,7 @@ fn a_device_run_remeshes_gridmap_without_failures() {
     assert_eq!(run(80), []);
 }
 
-/// `bench_train` on the device engine reports the host's side of each step (encode, finish,
+/// `bench_train` on the device engine reports the host's side of each step (encode, read-back, finish,
 /// submit, wait: one of each per attempt), the device's peak buffer memory (at least the views'
 /// targets it holds) and the process's peak resident memory.
 #[test]
@@ -922,7 +922,7 @@ fn the_training_benchmark_reports_host_phases_and_memory() {
     };
     let timing = bench_train(&engine, &capture, &config, BenchStage::Geometry).unwrap();
     let names: Vec<&str> = timing.host_phases.iter().map(|p| p.name.as_str()).collect();
-    assert_eq!(names, ["encode", "finish", "submit", "wait"]);
+    assert_eq!(names, ["encode", "read-back", "finish", "submit", "wait"]);
     for phase in &timing.host_phases {
         assert!(phase.calls >= 10, "{phase:?}");
         assert_eq!(phase.calls, timing.host_phases[0].calls, "{phase:?}");

@@ -14,6 +14,7 @@ use std::time::Instant;
 use wgpu::util::DeviceExt;
 
 use super::profile::{HostClock, PassProfiler};
+use super::readback::ReadbackPool;
 use super::shaders::{KernelSpec, Variant};
 use super::{GpuContext, GpuError};
 use crate::core::raster::StageTime;
@@ -58,6 +59,7 @@ pub struct Device {
     host_clock: HostClock,
     /// The most buffer memory seen in use at a submission, in bytes.
     peak_buffer_bytes: AtomicU64,
+    readbacks: ReadbackPool,
     exclusive: Mutex<()>,
 }
 
@@ -93,6 +95,7 @@ impl Device {
             profiler,
             host_clock: HostClock::default(),
             peak_buffer_bytes: AtomicU64::new(0),
+            readbacks: ReadbackPool::default(),
             ctx,
             variant,
             exclusive: Mutex::new(()),
@@ -355,7 +358,8 @@ impl Device {
     }
 
     /// [`Self::submit_and_read`] of a training step, whose host phases go to the
-    /// [`HostClock`] as "finish", "submit" and "wait" ([`Self::take_host_times`]).
+    /// [`HostClock`] as "read-back" (taking the read-back buffers and recording their copies), "finish",
+    /// "submit" and "wait" ([`Self::take_host_times`]).
     pub(super) fn submit_step_and_read(
         &self,
         encoder: wgpu::CommandEncoder,
@@ -388,27 +392,23 @@ impl Device {
             .chain(&timestamps)
             .map(|&(src, bytes)| {
                 let size = bytes.max(4).next_multiple_of(4);
-                let dst = self.wgpu().create_buffer(&wgpu::BufferDescriptor {
-                    label: Some("readback"),
-                    size,
-                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                    mapped_at_creation: false,
-                });
+                let dst = self.readbacks.take(self.wgpu(), size);
                 if bytes > 0 {
                     encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size);
                 }
-                (dst, bytes)
+                (dst, size)
             })
             .collect();
+        lap("read-back");
         let commands = encoder.finish();
         lap("finish");
         self.queue().submit([commands]);
         lap("submit");
         self.note_buffer_memory();
         let (tx, rx) = std::sync::mpsc::channel();
-        for (i, (buf, _)) in staging.iter().enumerate() {
+        for (i, (buf, size)) in staging.iter().enumerate() {
             let tx = tx.clone();
-            buf.slice(..)
+            buf.slice(..*size)
                 .map_async(wgpu::MapMode::Read, move |r| drop(tx.send((i, r))));
         }
         drop(tx);
@@ -418,11 +418,14 @@ impl Device {
         for (_, r) in rx.iter() {
             r.map_err(|e| GpuError::Device(format!("reading back a buffer failed: {e}")))?;
         }
+        let sizes = sources.iter().chain(&timestamps).map(|&(_, bytes)| bytes);
         let mut data: Vec<Vec<u8>> = staging
-            .iter()
-            .map(|(buf, bytes)| {
-                let data = buf.slice(..).get_mapped_range()[..*bytes as usize].to_vec();
+            .into_iter()
+            .zip(sizes)
+            .map(|((buf, size), bytes)| {
+                let data = buf.slice(..size).get_mapped_range()[..bytes as usize].to_vec();
                 buf.unmap();
+                self.readbacks.give_back(buf);
                 data
             })
             .collect();
@@ -491,7 +494,37 @@ impl Device {
 
 #[cfg(test)]
 mod tests {
+    use wgpu::util::DeviceExt;
+
     use crate::gpu::test_backend;
+
+    /// Read-backs reuse their mappable buffers (two of the smallest size class serve both rounds
+    /// here), and a reused buffer returns the new bytes, cut to the length asked for.
+    #[test]
+    fn read_backs_reuse_their_buffers_and_return_fresh_bytes() {
+        let Some(gpu) = test_backend() else { return };
+        let device = gpu.device();
+        for value in [7u32, 11] {
+            let words: Vec<u32> = (0..10).map(|i| value * 100 + i).collect();
+            let buffer = device
+                .wgpu()
+                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some("words"),
+                    contents: bytemuck::cast_slice(&words),
+                    usage: wgpu::BufferUsages::COPY_SRC,
+                });
+            let encoder = device.wgpu().create_command_encoder(&Default::default());
+            let data = device
+                .submit_and_read(encoder, &[(&buffer, 40), (&buffer, 8)])
+                .unwrap();
+            assert_eq!(bytemuck::pod_collect_to_vec::<u8, u32>(&data[0]), words);
+            assert_eq!(
+                bytemuck::pod_collect_to_vec::<u8, u32>(&data[1]),
+                words[..2]
+            );
+            assert_eq!(device.readbacks.kept(), 2);
+        }
+    }
 
     /// A buffer's bytes count as in use while it lives and stay in the peak after it is freed.
     #[test]

@@ -45,6 +45,7 @@ mod params;
 mod prefilter;
 mod profile;
 mod raster;
+mod readback;
 mod shade;
 mod shaders;
 mod sort;

@@ -242,8 +242,8 @@ pub struct TrainTiming {
     /// Device time per pass over the whole run, where the backend measures it.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub passes: Vec<StageTime>,
-    /// Host time of the device steps' phases over the whole run (encode, finish, submit, wait;
-    /// gpu backend only).
+    /// Host time of the device steps' phases over the whole run (encode, read-back, finish, submit,
+    /// wait; gpu backend only).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub host_phases: Vec<StageTime>,
     #[serde(flatten)]

@@ -234,6 +234,17 @@ impl Device {
             }))
     }
 
+    /// Submits the uploads queued so far and waits for them. wgpu keeps the contents of a buffer
+    /// created with them in a staging buffer of its own (host memory on a discrete GPU) until the
+    /// queue's next submission completes; this frees those copies now.
+    pub(super) fn flush_uploads(&self) -> Result<(), GpuError> {
+        self.queue().submit([]);
+        self.wgpu()
+            .poll(wgpu::PollType::Wait)
+            .map(drop)
+            .map_err(|e| GpuError::Device(e.to_string()))
+    }
+
     /// A uniform buffer holding `contents`, rewritable with `queue.write_buffer`.
     pub(super) fn uniform(&self, label: &str, contents: &[u8]) -> wgpu::Buffer {
         self.wgpu()

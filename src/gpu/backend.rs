@@ -109,8 +109,8 @@ impl GpuBackend {
         self.device.buffer_memory()
     }
 
-    /// Host time of the resident trainer's step phases (encode, finish, submit, wait) since the
-    /// last call.
+    /// Host time of the resident trainer's step phases (encode, read-back, finish, submit, wait)
+    /// since the last call.
     pub fn take_host_times(&self) -> Vec<StageTime> {
         self.device.take_host_times()
     }

@@ -369,8 +369,8 @@ impl Device {
     }
 
     /// [`Self::submit_and_read`] of a training step, whose host phases go to the
-    /// [`HostClock`] as "read-back" (taking the read-back buffers and recording their copies), "finish",
-    /// "submit" and "wait" ([`Self::take_host_times`]).
+    /// [`HostClock`] as "read-back" (taking the read-back buffers and recording their copies),
+    /// "finish", "submit" and "wait" ([`Self::take_host_times`]).
     pub(super) fn submit_step_and_read(
         &self,
         encoder: wgpu::CommandEncoder,

@@ -943,9 +943,9 @@ fn a_device_run_remeshes_gridmap_without_failures() {
     assert_eq!(run(80), []);
 }
 
-/// `bench_train` on the device engine reports the host's side of each step (encode, read-back, finish,
-/// submit, wait: one of each per attempt), the device's peak buffer memory (at least the views'
-/// targets it holds) and the process's peak resident memory.
+/// `bench_train` on the device engine reports the host's side of each step (encode, read-back,
+/// finish, submit, wait: one of each per attempt), the device's peak buffer memory (at least the
+/// views' targets it holds) and the process's peak resident memory.
 #[test]
 fn the_training_benchmark_reports_host_phases_and_memory() {
     use phygap::core::config::TrainConfig;

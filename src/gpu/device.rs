@@ -239,6 +239,11 @@ impl Device {
     /// queue's next submission completes; this frees those copies now.
     pub(super) fn flush_uploads(&self) -> Result<(), GpuError> {
         self.queue().submit([]);
+        self.wait_for_queue()
+    }
+
+    /// Waits until the device has finished everything submitted.
+    fn wait_for_queue(&self) -> Result<(), GpuError> {
         self.wgpu()
             .poll(wgpu::PollType::Wait)
             .map(drop)
@@ -398,7 +403,8 @@ impl Device {
             }
         };
         let timestamps = self.profiler.as_ref().and_then(|p| p.resolve(&mut encoder));
-        let staging: Vec<(wgpu::Buffer, u64)> = sources
+        // Each read-back: its buffer, the bytes copied (a multiple of 4) and the bytes asked for.
+        let staging: Vec<(wgpu::Buffer, u64, u64)> = sources
             .iter()
             .chain(&timestamps)
             .map(|&(src, bytes)| {
@@ -407,7 +413,7 @@ impl Device {
                 if bytes > 0 {
                     encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size);
                 }
-                (dst, size)
+                (dst, size, bytes)
             })
             .collect();
         lap("read-back");
@@ -417,23 +423,19 @@ impl Device {
         lap("submit");
         self.note_buffer_memory();
         let (tx, rx) = std::sync::mpsc::channel();
-        for (i, (buf, size)) in staging.iter().enumerate() {
+        for (i, (buf, size, _)) in staging.iter().enumerate() {
             let tx = tx.clone();
             buf.slice(..*size)
                 .map_async(wgpu::MapMode::Read, move |r| drop(tx.send((i, r))));
         }
         drop(tx);
-        self.wgpu()
-            .poll(wgpu::PollType::Wait)
-            .map_err(|e| GpuError::Device(e.to_string()))?;
+        self.wait_for_queue()?;
         for (_, r) in rx.iter() {
             r.map_err(|e| GpuError::Device(format!("reading back a buffer failed: {e}")))?;
         }
-        let sizes = sources.iter().chain(&timestamps).map(|&(_, bytes)| bytes);
         let mut data: Vec<Vec<u8>> = staging
             .into_iter()
-            .zip(sizes)
-            .map(|((buf, size), bytes)| {
+            .map(|(buf, size, bytes)| {
                 let data = buf.slice(..size).get_mapped_range()[..bytes as usize].to_vec();
                 buf.unmap();
                 self.readbacks.give_back(buf);

@@ -89,7 +89,13 @@ fn main() -> anyhow::Result<()> {
     let env = PreparedEnv::new(&model.envmap, plan)?;
     let cpu_before = cpu_seconds();
     let (t_build, grid) = best(repeats, || {
-        GridMap::build(&mesh, &model.surfels, &model.envmap, env.clone())
+        GridMap::build(
+            &mesh,
+            &model.surfels,
+            &model.envmap,
+            env.clone(),
+            model.config.gridmap_anchors,
+        )
     });
     let cpu_build = (cpu_seconds() - cpu_before) / repeats as f64;
     let grid = grid?;

@@ -408,33 +408,58 @@ fn relative_l2(a: &EnvGrad, b: &EnvGrad) -> f64 {
     (diff / norm).sqrt()
 }
 
-/// GridMap over two spheres, seen so that part of sphere A's mirror rays hit sphere B: the
-/// device's occlusion test, anchor weights and blended probe lookups against the f64 code. A
+/// GridMap over two spheres, seen so that part of sphere A's mirror rays hit sphere B, with the
+/// box's anchors and, on smaller spheres, the whole lattice's 64: the device's occlusion test,
+/// anchor weights and blended probe lookups against the f64 code. A
 /// mirror ray that grazes a triangle edge may be decided differently in f32, so up to 1% of the
 /// pixels may differ; every other pixel agrees to the tolerances of the global light, and the
 /// light's gradient (escaping rays only) to 1% in norm.
 #[test]
 fn gridmap_shading_matches_cpu() {
-    use phygap::core::gridmap::GridMap;
+    use phygap::core::gridmap::{AnchorPlacement, GridMap};
     use phygap::core::mesh::bvh::Bvh;
     use phygap::pipeline::reconstruction::prefilter_plan;
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
     };
     let lut = BrdfLut::compute(16, 64);
-    let (mesh, surfels) = phygap::testing::two_spheres();
-    let bvh = Bvh::build(&mesh);
-    for (seed, fresnel) in [(21u64, false), (22, true)] {
+    // The unit spheres with the box's 56 anchors; the small ones with the lattice's 64.
+    let scenes = [
+        (
+            phygap::testing::two_spheres(),
+            AnchorPlacement::Box,
+            1.5,
+            2.0,
+        ),
+        (
+            phygap::testing::spheres_with_a_gap(),
+            AnchorPlacement::Lattice,
+            1.1,
+            1.6,
+        ),
+    ];
+    for (seed, fresnel, scene) in [(21u64, false, 0), (22, true, 0), (23, true, 1)] {
+        let ((mesh, surfels), placement, centre_x, distance) = &scenes[scene];
+        let (placement, centre_x, distance) = (*placement, *centre_x, *distance);
+        let bvh = Bvh::build(mesh);
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let cube = random_cube(&mut rng, 16);
         let env = PreparedEnv::new(&cube, prefilter_plan(16, fresnel).unwrap()).unwrap();
-        let grid = GridMap::build(&mesh, &surfels, &cube, env).unwrap();
+        let grid = GridMap::build(mesh, surfels, &cube, env, placement).unwrap();
+        assert_eq!(
+            grid.anchors().len(),
+            if placement == AnchorPlacement::Box {
+                56
+            } else {
+                64
+            }
+        );
         let camera = Camera::look_at(
             48,
             40,
             0.9,
-            DVec3::new(1.5, -2.0, 0.2),
-            DVec3::new(1.5, 0.0, 0.0),
+            DVec3::new(centre_x, -distance, 0.2),
+            DVec3::new(centre_x, 0.0, 0.0),
             DVec3::Z,
         );
         let pixels = camera.num_pixels();
@@ -496,7 +521,7 @@ fn gridmap_shading_matches_cpu() {
             .collect();
         let light = relative_l2(&gpu_grads.1, &cpu_grads.1);
         println!(
-            "seed {seed}: {occluded} occluded, {escaping} escaping, {} pixels differ {:?}, \
+            "seed {seed}, {placement:?}: {occluded} occluded, {escaping} escaping, {} pixels differ {:?}, \
              light gradient {light:.2e}",
             differing.len(),
             &differing[..differing.len().min(8)]

@@ -372,7 +372,7 @@ fn a_device_step_matches_the_host_step() {
 /// back-projects from its depth.
 #[test]
 fn a_device_step_under_gridmap_matches_the_host_step() {
-    use phygap::core::gridmap::GridMap;
+    use phygap::core::gridmap::{AnchorPlacement, GridMap};
     use phygap::pipeline::reconstruction::prefilter_plan;
     let Some(gpu) = gpu(GpuOptions::default()) else {
         return;
@@ -390,7 +390,14 @@ fn a_device_step_under_gridmap_matches_the_host_step() {
         DVec3::Z,
     );
     let (mesh, _) = phygap::testing::two_spheres();
-    let grid = GridMap::build(&mesh, &scene.surfels, &cube, scene.env.clone()).unwrap();
+    let grid = GridMap::build(
+        &mesh,
+        &scene.surfels,
+        &cube,
+        scene.env.clone(),
+        AnchorPlacement::Box,
+    )
+    .unwrap();
     for kind in ["full", "partial"] {
         let target = target(&scene.camera, kind, &mut rng);
         compare(&gpu, &scene, &target, Stage::Polar, &grid, Some(&grid));

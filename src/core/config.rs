@@ -10,6 +10,7 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+pub use crate::core::gridmap::AnchorPlacement;
 pub use crate::core::iterations::Iterations;
 use crate::core::raster::RasterSettings;
 pub use crate::core::resolution::Resolution;
@@ -105,6 +106,11 @@ pub struct TrainConfig {
         default_value = "on"
     )]
     pub gridmap: bool,
+    /// Where GridMap's probes sit on a 4×4×4 lattice over the object's box: `box`, its boundary
+    /// (METHOD.md §5, the paper's 56), or `lattice`, with its 8 interior points too (those
+    /// outside the mesh see into concavities; README, *GridMap's probes inside the box*).
+    #[arg(long, value_enum, default_value_t = TrainConfig::default().gridmap_anchors)]
+    pub gridmap_anchors: AnchorPlacement,
     /// Weight the irradiance integral by the Fresnel transmission of the incoming light
     /// (METHOD.md §4, "known gaps" (2)); off reproduces the published model.
     #[arg(
@@ -268,6 +274,7 @@ impl Default for TrainConfig {
             backend: BackendChoice::Auto,
             seed: 0,
             gridmap: true,
+            gridmap_anchors: AnchorPlacement::Box,
             fresnel_irradiance: false,
             resolution: Resolution::Auto,
             lowpass_sigma_px: std::f64::consts::FRAC_1_SQRT_2,

@@ -1,8 +1,11 @@
 //! GridMap (METHOD.md §5): self-occlusion-aware lighting from local environment probes.
 //!
-//! Anchors sit on the mesh's bounding box enlarged 1.1× about its centre: the 8 corners, the two
-//! third-points of each of the 12 edges and the four third-points of each of the 6 faces (the
-//! boundary of a 4×4×4 lattice: 8 + 24 + 24 = 56); anchors inside the mesh are skipped. Each anchor
+//! Anchors sit on a 4×4×4 lattice spanning the mesh's bounding box enlarged 1.1× about its centre
+//! ([`AnchorPlacement`]): with [`AnchorPlacement::Box`] (METHOD.md §5's decision) its boundary
+//! only, the 8 corners, the two third-points of each of the 12 edges and the four third-points of
+//! each of the 6 faces (8 + 24 + 24 = 56); with [`AnchorPlacement::Lattice`] its 8 interior points
+//! too (64), which see into the concavities the box's probes look at from outside. Anchors inside
+//! the mesh are skipped. Each anchor
 //! gets a local cube map of the global map's face size, rendered by one-step ray tracing against the
 //! mesh's BVH: a ray that hits at x with mesh normal n′ carries λ′(x)·E_d(n′) (λ′ the
 //! inverse-distance-weighted albedo of the 3 surfel centres nearest x, E_d the global irradiance);
@@ -33,6 +36,7 @@ use std::sync::Arc;
 
 use glam::DVec3;
 use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::core::envmap::grid::Tap;
@@ -48,8 +52,8 @@ use crate::core::surfels::{sigmoid, Surfels};
 pub const BOX_SCALE: f64 = 1.1;
 /// Surfel centres whose albedo is blended at a ray hit.
 pub const ALBEDO_NEIGHBOURS: usize = 3;
-/// Anchors: the boundary points of a 4×4×4 lattice on the box.
-pub const MAX_ANCHORS: usize = 56;
+/// Anchors: the points of a 4×4×4 lattice on the box.
+pub const MAX_ANCHORS: usize = 64;
 /// Regularizer of the inverse-square anchor weights.
 pub const WEIGHT_EPSILON: f64 = 1e-6;
 /// Surfels at least this opaque carry the albedo seen by probe rays (all of them when none is).
@@ -73,9 +77,27 @@ pub enum GridMapError {
     EnvMap(#[from] EnvMapError),
 }
 
-/// The 56 anchor candidates on the box `[min, max]` enlarged by `scale` about its centre, in a fixed
-/// order (lattice order, x fastest).
-pub fn anchor_candidates(min: DVec3, max: DVec3, scale: f64) -> Vec<DVec3> {
+/// Where GridMap's anchors sit: points of a 4×4×4 lattice spanning the mesh's bounding box
+/// enlarged 1.1× about its centre.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[cfg_attr(feature = "openapi", derive(utoipa::ToSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum AnchorPlacement {
+    /// The lattice's boundary, on the box's faces (56; METHOD.md §5, the paper's placement).
+    #[default]
+    Box,
+    /// The whole lattice: the boundary and the 8 interior points (64), where outside the mesh.
+    Lattice,
+}
+
+/// The anchor candidates of `placement` on the box `[min, max]` enlarged by `scale` about its
+/// centre, in a fixed order (lattice order, x fastest).
+pub fn anchor_candidates(
+    min: DVec3,
+    max: DVec3,
+    scale: f64,
+    placement: AnchorPlacement,
+) -> Vec<DVec3> {
     let centre = 0.5 * (min + max);
     let half = 0.5 * (max - min) * scale;
     let lo = centre - half;
@@ -85,7 +107,7 @@ pub fn anchor_candidates(min: DVec3, max: DVec3, scale: f64) -> Vec<DVec3> {
         for j in 0..4 {
             for i in 0..4 {
                 let on_boundary = [i, j, k].iter().any(|&c| c == 0 || c == 3);
-                if on_boundary {
+                if on_boundary || placement == AnchorPlacement::Lattice {
                     anchors.push(lo + step * DVec3::new(i as f64, j as f64, k as f64));
                 }
             }
@@ -231,13 +253,15 @@ pub struct GridMap {
 }
 
 impl GridMap {
-    /// Builds the probes for `mesh`, with the albedo of `surfels`, lit by the global map
-    /// (`global_cube` and its prefiltered `global`, prepared with the plan the probes reuse).
+    /// Builds the probes at the anchors of `placement` for `mesh`, with the albedo of `surfels`,
+    /// lit by the global map (`global_cube` and its prefiltered `global`, prepared with the plan
+    /// the probes reuse).
     pub fn build(
         mesh: &TriangleMesh,
         surfels: &Surfels,
         global_cube: &CubeMap,
         global: PreparedEnv,
+        placement: AnchorPlacement,
     ) -> Result<Self, GridMapError> {
         let _span =
             tracing::info_span!("gridmap_build", triangles = mesh.triangles.len()).entered();
@@ -252,7 +276,7 @@ impl GridMap {
             return Err(GridMapError::EmptyMesh);
         }
         let bvh = Bvh::build(mesh);
-        let anchors = outside_anchors(&anchor_candidates(lo, hi, BOX_SCALE), &bvh);
+        let anchors = outside_anchors(&anchor_candidates(lo, hi, BOX_SCALE, placement), &bvh);
         if anchors.is_empty() {
             return Err(GridMapError::NoAnchors);
         }
@@ -444,7 +468,18 @@ mod tests {
     use crate::core::gradcheck::assert_gradient;
     use crate::core::light::LightProbe;
     use crate::pipeline::reconstruction::prefilter_plan;
-    use crate::testing::{sphere_surfels, two_spheres};
+    use crate::testing::{sphere_surfels, spheres_with_a_gap, two_spheres};
+
+    /// GridMap with the box's anchors (the two spheres' interior lattice points lie inside them,
+    /// so both placements give the same 56).
+    fn build(
+        mesh: &TriangleMesh,
+        surfels: &Surfels,
+        cube: &CubeMap,
+        global: PreparedEnv,
+    ) -> GridMap {
+        GridMap::build(mesh, surfels, cube, global, AnchorPlacement::Box).unwrap()
+    }
 
     const SIZE: usize = 16;
 
@@ -531,7 +566,12 @@ mod tests {
 
     #[test]
     fn anchors_are_the_56_lattice_boundary_points_and_inside_ones_are_skipped() {
-        let candidates = anchor_candidates(DVec3::splat(-1.0), DVec3::splat(1.0), BOX_SCALE);
+        let candidates = anchor_candidates(
+            DVec3::splat(-1.0),
+            DVec3::splat(1.0),
+            BOX_SCALE,
+            AnchorPlacement::Box,
+        );
         assert_eq!(candidates.len(), 56);
         // Coordinates are ±1.1 (box faces) or ±1.1/3 (thirds).
         let corner_count = candidates
@@ -551,15 +591,101 @@ mod tests {
         // Around its own mesh every anchor is outside.
         let (mesh, surfels) = two_spheres();
         let cube = sky();
-        let grid = GridMap::build(&mesh, &surfels, &cube, prepared(&cube, false)).unwrap();
+        let grid = build(&mesh, &surfels, &cube, prepared(&cube, false));
         assert_eq!(grid.anchors().len(), 56);
+    }
+
+    /// `lattice` adds the 8 interior points (coordinates ±1.1/3) to the box's 56, in lattice
+    /// order, and skips those inside the mesh like any other.
+    #[test]
+    fn the_lattice_adds_the_eight_interior_points() {
+        let (lo, hi) = (DVec3::splat(-1.0), DVec3::splat(1.0));
+        let boundary = anchor_candidates(lo, hi, BOX_SCALE, AnchorPlacement::Box);
+        let lattice = anchor_candidates(lo, hi, BOX_SCALE, AnchorPlacement::Lattice);
+        assert_eq!(lattice.len(), MAX_ANCHORS);
+        let interior: Vec<DVec3> = lattice
+            .iter()
+            .copied()
+            .filter(|a| a.abs().max_element() < 1.0)
+            .collect();
+        assert_eq!(interior.len(), 8);
+        for a in &interior {
+            assert!(
+                (a.abs() - DVec3::splat(1.1 / 3.0)).abs().max_element() < 1e-12,
+                "{a}"
+            );
+        }
+        let others: Vec<DVec3> = lattice
+            .iter()
+            .copied()
+            .filter(|a| a.abs().max_element() >= 1.0)
+            .collect();
+        assert_eq!(others, boundary);
+        // A sphere of radius 0.7 holds the interior points (|a| ≈ 0.64) and nothing else.
+        let bvh = Bvh::build(&TriangleMesh::icosphere(DVec3::ZERO, 0.7, 3));
+        assert_eq!(outside_anchors(&lattice, &bvh), boundary);
+    }
+
+    /// Two small spheres, a light one and a dark one between which the interior anchors lie: a
+    /// point of the light sphere facing the dark one gets irradiance closer to the occluded
+    /// truth (the sky seen past the dark sphere, integrated by brute force over the hemisphere)
+    /// from the lattice's probes than from the box's, which see the gap from outside.
+    #[test]
+    fn interior_anchors_bring_the_irradiance_of_a_concavity_closer_to_the_truth() {
+        let (mesh, surfels) = spheres_with_a_gap();
+        let cube = sky();
+        let global = prepared(&cube, false);
+        let lattice = GridMap::build(
+            &mesh,
+            &surfels,
+            &cube,
+            global.clone(),
+            AnchorPlacement::Lattice,
+        )
+        .unwrap();
+        let boundary = build(&mesh, &surfels, &cube, global.clone());
+        assert_eq!(boundary.anchors().len(), 56);
+        assert_eq!(lattice.anchors().len(), 64);
+        // On the bright sphere, facing the dark one.
+        let x = DVec3::new(0.5, 0.0, 0.0);
+        let n = DVec3::X;
+        let bvh = Bvh::build(&mesh);
+        let steps = 200;
+        let mut truth = DVec3::ZERO;
+        for i in 0..steps {
+            for j in 0..2 * steps {
+                // Midpoint rule in (cos θ, φ) about n: dω = d(cos θ) dφ.
+                let cos_theta = (i as f64 + 0.5) / steps as f64;
+                let phi = std::f64::consts::TAU * (j as f64 + 0.5) / (2 * steps) as f64;
+                let sin_theta = (1.0 - cos_theta * cos_theta).sqrt();
+                let dir = DVec3::new(cos_theta, sin_theta * phi.cos(), sin_theta * phi.sin());
+                let d_omega = (1.0 / steps as f64) * (std::f64::consts::TAU / (2 * steps) as f64);
+                if bvh.intersect(x + 1e-6 * dir, dir, f64::INFINITY).is_none() {
+                    truth += cube.sample(dir) * cos_theta * d_omega / std::f64::consts::PI;
+                }
+            }
+        }
+        let unoccluded = global.irradiance(n, 1.5);
+        let (with_box, with_lattice) = (
+            boundary.irradiance(x, n, 1.5),
+            lattice.irradiance(x, n, 1.5),
+        );
+        println!(
+            "irradiance: sky {unoccluded}, box {with_box}, lattice {with_lattice}, truth {truth}"
+        );
+        assert!(truth.x < 0.95 * unoccluded.x, "the dark sphere occludes");
+        let error = |e: DVec3| (e - truth).abs().element_sum();
+        assert!(
+            error(with_lattice) < 0.8 * error(with_box),
+            "lattice {with_lattice}, box {with_box}, truth {truth}"
+        );
     }
 
     #[test]
     fn weights_are_normalized_and_favour_near_anchors() {
         let (mesh, surfels) = two_spheres();
         let cube = sky();
-        let grid = GridMap::build(&mesh, &surfels, &cube, prepared(&cube, false)).unwrap();
+        let grid = build(&mesh, &surfels, &cube, prepared(&cube, false));
         for x in [
             DVec3::new(1.0, 0.0, 0.0),
             DVec3::new(3.0, 0.5, -0.7),
@@ -588,7 +714,7 @@ mod tests {
         let (mesh, surfels) = two_spheres();
         let cube = sky();
         let global = prepared(&cube, false);
-        let grid = GridMap::build(&mesh, &surfels, &cube, global.clone()).unwrap();
+        let grid = build(&mesh, &surfels, &cube, global.clone());
         let r = 0.35;
         // From A's surface toward B: blocked.
         let x = DVec3::new(1.0, 0.0, 0.0);
@@ -644,7 +770,7 @@ mod tests {
         for (seed, fresnel) in [(1u64, false), (2, true), (3, true)] {
             use rand::{Rng, SeedableRng};
             let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-            let grid = GridMap::build(&mesh, &surfels, &cube, prepared(&cube, fresnel)).unwrap();
+            let grid = build(&mesh, &surfels, &cube, prepared(&cube, fresnel));
             for _ in 0..6 {
                 let x = DVec3::new(
                     rng.random_range(-1.0..4.0),

@@ -25,7 +25,7 @@ use crate::core::shading::ShadingError;
 /// IoR nodes the kernels' parameters hold (`MAX_IORS`).
 const MAX_IORS: usize = 8;
 /// Anchors the GridMap kernels hold (`MAX_ANCHORS`).
-const MAX_ANCHORS: usize = 56;
+const MAX_ANCHORS: usize = crate::core::gridmap::MAX_ANCHORS;
 
 wgsl_mirror! {
     /// `ShadeParams` of shade_common.wgsl.

@@ -128,6 +128,7 @@ impl Reconstruction {
                 &self.model.surfels,
                 &self.model.envmap,
                 self.env.clone(),
+                self.model.config.gridmap_anchors,
             )
             .inspect_err(|e| tracing::warn!("GridMap build failed, rendering without it: {e}"))
             .ok()

@@ -90,17 +90,30 @@ pub fn sphere_surfels(centre: DVec3, radius: f64, count: usize, albedo: DVec3) -
 }
 
 /// Two unit spheres as a mesh and as surfels: A at the origin with a light albedo, B at
-/// (3, 0, 0), dark; each occludes part of the other's sky (GridMap's tests).
+/// (3, 0, 0), dark; each occludes part of the other's sky (GridMap's tests). The interior points
+/// of GridMap's anchor lattice lie inside them.
 pub fn two_spheres() -> (TriangleMesh, Surfels) {
-    let mut mesh = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 3);
-    let b = TriangleMesh::icosphere(DVec3::new(3.0, 0.0, 0.0), 1.0, 3);
+    sphere_pair(1.0, 3.0, 3000)
+}
+
+/// Two spheres of radius 0.5, A at the origin, B dark at (2.2, 0, 0): the gap between them holds
+/// the 8 interior points of GridMap's anchor lattice (`AnchorPlacement::Lattice`: 64 anchors).
+pub fn spheres_with_a_gap() -> (TriangleMesh, Surfels) {
+    sphere_pair(0.5, 2.2, 2000)
+}
+
+/// Spheres of `radius` at the origin (light) and at (`distance`, 0, 0) (dark), `count` surfels each.
+fn sphere_pair(radius: f64, distance: f64, count: usize) -> (TriangleMesh, Surfels) {
+    let b_centre = DVec3::new(distance, 0.0, 0.0);
+    let mut mesh = TriangleMesh::icosphere(DVec3::ZERO, radius, 3);
+    let b = TriangleMesh::icosphere(b_centre, radius, 3);
     let offset = mesh.vertices.len() as u32;
     mesh.vertices.extend(&b.vertices);
     mesh.normals.extend(&b.normals);
     mesh.triangles
         .extend(b.triangles.iter().map(|t| t.map(|i| i + offset)));
-    let mut surfels = sphere_surfels(DVec3::ZERO, 1.0, 3000, DVec3::new(0.6, 0.5, 0.4));
-    let dark = sphere_surfels(DVec3::new(3.0, 0.0, 0.0), 1.0, 3000, DVec3::splat(0.02));
+    let mut surfels = sphere_surfels(DVec3::ZERO, radius, count, DVec3::new(0.6, 0.5, 0.4));
+    let dark = sphere_surfels(b_centre, radius, count, DVec3::splat(0.02));
     for i in 0..dark.len() {
         surfels.push_activated(&dark.get(i));
     }

@@ -252,7 +252,7 @@ fn shade_gradients_match_finite_differences() {
 /// global map, which also takes the gradient).
 #[test]
 fn shade_gradients_under_gridmap_match_finite_differences() {
-    use crate::core::gridmap::GridMap;
+    use crate::core::gridmap::{AnchorPlacement, GridMap};
     use crate::testing::two_spheres;
 
     let lut = BrdfLut::compute(32, 64);
@@ -262,7 +262,7 @@ fn shade_gradients_under_gridmap_match_finite_differences() {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let cube = random_cube(&mut rng);
         let global = PreparedEnv::new(&cube, tiny_plan(fresnel)).unwrap();
-        let grid = GridMap::build(&mesh, &surfels, &cube, global).unwrap();
+        let grid = GridMap::build(&mesh, &surfels, &cube, global, AnchorPlacement::Box).unwrap();
         for k in 0..12 {
             // A point of sphere A facing sphere B (centre (3, 0, 0)).
             let towards_b = DVec3::new(

@@ -197,7 +197,13 @@ pub fn bench_gridmap(model: &Model, repeats: usize) -> Result<GridMapTiming, Ben
     let mut anchors = 0;
     for _ in 0..repeats.max(1) {
         let start = Instant::now();
-        let grid = GridMap::build(&mesh, &model.surfels, &model.envmap, env.clone())?;
+        let grid = GridMap::build(
+            &mesh,
+            &model.surfels,
+            &model.envmap,
+            env.clone(),
+            model.config.gridmap_anchors,
+        )?;
         times.push(start.elapsed().as_secs_f64());
         anchors = grid.anchors().len();
     }

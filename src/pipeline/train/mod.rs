@@ -898,7 +898,13 @@ impl Run<'_> {
         }
         occlusion.grid = match occlusion.mesh.as_ref() {
             None => None,
-            Some(mesh) => match GridMap::build(mesh, &state.surfels, &state.envmap, env.clone()) {
+            Some(mesh) => match GridMap::build(
+                mesh,
+                &state.surfels,
+                &state.envmap,
+                env.clone(),
+                self.config.gridmap_anchors,
+            ) {
                 Ok(grid) => Some(grid),
                 Err(e) => {
                     warning = Some(format!(

@@ -1,16 +1,15 @@
 //! GridMap (METHOD.md §5): self-occlusion-aware lighting from local environment probes.
 //!
 //! Anchors sit on a 4×4×4 lattice spanning the mesh's bounding box enlarged 1.1× about its centre
-//! ([`AnchorPlacement`]): with [`AnchorPlacement::Box`] (METHOD.md §5's decision) its boundary
-//! only, the 8 corners, the two third-points of each of the 12 edges and the four third-points of
-//! each of the 6 faces (8 + 24 + 24 = 56); with [`AnchorPlacement::Lattice`] its 8 interior points
-//! too (64), which see into the concavities the box's probes look at from outside. Anchors inside
-//! the mesh are skipped. Each anchor
-//! gets a local cube map of the global map's face size, rendered by one-step ray tracing against the
-//! mesh's BVH: a ray that hits at x with mesh normal n′ carries λ′(x)·E_d(n′) (λ′ the
-//! inverse-distance-weighted albedo of the 3 surfel centres nearest x, E_d the global irradiance);
-//! a ray that misses carries the global map's own texel (the activated base map, i.e. its bilinear
-//! lookup at the texel centre). The local maps are prefiltered exactly like the global one (same
+//! ([`AnchorPlacement`]): with [`AnchorPlacement::Box`] (METHOD.md §5's decision, the default) on
+//! its boundary only, the 8 corners, the two third-points of each of the 12 edges and the four
+//! third-points of each of the 6 faces (8 + 24 + 24 = 56); with [`AnchorPlacement::Lattice`] at its
+//! 8 interior points too (64), which see into the concavities the box's probes look at from
+//! outside. Anchors inside the mesh are skipped. Each anchor gets a local cube map of the global
+//! map's face size, rendered by one-step ray tracing against the mesh's BVH: a ray that hits at x
+//! with mesh normal n′ carries λ′(x)·E_d(n′) (λ′ the inverse-distance-weighted albedo of the 3
+//! surfel centres nearest x, E_d the global irradiance); a ray that misses carries the global
+//! map's own texel (the activated base map, i.e. its bilinear lookup at the texel centre). The local maps are prefiltered exactly like the global one (same
 //! plan, [`PreparedEnv::new_batch`]) and kept texel-major ([`ProbeTexels`]).
 //!
 //! Shading at a surface point x blends the probes with weights w_k ∝ 1/(‖x − a_k‖² + 1e-6):

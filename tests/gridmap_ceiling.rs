@@ -141,7 +141,7 @@ struct Ceiling {
     global: (f64, f64),
     /// GridMap with the box's anchors (METHOD.md §5).
     gridmap: (f64, f64),
-    /// GridMap with the whole lattice's (the default).
+    /// GridMap with the whole lattice's (`--gridmap-anchors lattice`).
     lattice: (f64, f64),
 }
 

@@ -9,8 +9,9 @@
 //! map's face size, rendered by one-step ray tracing against the mesh's BVH: a ray that hits at x
 //! with mesh normal n′ carries λ′(x)·E_d(n′) (λ′ the inverse-distance-weighted albedo of the 3
 //! surfel centres nearest x, E_d the global irradiance); a ray that misses carries the global
-//! map's own texel (the activated base map, i.e. its bilinear lookup at the texel centre). The local maps are prefiltered exactly like the global one (same
-//! plan, [`PreparedEnv::new_batch`]) and kept texel-major ([`ProbeTexels`]).
+//! map's own texel (the activated base map, i.e. its bilinear lookup at the texel centre). The
+//! local maps are prefiltered exactly like the global one (same plan, [`PreparedEnv::new_batch`])
+//! and kept texel-major ([`ProbeTexels`]).
 //!
 //! Shading at a surface point x blends the probes with weights w_k ∝ 1/(‖x − a_k‖² + 1e-6):
 //! diffuse irradiance Σ_k w_k E_d,k(n) everywhere; specular Σ_k w_k E_k(ω_r, r) where the mirror

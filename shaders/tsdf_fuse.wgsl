@@ -2,13 +2,16 @@
 // `core::mesh::tsdf` (its module doc states the rules). Two kernels, run per view:
 //
 // `prepare_depth` turns one band of the rasterizer's G-buffers into the view's cleaned depth map
-// (`PreparedView::new`): a pixel keeps its z-depth where α ≥ 0.5 and 0 < depth ≤ depth_max, else
-// it is background (0). One thread per pixel of the band.
+// (`fusion_depth` and `PreparedView::new`): where α ≥ 0.5, a pixel whose composited depths spread
+// (standard deviation, from the second moment) more than max_spread and spread_per_depth × depth
+// is unknown (−1); else it keeps
+// its z-depth where 0 < depth ≤ depth_max; every other pixel is background (0). One thread per
+// pixel of the band.
 //
 // `fuse_view` adds the view's vote into every voxel's running sum and count (`BlockFrame::fuse`
 // voxel by voxel): the voxel centre is projected; outside the image, or behind the camera, no
-// vote. The four pixels around the projection (clamped at the last row and column) decide: all
-// background → +1 (free space); all surface with a depth spread ≤ truncation → bilinear depth,
+// vote. The four pixels around the projection (clamped at the last row and column) decide: any
+// unknown → no vote; all background → +1 (free space); all surface with a depth spread ≤ truncation → bilinear depth,
 // sdf = depth − z, no vote when sdf < −truncation, else min(sdf / truncation, 1); any other mix →
 // no vote. One thread per voxel (x fastest), one dispatch per view: each voxel has one thread per
 // dispatch and dispatches run in order, so the sums need no atomics, and only one view's depth
@@ -18,10 +21,16 @@ struct DepthBand {
     // First pixel of the band in the view (row-major) and its pixel count.
     pixel_first: u32,
     pixels: u32,
-    // Values per pixel of the G-buffers (α at 0, depth at 1).
+    // Values per pixel of the G-buffers (α at 0, depth at 1, its second moment at 10).
     gbuf_stride: u32,
     // Depths beyond this are background (the largest f32 not above the host's limit).
     depth_max: f32,
+    // A pixel whose depths spread more than both of these is unknown: the grid's truncation,
+    // and SURFACE_SPREAD_FOOTPRINTS pixel footprints (this factor times the pixel's depth).
+    max_spread: f32,
+    spread_per_depth: f32,
+    pad0: u32,
+    pad1: u32,
 }
 
 struct FuseView {
@@ -51,7 +60,7 @@ struct FuseView {
 }
 
 @group(0) @binding(0) var<uniform> fuse: FuseView;
-// The view's cleaned z-depth per pixel, row-major, 0 = background.
+// The view's cleaned z-depth per pixel, row-major, 0 = background, −1 = unknown.
 @group(0) @binding(1) var<storage, read> view_depth: array<f32>;
 // Per voxel: the sum of the views' votes and their number.
 @group(0) @binding(2) var<storage, read_write> tsdf_sum: array<f32>;
@@ -70,8 +79,14 @@ fn prepare_depth(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wor
     }
     let alpha = band_gbuf[p * depth_band.gbuf_stride];
     let depth = band_gbuf[p * depth_band.gbuf_stride + 1u];
+    let depth_sq = band_gbuf[p * depth_band.gbuf_stride + 10u];
+    let spread = sqrt(max(depth_sq - depth * depth, 0.0));
     let surface = alpha >= 0.5 && depth > 0.0 && depth <= depth_band.depth_max;
-    clean_depth[depth_band.pixel_first + p] = select(0.0, depth, surface);
+    var clean = select(0.0, depth, surface);
+    if alpha >= 0.5 && spread > max(depth_band.max_spread, depth_band.spread_per_depth * depth) {
+        clean = -1.0;
+    }
+    clean_depth[depth_band.pixel_first + p] = clean;
 }
 
 @compute @workgroup_size(256)
@@ -105,6 +120,9 @@ fn fuse_view(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgro
     let d10 = view_depth[y0 * w + x1];
     let d01 = view_depth[y1 * w + x0];
     let d11 = view_depth[y1 * w + x1];
+    if min(min(d00, d10), min(d01, d11)) < 0.0 {
+        return;
+    }
     let surfaces = u32(d00 > 0.0) + u32(d10 > 0.0) + u32(d01 > 0.0) + u32(d11 > 0.0);
     let trunc = fuse.truncation;
     var tsdf = 1.0;

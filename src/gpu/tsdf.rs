@@ -27,7 +27,7 @@ use super::raster::{Frame, Rasterizer};
 use super::shaders;
 use super::GpuError;
 use crate::core::camera::Camera;
-use crate::core::mesh::{GridLayout, ScalarGrid};
+use crate::core::mesh::{GridLayout, ScalarGrid, SURFACE_SPREAD_FOOTPRINTS};
 use crate::core::raster::{validate_inputs, RasterError, RasterSettings};
 use crate::core::surfels::Surfels;
 
@@ -39,6 +39,10 @@ wgsl_mirror! {
         pixels: u32,
         gbuf_stride: u32,
         depth_max: f32,
+        max_spread: f32,
+        spread_per_depth: f32,
+        pad0: u32,
+        pad1: u32,
     }
 }
 
@@ -176,6 +180,10 @@ impl<'a> Fusion<'a> {
             pixels,
             gbuf_stride: NUM_OUT as u32,
             depth_max: f32_at_most(self.grid.depth_max),
+            max_spread: self.grid.truncation as f32,
+            spread_per_depth: (SURFACE_SPREAD_FOOTPRINTS / camera.fx.min(camera.fy)) as f32,
+            pad0: 0,
+            pad1: 0,
         };
         let params = self
             .device
@@ -304,10 +312,10 @@ impl TsdfKernels {
 mod tests {
     use super::*;
     use crate::core::engine::Backend;
-    use crate::core::mesh::tsdf_reference::{dense_reference, spheres_depth};
+    use crate::core::mesh::tsdf_reference::{dense_reference, spheres_depth, with_unknown_band};
     use crate::core::mesh::{
-        cameras_around, chamfer_l1_with, fuse_tsdf, marching_cubes, rendered_depth_views,
-        sphere_depth_maps, DepthView, TriangleMesh, TsdfParams,
+        cameras_around, chamfer_l1_with, fuse_tsdf, fusion_depth, marching_cubes,
+        rendered_depth_views, sphere_depth_maps, DepthView, TriangleMesh, TsdfParams,
     };
     use crate::gpu::layout::assert_mirrors;
     use crate::gpu::GpuBackend;
@@ -351,6 +359,10 @@ mod tests {
                     let mut px = [0f32; NUM_OUT];
                     px[0] = view.alpha.map_or(1.0, |a| a[p] as f32);
                     px[1] = view.depth[p] as f32;
+                    if view.depth[p].is_nan() {
+                        // Unknown on the host: in G-buffers, depths spread far apart.
+                        (px[1], px[10]) = (1.0, 1e6);
+                    }
                     px
                 })
                 .collect();
@@ -488,8 +500,8 @@ mod tests {
         };
         // Two overlapping spheres (occlusion edges, a concave crease), a small far one, and a
         // view limit that drops it from some views; every third view's alpha hides a strip of the
-        // objects, and a strip of others' is exactly at the 0.5 threshold (surface); the
-        // G-buffers come in bands of 3 tile rows.
+        // objects, and a strip of others' is exactly at the 0.5 threshold (surface); every fourth
+        // view has a band of unknown pixels; the G-buffers come in bands of 3 tile rows.
         let spheres = [
             (DVec3::new(-0.25, 0.0, 0.0), 0.5),
             (DVec3::new(0.35, 0.1, 0.05), 0.4),
@@ -497,7 +509,8 @@ mod tests {
         ];
         let size = 72;
         let cameras = cameras_around(12, 3.0, size, 40f64.to_radians());
-        let depths = spheres_depth(&cameras, &spheres);
+        let mut depths = spheres_depth(&cameras, &spheres);
+        with_unknown_band(&mut depths, size as usize);
         let alphas: Vec<Vec<f64>> = (0..cameras.len())
             .map(|v| {
                 (0..cameras[v].num_pixels())
@@ -551,7 +564,10 @@ mod tests {
                 let g = crate::core::engine::Backend::forward(&gpu, &surfels, camera, &settings)
                     .unwrap()
                     .gbuffers;
-                (g.depth, g.alpha)
+                (
+                    fusion_depth(camera, &g.depth, &g.depth_sq, grid.truncation),
+                    g.alpha,
+                )
             })
             .collect();
         let host = fuse_tsdf(&rendered_depth_views(&cameras, &maps), bounds, &params).unwrap();

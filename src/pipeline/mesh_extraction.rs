@@ -1,6 +1,8 @@
 //! Triangle mesh of a set of surfels (METHOD.md §8): render α-normalized depth and opacity from a set
 //! of cameras (the training cameras), fuse them into a TSDF over the surfels' robust extent
-//! ([`TsdfParams::automatic`]: 5-voxel truncation, depth limited to the far side of the bounds),
+//! ([`TsdfParams::automatic`]: 5-voxel truncation, depth limited to the far side of the bounds;
+//! pixels whose depths spread more than the truncation and a few pixels give no vote,
+//! [`fusion_depth`]),
 //! run marching cubes and keep the largest component (a model's deliverable mesh also has its holes
 //! closed). Used by `phygap mesh`, the export, the evaluation's Chamfer distance and GridMap
 //! (training and rendering).
@@ -19,8 +21,8 @@ use thiserror::Error;
 use crate::core::camera::Camera;
 use crate::core::engine::Backend;
 use crate::core::mesh::{
-    cameras_around_point, fuse_tsdf, mesh_from_grid, rendered_depth_views, GridLayout, MeshError,
-    TriangleMesh, TsdfParams,
+    cameras_around_point, fuse_tsdf, fusion_depth, mesh_from_grid, rendered_depth_views,
+    GridLayout, MeshError, TriangleMesh, TsdfParams,
 };
 use crate::core::raster::{RasterError, RasterSettings};
 use crate::core::surfels::{sigmoid, Surfels};
@@ -138,7 +140,8 @@ pub fn mesh_from_surfels(
             let mut maps = Vec::with_capacity(cameras.len());
             for camera in cameras {
                 let g = backend.forward(surfels, camera, settings)?.gbuffers;
-                maps.push((g.depth, g.alpha));
+                let depth = fusion_depth(camera, &g.depth, &g.depth_sq, grid.truncation);
+                maps.push((depth, g.alpha));
             }
             fuse_tsdf(&rendered_depth_views(cameras, &maps), bounds, &params)?
         }
@@ -259,6 +262,46 @@ mod tests {
                 .fold(0.0, f64::max);
             assert!(worst < 0.06, "largest radial error {worst}");
         }
+    }
+
+    /// A sparse patch (the bottom cap's surfels at opacity 0.3) lets the far wall through: its
+    /// pixels reach α ≥ 0.5 only with the far wall's share, so their mean depth lies inside the
+    /// sphere. Fused as surface they would carve the interior and leave a sheet inside; as
+    /// unknown (their depths spread far more than the truncation) they leave the shell alone.
+    #[test]
+    fn pixels_seen_through_a_sparse_patch_carve_no_interior_sheet() {
+        let (centre, radius) = (DVec3::new(0.1, 0.0, -0.1), 0.8);
+        let mut surfels = sphere_surfels(centre, radius, 4000, DVec3::splat(0.5));
+        for i in 0..surfels.len() {
+            if surfels.get(i).position.z - centre.z < -0.5 * radius {
+                surfels.opacity[i] = crate::core::surfels::logit(0.3);
+            }
+        }
+        let cameras = orbit_cameras(&surfels);
+        let backend = crate::core::raster::cpu::CpuBackend;
+        let settings = RasterSettings::default();
+        let bottom = cameras
+            .iter()
+            .map(|c| backend.forward(&surfels, c, &settings).unwrap().gbuffers)
+            .flat_map(|g| {
+                (0..g.alpha.len())
+                    .filter(|&p| g.alpha[p] >= 0.5)
+                    .map(|p| (g.depth_sq[p] - g.depth[p] * g.depth[p]).max(0.0).sqrt())
+                    .collect::<Vec<_>>()
+            })
+            .filter(|&spread| spread > 0.2)
+            .count();
+        assert!(
+            bottom > 100,
+            "{bottom} pixels mix the patch and the far wall"
+        );
+        let mesh = mesh_from_surfels(&surfels, &cameras, &backend, &settings, 48).unwrap();
+        let deepest = mesh
+            .vertices
+            .iter()
+            .map(|v| radius - DVec3::from_array(*v).distance(centre))
+            .fold(0.0, f64::max);
+        assert!(deepest < 0.1, "a vertex lies {deepest} inside the shell");
     }
 
     #[test]

@@ -8,7 +8,11 @@
 //! receives `+1`, which carves the visual hull. Values are averaged with unit weights; voxels no view
 //! observed stay unknown and block marching cubes. Depth is bilinearly interpolated when the four
 //! neighbouring pixels see a continuous surface, else the nearest pixel is used; a voxel whose
-//! nearest pixel is background but some neighbour is not gets no vote from that view.
+//! nearest pixel is background but some neighbour is not gets no vote from that view. A pixel may
+//! also be unknown (NaN depth): rendered depth whose composited surfaces spread along the ray by
+//! more than the truncation and a few pixel footprints ([`fusion_depth`]: a sparse patch blended
+//! with the far wall behind it); a voxel with an unknown pixel among its four gets no vote from
+//! that view.
 //!
 //! Only 8³-voxel blocks near back-projected surface pixels are fused (a conservative band that
 //! provably holds every cell marching cubes could triangulate, so the result equals dense fusion).
@@ -27,7 +31,8 @@ use crate::core::camera::Camera;
 #[derive(Clone, Copy, Debug)]
 pub struct DepthView<'a> {
     pub camera: &'a Camera,
-    /// OpenCV z-depth per pixel, row-major, 0 = no surface.
+    /// OpenCV z-depth per pixel, row-major, 0 = no surface, NaN = unknown (no vote: a pixel
+    /// whose composited surfaces lie too far apart to stand for one, [`fusion_depth`]).
     pub depth: &'a [f64],
     /// Accumulated opacity per pixel; pixels below 0.5 count as background.
     pub alpha: Option<&'a [f64]>,
@@ -135,7 +140,9 @@ impl PreparedView {
             .enumerate()
             .map(|(p, &d)| {
                 let opaque = view.alpha.is_none_or(|a| a[p] >= 0.5);
-                if opaque && d.is_finite() && d > 0.0 && d <= depth_max {
+                if opaque && d.is_nan() {
+                    f64::NAN
+                } else if opaque && d.is_finite() && d > 0.0 && d <= depth_max {
                     d
                 } else {
                     0.0
@@ -157,7 +164,10 @@ impl PreparedView {
                 let surfaces = d.iter().filter(|&&z| z > 0.0).count();
                 let lo = d.iter().copied().fold(f64::INFINITY, f64::min);
                 let hi = d.iter().copied().fold(0.0, f64::max);
-                cells.push(if surfaces == 0 {
+                let unknown = d.iter().any(|z| z.is_nan());
+                cells.push(if unknown {
+                    [f32::NAN; 4]
+                } else if surfaces == 0 {
                     [BACKGROUND; 4]
                 } else if surfaces == 4 && hi - lo <= max_jump {
                     d.map(|z| z as f32)
@@ -202,7 +212,8 @@ impl PreparedView {
         for j in 0..self.height {
             for i in 0..self.width {
                 let d = self.depth[j * self.width + i];
-                if d <= 0.0 {
+                // Background (0) and unknown (NaN) pixels mark nothing.
+                if d.is_nan() || d <= 0.0 {
                     continue;
                 }
                 let p = origin + rotation_cv * (cam.camera_dir(i as f64 + 0.5, j as f64 + 0.5) * d);
@@ -683,6 +694,34 @@ pub fn sphere_depth_maps(cameras: &[Camera], centre: DVec3, radius: f64) -> Vec<
         .collect()
 }
 
+/// Depth spread, in pixel footprints at the pixel's depth, that one surface seen at pixel
+/// resolution may have (a tilted surface, overlapping surfels): about the 95th percentile of the
+/// spreads of trained models' pixels (1.1–1.5 footprints at the median).
+pub const SURFACE_SPREAD_FOOTPRINTS: f64 = 4.0;
+
+/// A rendered depth map of `camera` prepared for fusion: the α-normalized `depth`, NaN
+/// (unknown) where the surfaces composited into a pixel spread along its ray (their standard
+/// deviation, from the α-normalized second moment `depth_sq`) by more than `truncation` and more
+/// than [`SURFACE_SPREAD_FOOTPRINTS`] pixel footprints. Such a pixel blends a surface with what
+/// lies behind it — the far wall seen through a sparse patch, or the background past an
+/// occluding edge — and its mean depth lies on neither: fused, it would carve free space behind
+/// the surface (an interior sheet in the mesh) or vote for a floating one.
+pub fn fusion_depth(camera: &Camera, depth: &[f64], depth_sq: &[f64], truncation: f64) -> Vec<f64> {
+    let per_depth = SURFACE_SPREAD_FOOTPRINTS / camera.fx.min(camera.fy);
+    depth
+        .iter()
+        .zip(depth_sq)
+        .map(|(&d, &d2)| {
+            let spread = (d2 - d * d).max(0.0).sqrt();
+            if spread > truncation.max(per_depth * d) {
+                f64::NAN
+            } else {
+                d
+            }
+        })
+        .collect()
+}
+
 /// One [`DepthView`] per camera with the rendered `(depth, alpha)` maps of the same index.
 pub fn rendered_depth_views<'a>(
     cameras: &'a [Camera],
@@ -803,6 +842,14 @@ pub(crate) mod reference {
             .collect()
     }
 
+    /// Marks rows 30–37 of every fourth view (views 2, 6, …) unknown (NaN depth): a band across
+    /// surfaces, silhouettes and background that must give no vote.
+    pub(crate) fn with_unknown_band(depths: &mut [Vec<f64>], width: usize) {
+        for depth in depths.iter_mut().skip(2).step_by(4) {
+            depth[30 * width..38 * width].fill(f64::NAN);
+        }
+    }
+
     /// Dense fusion written plainly from the rules in the module doc: every voxel, every view,
     /// `Camera::project`, raw depth pixels.
     pub(crate) fn dense_reference(
@@ -834,7 +881,9 @@ pub(crate) mod reference {
                         let depth_at = |x: usize, y: usize| {
                             let d = view.depth[y * w + x];
                             let opaque = view.alpha.is_none_or(|a| a[y * w + x] >= 0.5);
-                            if opaque && d > 0.0 && d <= params.depth_max {
+                            if opaque && d.is_nan() {
+                                f64::NAN
+                            } else if opaque && d > 0.0 && d <= params.depth_max {
                                 d
                             } else {
                                 0.0
@@ -849,6 +898,9 @@ pub(crate) mod reference {
                             depth_at(x0, y1),
                             depth_at(x1, y1),
                         ];
+                        if d.iter().any(|z| z.is_nan()) {
+                            continue;
+                        }
                         if d.iter().all(|&z| z == 0.0) {
                             sum += 1.0;
                             count += 1;
@@ -890,7 +942,7 @@ pub(crate) mod reference {
 
 #[cfg(test)]
 mod tests {
-    use super::reference::{dense_reference, spheres_depth};
+    use super::reference::{dense_reference, spheres_depth, with_unknown_band};
     use super::*;
     use std::collections::HashMap;
 
@@ -964,6 +1016,53 @@ mod tests {
     }
 
     #[test]
+    fn unknown_pixels_give_no_vote() {
+        let sphere = AnalyticSphere::new(0.5, 12, 3.0, 64);
+        let bounds = (DVec3::splat(-1.0), DVec3::splat(1.0));
+        let params = TsdfParams::new(32);
+        let views = sphere.views(None);
+        let unknown = vec![f64::NAN; sphere.cameras[0].num_pixels()];
+        let mut with_unknown = views.clone();
+        with_unknown[0].depth = &unknown;
+        let (a, b) = (
+            fuse_tsdf(&with_unknown, bounds, &params).unwrap(),
+            fuse_tsdf(&views[1..], bounds, &params).unwrap(),
+        );
+        assert_eq!(a.known, b.known);
+        assert!(a.known.iter().filter(|&&k| k).count() > 1000);
+        assert!(a
+            .values
+            .iter()
+            .zip(&b.values)
+            .all(|(x, y)| x.to_bits() == y.to_bits() || x.is_nan() && y.is_nan()));
+    }
+
+    #[test]
+    fn depths_that_spread_beyond_the_limit_become_unknown() {
+        // Focal length 100 px: four footprints are 0.04 units a unit of depth.
+        let camera = cameras_around(1, 3.0, 100, 2.0 * 0.5f64.atan())[0];
+        assert!((camera.fx - 100.0).abs() < 1e-9);
+        let depth = [2.0, 2.0, 3.0, 0.0, 5.0, 5.0];
+        // Spreads 0.01, 0.5, exactly 0.1, a background pixel, and 0.19 and 0.21 at a depth
+        // where four footprints (0.2) exceed the truncation.
+        let depth_sq = [
+            4.0 + 1e-4,
+            4.0 + 0.25,
+            9.0 + 0.01,
+            0.0,
+            25.0 + 0.0361,
+            25.0 + 0.0441,
+        ];
+        let fused = fusion_depth(&camera, &depth, &depth_sq, 0.1 + 1e-9);
+        assert_eq!(fused[0], 2.0);
+        assert!(fused[1].is_nan());
+        assert_eq!(fused[2], 3.0);
+        assert_eq!(fused[3], 0.0);
+        assert_eq!(fused[4], 5.0);
+        assert!(fused[5].is_nan());
+    }
+
+    #[test]
     fn mismatched_view_sizes_and_bad_parameters_are_reported() {
         let cameras = cameras_around(1, 3.0, 16, 0.7);
         let short = vec![1.0; 10];
@@ -997,14 +1096,15 @@ mod tests {
     #[test]
     fn sparse_fusion_matches_a_dense_reference() {
         // Two overlapping spheres (occlusion edges, a concave crease) and a small far one; some
-        // views carry an alpha map that hides part of the image.
+        // views carry an alpha map that hides part of the image, others a band of unknown pixels.
         let spheres = [
             (DVec3::new(-0.25, 0.0, 0.0), 0.5),
             (DVec3::new(0.35, 0.1, 0.05), 0.4),
             (DVec3::new(0.0, 0.0, 0.85), 0.1),
         ];
         let cameras = cameras_around(10, 3.0, 64, 40f64.to_radians());
-        let depths = spheres_depth(&cameras, &spheres);
+        let mut depths = spheres_depth(&cameras, &spheres);
+        with_unknown_band(&mut depths, 64);
         let alphas: Vec<Vec<f64>> = (0..cameras.len())
             .map(|v| {
                 (0..64 * 64)

@@ -2,11 +2,10 @@
 // `core::mesh::tsdf` (its module doc states the rules). Two kernels, run per view:
 //
 // `prepare_depth` turns one band of the rasterizer's G-buffers into the view's cleaned depth map
-// (`fusion_depth` and `PreparedView::new`): where α ≥ 0.5, a pixel whose composited depths spread
-// (standard deviation, from the second moment) more than max_spread and spread_per_depth × depth
-// is unknown (−1); else it keeps
-// its z-depth where 0 < depth ≤ depth_max; every other pixel is background (0). One thread per
-// pixel of the band.
+// (`fusion_depth` and `PreparedView::new`): when only coherent pixels vote, a pixel with α ≥ 0.5
+// whose composited depths spread (standard deviation, from the second moment) more than
+// max_spread and spread_per_depth × depth is unknown (−1); else it keeps its z-depth where
+// 0 < depth ≤ depth_max; every other pixel is background (0). One thread per pixel of the band.
 //
 // `fuse_view` adds the view's vote into every voxel's running sum and count (`BlockFrame::fuse`
 // voxel by voxel): the voxel centre is projected; outside the image, or behind the camera, no
@@ -25,12 +24,13 @@ struct DepthBand {
     gbuf_stride: u32,
     // Depths beyond this are background (the largest f32 not above the host's limit).
     depth_max: f32,
-    // A pixel whose depths spread more than both of these is unknown: the grid's truncation,
-    // and SURFACE_SPREAD_FOOTPRINTS pixel footprints (this factor times the pixel's depth).
+    // 1 to trust only the coherent pixels (`DepthPixels::Coherent`), 0 for every pixel.
+    coherent_only: u32,
+    // Then a pixel whose depths spread more than both of these is unknown: the grid's
+    // truncation, and SURFACE_SPREAD_FOOTPRINTS pixel footprints (this factor times its depth).
     max_spread: f32,
     spread_per_depth: f32,
     pad0: u32,
-    pad1: u32,
 }
 
 struct FuseView {
@@ -83,7 +83,8 @@ fn prepare_depth(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wor
     let spread = sqrt(max(depth_sq - depth * depth, 0.0));
     let surface = alpha >= 0.5 && depth > 0.0 && depth <= depth_band.depth_max;
     var clean = select(0.0, depth, surface);
-    if alpha >= 0.5 && spread > max(depth_band.max_spread, depth_band.spread_per_depth * depth) {
+    let spread_limit = max(depth_band.max_spread, depth_band.spread_per_depth * depth);
+    if depth_band.coherent_only != 0u && alpha >= 0.5 && spread > spread_limit {
         clean = -1.0;
     }
     clean_depth[depth_band.pixel_first + p] = clean;

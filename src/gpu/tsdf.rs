@@ -27,7 +27,7 @@ use super::raster::{Frame, Rasterizer};
 use super::shaders;
 use super::GpuError;
 use crate::core::camera::Camera;
-use crate::core::mesh::{GridLayout, ScalarGrid, SURFACE_SPREAD_FOOTPRINTS};
+use crate::core::mesh::{DepthPixels, GridLayout, ScalarGrid, SURFACE_SPREAD_FOOTPRINTS};
 use crate::core::raster::{validate_inputs, RasterError, RasterSettings};
 use crate::core::surfels::Surfels;
 
@@ -39,10 +39,10 @@ wgsl_mirror! {
         pixels: u32,
         gbuf_stride: u32,
         depth_max: f32,
+        coherent_only: u32,
         max_spread: f32,
         spread_per_depth: f32,
         pad0: u32,
-        pad1: u32,
     }
 }
 
@@ -180,10 +180,10 @@ impl<'a> Fusion<'a> {
             pixels,
             gbuf_stride: NUM_OUT as u32,
             depth_max: f32_at_most(self.grid.depth_max),
+            coherent_only: u32::from(self.grid.pixels == DepthPixels::Coherent),
             max_spread: self.grid.truncation as f32,
             spread_per_depth: (SURFACE_SPREAD_FOOTPRINTS / camera.fx.min(camera.fy)) as f32,
             pad0: 0,
-            pad1: 0,
         };
         let params = self
             .device
@@ -360,8 +360,9 @@ mod tests {
                     px[0] = view.alpha.map_or(1.0, |a| a[p] as f32);
                     px[1] = view.depth[p] as f32;
                     if view.depth[p].is_nan() {
-                        // Unknown on the host: in G-buffers, depths spread far apart.
-                        (px[1], px[10]) = (1.0, 1e6);
+                        // Unknown on the host: in G-buffers, depths spread far apart about a
+                        // mean inside the grid (where a vote would show).
+                        (px[1], px[10]) = (3.0, 1e6);
                     }
                     px
                 })
@@ -532,6 +533,8 @@ mod tests {
         let bounds = (DVec3::new(-1.0, -0.8, -0.8), DVec3::new(1.0, 0.8, 1.0));
         let mut params = TsdfParams::automatic(44, &cameras, bounds);
         params.depth_max = 3.4;
+        // The device sees the unknown band only as G-buffer pixels whose depths spread.
+        params.pixels = DepthPixels::Coherent;
         assert_matches_host(&gpu, &views, bounds, &params, 3);
     }
 
@@ -552,7 +555,10 @@ mod tests {
         let cameras = cameras_around(10, 2.6, 80, 40f64.to_radians());
         let settings = RasterSettings::default();
         let bounds = (DVec3::splat(-0.8), DVec3::new(1.0, 0.8, 0.7));
-        let params = TsdfParams::automatic(40, &cameras, bounds);
+        let params = TsdfParams {
+            pixels: DepthPixels::Coherent,
+            ..TsdfParams::automatic(40, &cameras, bounds)
+        };
         let grid = GridLayout::new(bounds, &params).unwrap();
         let device = gpu
             .fuse_depth(&surfels, &cameras, &settings, &grid)

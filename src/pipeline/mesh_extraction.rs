@@ -22,7 +22,7 @@ use crate::core::camera::Camera;
 use crate::core::engine::Backend;
 use crate::core::mesh::{
     cameras_around_point, fuse_tsdf, fusion_depth, mesh_from_grid, rendered_depth_views,
-    GridLayout, MeshError, TriangleMesh, TsdfParams,
+    DepthPixels, GridLayout, MeshError, TriangleMesh, TsdfParams,
 };
 use crate::core::raster::{RasterError, RasterSettings};
 use crate::core::surfels::{sigmoid, Surfels};
@@ -118,13 +118,16 @@ pub fn orbit_cameras(surfels: &Surfels) -> Vec<Camera> {
 /// fuses on its own device ([`Backend::fuse_depth`], the gpu one) renders and fuses there and
 /// only the grid comes back; otherwise the views' depth maps are rendered with
 /// [`Backend::forward`] and fused on the host. Both fuse into the same [`GridLayout`] with the
-/// same [`TsdfParams::automatic`] (its depth limit depends on the cameras only).
+/// same [`TsdfParams::automatic`] (its depth limit depends on the cameras only), trusting the
+/// rendered `pixels` chosen ([`DepthPixels`]: all for GridMap's tracing mesh, the coherent ones
+/// for a deliverable).
 pub fn mesh_from_surfels(
     surfels: &Surfels,
     cameras: &[Camera],
     backend: &dyn Backend,
     settings: &RasterSettings,
     resolution: usize,
+    pixels: DepthPixels,
 ) -> Result<TriangleMesh, MeshingError> {
     let _span =
         tracing::info_span!("mesh_from_surfels", views = cameras.len(), resolution).entered();
@@ -132,7 +135,10 @@ pub fn mesh_from_surfels(
     if cameras.is_empty() {
         return Err(MeshingError::NoCameras);
     }
-    let params = TsdfParams::automatic(resolution, cameras, bounds);
+    let params = TsdfParams {
+        pixels,
+        ..TsdfParams::automatic(resolution, cameras, bounds)
+    };
     let grid = GridLayout::new(bounds, &params)?;
     let fused = match backend.fuse_depth(surfels, cameras, settings, &grid) {
         Some(fused) => fused?,
@@ -140,7 +146,12 @@ pub fn mesh_from_surfels(
             let mut maps = Vec::with_capacity(cameras.len());
             for camera in cameras {
                 let g = backend.forward(surfels, camera, settings)?.gbuffers;
-                let depth = fusion_depth(camera, &g.depth, &g.depth_sq, grid.truncation);
+                let depth = match pixels {
+                    DepthPixels::All => g.depth,
+                    DepthPixels::Coherent => {
+                        fusion_depth(camera, &g.depth, &g.depth_sq, grid.truncation)
+                    }
+                };
                 maps.push((depth, g.alpha));
             }
             fuse_tsdf(&rendered_depth_views(cameras, &maps), bounds, &params)?
@@ -169,6 +180,7 @@ pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMe
         &*backend,
         &model.raster_settings(),
         resolution,
+        DepthPixels::Coherent,
     )?;
     let closed = mesh.close_holes();
     if closed.holes > 0 {
@@ -205,8 +217,15 @@ mod tests {
         let cameras = orbit_cameras(&surfels);
         assert_eq!(cameras.len(), ORBIT_VIEWS);
         let backend = crate::core::raster::cpu::CpuBackend;
-        let mesh = mesh_from_surfels(&surfels, &cameras, &backend, &RasterSettings::default(), 48)
-            .unwrap();
+        let mesh = mesh_from_surfels(
+            &surfels,
+            &cameras,
+            &backend,
+            &RasterSettings::default(),
+            48,
+            DepthPixels::Coherent,
+        )
+        .unwrap();
         assert!(mesh.triangles.len() > 500);
         let centre = DVec3::new(0.2, -0.1, 0.3);
         let worst = mesh
@@ -242,9 +261,20 @@ mod tests {
         assert!(gpu
             .fuse_depth(&surfels, &cameras, &settings, &grid)
             .is_some());
-        let device = mesh_from_surfels(&surfels, &cameras, &gpu, &settings, resolution).unwrap();
+        let mesh = |backend: &dyn Backend| {
+            mesh_from_surfels(
+                &surfels,
+                &cameras,
+                backend,
+                &settings,
+                resolution,
+                DepthPixels::Coherent,
+            )
+            .unwrap()
+        };
+        let device = mesh(&gpu);
         let cpu = crate::core::raster::cpu::CpuBackend;
-        let host = mesh_from_surfels(&surfels, &cameras, &cpu, &settings, resolution).unwrap();
+        let host = mesh(&cpu);
         let forward = crate::core::mesh::chamfer_l1_with(&device, &host, 20_000, 1).unwrap();
         let backward = crate::core::mesh::chamfer_l1_with(&host, &device, 20_000, 2).unwrap();
         println!(
@@ -266,8 +296,9 @@ mod tests {
 
     /// A sparse patch (the bottom cap's surfels at opacity 0.3) lets the far wall through: its
     /// pixels reach α ≥ 0.5 only with the far wall's share, so their mean depth lies inside the
-    /// sphere. Fused as surface they would carve the interior and leave a sheet inside; as
-    /// unknown (their depths spread far more than the truncation) they leave the shell alone.
+    /// sphere. Fused as surface they carve the interior and leave a sheet inside; as unknown
+    /// (the coherent pixels only: their depths spread far more than the truncation) they leave
+    /// the shell alone.
     #[test]
     fn pixels_seen_through_a_sparse_patch_carve_no_interior_sheet() {
         let (centre, radius) = (DVec3::new(0.1, 0.0, -0.1), 0.8);
@@ -295,13 +326,18 @@ mod tests {
             bottom > 100,
             "{bottom} pixels mix the patch and the far wall"
         );
-        let mesh = mesh_from_surfels(&surfels, &cameras, &backend, &settings, 48).unwrap();
-        let deepest = mesh
-            .vertices
-            .iter()
-            .map(|v| radius - DVec3::from_array(*v).distance(centre))
-            .fold(0.0, f64::max);
-        assert!(deepest < 0.1, "a vertex lies {deepest} inside the shell");
+        let deepest = |pixels| {
+            let mesh =
+                mesh_from_surfels(&surfels, &cameras, &backend, &settings, 48, pixels).unwrap();
+            mesh.vertices
+                .iter()
+                .map(|v| radius - DVec3::from_array(*v).distance(centre))
+                .fold(0.0, f64::max)
+        };
+        let (coherent, all) = (deepest(DepthPixels::Coherent), deepest(DepthPixels::All));
+        assert!(coherent < 0.1, "a vertex lies {coherent} inside the shell");
+        // Trusting every pixel (GridMap's tracing mesh) leaves the sheet.
+        assert!(all > 0.25, "the deepest vertex lies only {all} inside");
     }
 
     #[test]

@@ -14,7 +14,7 @@ use crate::core::camera::Camera;
 use crate::core::envmap::{CubeMap, EnvMapError, MipChainSpec, PrefilterPlan, PreparedEnv};
 use crate::core::gridmap::GridMap;
 use crate::core::light::LightProbe;
-use crate::core::mesh::TriangleMesh;
+use crate::core::mesh::{DepthPixels, TriangleMesh};
 use crate::core::render::{RenderError, RenderedView, Scene};
 use crate::formats::image_io::{self, Image, ImageError};
 use crate::io::capture::Capture;
@@ -78,6 +78,7 @@ impl Reconstruction {
                 &*reconstruction.backend,
                 &model.raster_settings(),
                 GRIDMAP_MESH_RESOLUTION,
+                DepthPixels::All,
             )
             .inspect_err(|e| {
                 tracing::warn!("GridMap mesh extraction failed, rendering without GridMap: {e}")

@@ -48,6 +48,23 @@ pub struct TsdfParams {
     pub truncation_voxels: f64,
     /// Depths beyond this count as background.
     pub depth_max: f64,
+    /// Which rendered pixels vote (those a fusion renders itself: [`GridLayout::pixels`]).
+    pub pixels: DepthPixels,
+}
+
+/// Which opaque pixels of a rendered depth map vote in a fusion that renders its own depth
+/// (`pipeline::mesh_extraction`, the gpu backend's fusion).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DepthPixels {
+    /// Every opaque pixel, at its mean depth: GridMap's tracing mesh, for which a hole (a mirror
+    /// ray escaping, a probe seeing through) matters and a sheet inside the object, which no
+    /// probe or mirror ray reaches, does not.
+    #[default]
+    All,
+    /// Pixels whose composited depths spread less than the truncation or a few footprints
+    /// ([`fusion_depth`]); the others are unknown: the deliverable mesh, without the sheets that
+    /// pixels seen through a sparse patch carve inside the object.
+    Coherent,
 }
 
 /// Voxels added around the bounds so that a surface touching them still closes.
@@ -60,6 +77,7 @@ impl TsdfParams {
             resolution,
             truncation_voxels: 5.0,
             depth_max: f64::INFINITY,
+            pixels: DepthPixels::All,
         }
     }
 
@@ -344,6 +362,8 @@ pub struct GridLayout {
     pub truncation: f64,
     /// Depths beyond this count as background (may be +∞).
     pub depth_max: f64,
+    /// Which rendered pixels vote.
+    pub pixels: DepthPixels,
 }
 
 impl GridLayout {
@@ -383,6 +403,7 @@ impl GridLayout {
             voxel,
             truncation: params.truncation_voxels * voxel,
             depth_max: params.depth_max,
+            pixels: params.pixels,
         })
     }
 

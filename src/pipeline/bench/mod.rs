@@ -24,6 +24,7 @@ use crate::core::camera::Camera;
 use crate::core::engine::Backend;
 use crate::core::envmap::{EnvMapError, PreparedEnv};
 use crate::core::gridmap::{GridMap, GridMapError};
+use crate::core::mesh::DepthPixels;
 use crate::core::raster::{RasterError, RasterSettings, StageTime};
 use crate::core::surfels::{logit, Surfels};
 use crate::gpu::GpuBackend;
@@ -189,6 +190,7 @@ pub fn bench_gridmap(model: &Model, repeats: usize) -> Result<GridMapTiming, Ben
         &*backend,
         &model.raster_settings(),
         GRIDMAP_MESH_RESOLUTION,
+        DepthPixels::All,
     )?;
     let mesh_seconds = start.elapsed().as_secs_f64();
     let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;

@@ -48,7 +48,7 @@ use crate::core::events::{Stage, TrainEvent};
 use crate::core::gridmap::GridMap;
 use crate::core::light::LightProbe;
 use crate::core::loss::LossWeights;
-use crate::core::mesh::TriangleMesh;
+use crate::core::mesh::{DepthPixels, TriangleMesh};
 use crate::core::optim::{
     Adam, AdamConfig, LearningRates, OptimError, ENVMAP_GROUP, POLARIZER_GROUP,
 };
@@ -884,6 +884,7 @@ impl Run<'_> {
                 &**self.backend,
                 &self.settings,
                 GRIDMAP_MESH_RESOLUTION,
+                DepthPixels::All,
             ) {
                 Ok(mesh) => occlusion.mesh = Some(mesh),
                 Err(e) => {

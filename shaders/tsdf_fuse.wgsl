@@ -10,9 +10,9 @@
 // `fuse_view` adds the view's vote into every voxel's running sum and count (`BlockFrame::fuse`
 // voxel by voxel): the voxel centre is projected; outside the image, or behind the camera, no
 // vote. The four pixels around the projection (clamped at the last row and column) decide: any
-// unknown → no vote; all background → +1 (free space); all surface with a depth spread ≤ truncation → bilinear depth,
-// sdf = depth − z, no vote when sdf < −truncation, else min(sdf / truncation, 1); any other mix →
-// no vote. One thread per voxel (x fastest), one dispatch per view: each voxel has one thread per
+// unknown → no vote; all background → +1 (free space); all surface with a depth spread ≤
+// truncation → bilinear depth, sdf = depth − z, no vote when sdf < −truncation, else
+// min(sdf / truncation, 1); any other mix → no vote. One thread per voxel (x fastest), one dispatch per view: each voxel has one thread per
 // dispatch and dispatches run in order, so the sums need no atomics, and only one view's depth
 // map is on the device at a time. 256-thread workgroups on a 2-D grid (`linear_index`).
 

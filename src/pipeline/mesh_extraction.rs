@@ -1,8 +1,8 @@
 //! Triangle mesh of a set of surfels (METHOD.md §8): render α-normalized depth and opacity from a set
 //! of cameras (the training cameras), fuse them into a TSDF over the surfels' robust extent
 //! ([`TsdfParams::automatic`]: 5-voxel truncation, depth limited to the far side of the bounds;
-//! pixels whose depths spread more than the truncation and a few pixels give no vote,
-//! [`fusion_depth`]),
+//! a deliverable leaves out the pixels whose depths spread beyond the truncation and a few
+//! footprints, [`DepthPixels::Coherent`]),
 //! run marching cubes and keep the largest component (a model's deliverable mesh also has its holes
 //! closed). Used by `phygap mesh`, the export, the evaluation's Chamfer distance and GridMap
 //! (training and rendering).

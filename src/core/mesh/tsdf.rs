@@ -716,8 +716,9 @@ pub fn sphere_depth_maps(cameras: &[Camera], centre: DVec3, radius: f64) -> Vec<
 }
 
 /// Depth spread, in pixel footprints at the pixel's depth, that one surface seen at pixel
-/// resolution may have (a tilted surface, overlapping surfels): about the 95th percentile of the
-/// spreads of trained models' pixels (1.1–1.5 footprints at the median).
+/// resolution may have (a tilted surface, overlapping surfels): trained models' pixels spread
+/// 1.1–1.5 footprints at the median, 3.0–4.6 at the 90th percentile, 4.0–6.1 at the 95th (the
+/// default models of the shared captures and the creature; the tail holds the mixed pixels).
 pub const SURFACE_SPREAD_FOOTPRINTS: f64 = 4.0;
 
 /// A rendered depth map of `camera` prepared for fusion: the α-normalized `depth`, NaN

@@ -317,7 +317,7 @@ mod tests {
             .flat_map(|g| {
                 (0..g.alpha.len())
                     .filter(|&p| g.alpha[p] >= 0.5)
-                    .map(|p| (g.depth_sq[p] - g.depth[p] * g.depth[p]).max(0.0).sqrt())
+                    .map(|p| crate::core::mesh::depth_spread(g.depth[p], g.depth_sq[p]))
                     .collect::<Vec<_>>()
             })
             .filter(|&spread| spread > 0.2)

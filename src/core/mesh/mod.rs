@@ -26,9 +26,9 @@ pub use marching_cubes::{marching_cubes, ScalarGrid};
 #[cfg(test)]
 pub(crate) use tsdf::reference as tsdf_reference;
 pub use tsdf::{
-    cameras_around, cameras_around_point, extract_mesh, fuse_tsdf, fusion_depth, mesh_from_grid,
-    rendered_depth_views, sphere_depth_maps, DepthPixels, DepthView, GridLayout, TsdfParams,
-    MARGIN_VOXELS, SURFACE_SPREAD_FOOTPRINTS,
+    cameras_around, cameras_around_point, depth_spread, extract_mesh, fuse_tsdf, fusion_depth,
+    mesh_from_grid, rendered_depth_views, sphere_depth_maps, DepthPixels, DepthView, GridLayout,
+    TsdfParams, MARGIN_VOXELS, SURFACE_SPREAD_FOOTPRINTS,
 };
 
 /// Errors of mesh input/output, extraction and metrics.

@@ -721,6 +721,12 @@ pub fn sphere_depth_maps(cameras: &[Camera], centre: DVec3, radius: f64) -> Vec<
 /// default models of the shared captures and the creature; the tail holds the mixed pixels).
 pub const SURFACE_SPREAD_FOOTPRINTS: f64 = 4.0;
 
+/// Standard deviation of the depths composited into a pixel, from its α-normalized mean `depth`
+/// and second moment `depth_sq` (0 where rounding makes the variance negative).
+pub fn depth_spread(depth: f64, depth_sq: f64) -> f64 {
+    (depth_sq - depth * depth).max(0.0).sqrt()
+}
+
 /// A rendered depth map of `camera` prepared for fusion: the α-normalized `depth`, NaN
 /// (unknown) where the surfaces composited into a pixel spread along its ray (their standard
 /// deviation, from the α-normalized second moment `depth_sq`) by more than `truncation` and more
@@ -734,8 +740,7 @@ pub fn fusion_depth(camera: &Camera, depth: &[f64], depth_sq: &[f64], truncation
         .iter()
         .zip(depth_sq)
         .map(|(&d, &d2)| {
-            let spread = (d2 - d * d).max(0.0).sqrt();
-            if spread > truncation.max(per_depth * d) {
+            if depth_spread(d, d2) > truncation.max(per_depth * d) {
                 f64::NAN
             } else {
                 d

@@ -411,8 +411,9 @@ fn relative_l2(a: &EnvGrad, b: &EnvGrad) -> f64 {
 /// GridMap over two spheres, seen so that part of sphere A's mirror rays hit sphere B, with the
 /// box's anchors and, on smaller spheres, the whole lattice's 64: the device's occlusion test,
 /// anchor weights and blended probe lookups against the f64 code. A mirror ray that grazes a
-/// triangle edge may be decided differently in f32, so up to 1% of the pixels may differ; every other pixel agrees to the tolerances of the global light, and the
-/// light's gradient (escaping rays only) to 1% in norm.
+/// triangle edge may be decided differently in f32, so up to 1% of the pixels may differ; every
+/// other pixel agrees to the tolerances of the global light, and the light's gradient (escaping
+/// rays only) to 1% in norm.
 #[test]
 fn gridmap_shading_matches_cpu() {
     use phygap::core::gridmap::{AnchorPlacement, GridMap};

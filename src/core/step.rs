@@ -7,6 +7,8 @@
 use std::borrow::Cow;
 use std::collections::BTreeMap;
 
+use rayon::prelude::*;
+
 use crate::core::events::Stage;
 use crate::core::loss::LossWeights;
 
@@ -45,13 +47,16 @@ pub struct ViewTarget<'a> {
 impl ViewTarget<'_> {
     /// The photometric or Stokes `samples` as the run fits them: times [`Self::gain`], in f64.
     pub fn fitted(&self, samples: &[f32]) -> Vec<f64> {
-        samples.iter().map(|&v| f64::from(v * self.gain)).collect()
+        samples
+            .par_iter()
+            .map(|&v| f64::from(v * self.gain))
+            .collect()
     }
 }
 
 /// `samples` in f64, as the host step's losses take them.
 pub fn widen(samples: &[f32]) -> Vec<f64> {
-    samples.iter().map(|&v| f64::from(v)).collect()
+    samples.par_iter().map(|&v| f64::from(v)).collect()
 }
 
 /// What a step computes for one view in one stage, shared by [`run`] and the device trainer.

@@ -221,12 +221,10 @@ pub fn photometric(
 ) -> LossValue {
     let l1_term = l1(pred, target, None);
     let ssim_term = ssim_in(precision, pred, target, width, height, channels);
-    let grad = l1_term
-        .grad
-        .iter()
+    let mut grad = l1_term.grad;
+    grad.par_iter_mut()
         .zip(&ssim_term.grad)
-        .map(|(gl, gs)| (1.0 - lambda_ssim) * gl - lambda_ssim * gs)
-        .collect();
+        .for_each(|(g, gs)| *g = (1.0 - lambda_ssim) * *g - lambda_ssim * gs);
     LossValue {
         value: (1.0 - lambda_ssim) * l1_term.value + lambda_ssim * (1.0 - ssim_term.value),
         grad,
@@ -250,6 +248,69 @@ pub fn stokes_l1(
         value: s1.value + s2.value,
         grad_s1: s1.grad,
         grad_s2: s2.grad,
+    }
+}
+
+/// [`stokes_l1`] of the α-premultiplied prediction (`α · S1`, `α · S2`: one RGB value per pixel
+/// times the pixel's `alpha`) against targets held as the capture's f32 samples, each times
+/// `gain` and widened to f64 (as [`crate::core::step::ViewTarget::fitted`] does): the same value
+/// and gradients bit for bit, in one parallel pass without the premultiplied and widened copies.
+///
+/// # Panics
+/// If the lengths differ (three targets per pixel, one `alpha` per pixel).
+pub fn stokes_l1_premultiplied(
+    (s1, s2): (&[DVec3], &[DVec3]),
+    alpha: &[f64],
+    (t1, t2): (&[f32], &[f32]),
+    gain: f32,
+) -> StokesLossValue {
+    let pixels = alpha.len();
+    assert!(
+        s1.len() == pixels
+            && s2.len() == pixels
+            && t1.len() == 3 * pixels
+            && t2.len() == 3 * pixels,
+        "stokes_l1_premultiplied: S1, S2, alpha and the targets do not match"
+    );
+    let n = 3 * pixels;
+    let inv_n = 1.0 / n.max(1) as f64;
+    // |p − t| and the subgradient of element i, exactly as `l1` computes them.
+    let term = |pred: &[DVec3], target: &[f32], i: usize, g: &mut f64| {
+        let d = pred[i / 3][i % 3] * alpha[i / 3] - f64::from(target[i] * gain);
+        let sign = if d > 0.0 {
+            1.0
+        } else if d < 0.0 {
+            -1.0
+        } else {
+            0.0
+        };
+        *g = sign * inv_n;
+        d.abs()
+    };
+    let mut grad_s1 = vec![0.0; n];
+    let mut grad_s2 = vec![0.0; n];
+    // Chunks of `CHUNK` elements summed in order, as `l1` sums each component.
+    let sums: Vec<(f64, f64)> = (grad_s1.par_chunks_mut(CHUNK), grad_s2.par_chunks_mut(CHUNK))
+        .into_par_iter()
+        .enumerate()
+        .map(|(chunk, (g1, g2))| {
+            let first = chunk * CHUNK;
+            let (mut sum1, mut sum2) = (0.0, 0.0);
+            for (j, g) in g1.iter_mut().enumerate() {
+                sum1 += term(s1, t1, first + j, g);
+            }
+            for (j, g) in g2.iter_mut().enumerate() {
+                sum2 += term(s2, t2, first + j, g);
+            }
+            (sum1, sum2)
+        })
+        .collect();
+    let value1: f64 = sums.iter().map(|s| s.0).sum();
+    let value2: f64 = sums.iter().map(|s| s.1).sum();
+    StokesLossValue {
+        value: value1 * inv_n + value2 * inv_n,
+        grad_s1,
+        grad_s2,
     }
 }
 

@@ -353,12 +353,15 @@ fn ssim_cropped<T: Sample>(
     let outside = (width * height - crop.width * crop.height) * channels;
     let mut grad = vec![0.0; pred.len()];
     let row = crop.width * channels;
-    for (y, values) in grad_crop.chunks_exact(row).enumerate() {
-        let start = ((crop.y0 + y) * width + crop.x0) * channels;
-        for (g, v) in grad[start..start + row].iter_mut().zip(values) {
-            *g = v.widen();
-        }
-    }
+    grad.par_chunks_mut(width * channels)
+        .skip(crop.y0)
+        .zip(grad_crop.par_chunks_exact(row))
+        .for_each(|(image_row, values)| {
+            let start = crop.x0 * channels;
+            for (g, v) in image_row[start..start + row].iter_mut().zip(values) {
+                *g = v.widen();
+            }
+        });
     LossValue {
         value: (sum + outside as f64) * inv_n,
         grad,
@@ -388,19 +391,21 @@ impl Crop {
         height: usize,
         channels: usize,
     ) -> Option<Crop> {
-        let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
-        for y in 0..height {
-            let row = (y * width * channels)..((y + 1) * width * channels);
-            let nonzero = |j: &usize| pred[row.start + j] != 0.0 || target[row.start + j] != 0.0;
-            let Some(first) = (0..row.len()).find(nonzero) else {
-                continue;
-            };
-            let last = (0..row.len()).rev().find(nonzero).unwrap_or(first);
-            x0 = x0.min(first / channels);
-            x1 = x1.max(last / channels + 1);
-            y0 = y0.min(y);
-            y1 = y + 1;
-        }
+        // Per row with a nonzero value: its first and last such pixel; then their extent.
+        let (x0, y0, x1, y1) = (0..height)
+            .into_par_iter()
+            .filter_map(|y| {
+                let row = (y * width * channels)..((y + 1) * width * channels);
+                let nonzero =
+                    |j: &usize| pred[row.start + j] != 0.0 || target[row.start + j] != 0.0;
+                let first = (0..row.len()).find(nonzero)?;
+                let last = (0..row.len()).rev().find(nonzero).unwrap_or(first);
+                Some((first / channels, y, last / channels + 1, y + 1))
+            })
+            .reduce(
+                || (usize::MAX, usize::MAX, 0, 0),
+                |a, b| (a.0.min(b.0), a.1.min(b.1), a.2.max(b.2), a.3.max(b.3)),
+            );
         (x0 < x1).then(|| {
             let (x0, y0) = (
                 x0.saturating_sub(CROP_MARGIN),
@@ -422,13 +427,14 @@ impl Crop {
     /// The crop's pixels of an interleaved `width`-wide image, in `T`.
     fn cut<T: Sample>(&self, image: &[f64], width: usize, channels: usize) -> Vec<T> {
         let row = self.width * channels;
-        (self.y0..self.y0 + self.height)
-            .flat_map(|y| {
-                let start = (y * width + self.x0) * channels;
-                &image[start..start + row]
-            })
-            .map(|&v| T::of(v))
-            .collect()
+        let mut out = vec![T::ZERO; row * self.height];
+        out.par_chunks_mut(row).enumerate().for_each(|(y, out)| {
+            let start = ((self.y0 + y) * width + self.x0) * channels;
+            for (o, &v) in out.iter_mut().zip(&image[start..start + row]) {
+                *o = T::of(v);
+            }
+        });
+        out
     }
 }
 

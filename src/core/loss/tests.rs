@@ -373,6 +373,53 @@ fn depth_distortion_gradients_match_finite_differences() {
     }
 }
 
+/// The bits of each value, so that two computations can be compared exactly.
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+#[test]
+fn the_premultiplied_stokes_loss_equals_stokes_l1_of_the_premultiplied_images() {
+    // Larger than one chunk, so the chunked sums are exercised; some targets equal to the
+    // prediction (subgradient 0), α of 0 and 1.
+    let pixels = CHUNK + 517;
+    for seed in SEEDS {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let rgb = |rng: &mut ChaCha8Rng| -> Vec<DVec3> {
+            (0..pixels)
+                .map(|_| DVec3::from_slice(&random_vec(rng, 3, -0.4, 0.4)))
+                .collect()
+        };
+        let (s1, s2) = (rgb(&mut rng), rgb(&mut rng));
+        let mut alpha = random_vec(&mut rng, pixels, 0.0, 1.0);
+        alpha[0] = 0.0;
+        alpha[1] = 1.0;
+        let samples = |rng: &mut ChaCha8Rng| -> Vec<f32> {
+            (0..3 * pixels)
+                .map(|_| rng.random_range(-0.4f32..0.4))
+                .collect()
+        };
+        let (mut t1, t2) = (samples(&mut rng), samples(&mut rng));
+        let gain = 1.25f32;
+        t1[3] = 0.0; // pixel 1 (α = 1): prediction equal to the target below
+        let mut s1 = s1;
+        s1[1].x = f64::from(t1[3] * gain);
+        let premul = |v: &[DVec3]| -> Vec<f64> {
+            v.iter()
+                .zip(&alpha)
+                .flat_map(|(x, &a)| (*x * a).to_array())
+                .collect()
+        };
+        let fitted = |t: &[f32]| -> Vec<f64> { t.iter().map(|&v| f64::from(v * gain)).collect() };
+        let reference = stokes_l1(&premul(&s1), &fitted(&t1), &premul(&s2), &fitted(&t2), None);
+        let fused = stokes_l1_premultiplied((&s1, &s2), &alpha, (&t1, &t2), gain);
+        assert_eq!(fused.value.to_bits(), reference.value.to_bits());
+        assert_eq!(bits(&fused.grad_s1), bits(&reference.grad_s1));
+        assert_eq!(bits(&fused.grad_s2), bits(&reference.grad_s2));
+        assert_eq!(fused.grad_s1[3], 0.0);
+    }
+}
+
 #[test]
 fn normal_smoothness_of_a_hand_example() {
     // 2×1 image: one horizontal pair, normals (0,0,1) → (0,1,0), so ‖Δ‖ = √2.

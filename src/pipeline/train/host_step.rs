@@ -224,17 +224,14 @@ fn image_losses(
     let mut grad_s12 = None;
     if plan.stokes_loss || plan.extra_l1 {
         if let (Some((t1, t2)), Some(Shaded { image: s, .. })) = (&target.stokes, shaded) {
-            let premul = |v: &[DVec3]| -> Vec<f64> {
-                v.iter()
-                    .zip(&g.alpha)
-                    .flat_map(|(x, &a)| (*x * a).to_array())
-                    .collect()
-            };
-            let (t1, t2) = (target.fitted(t1), target.fitted(t2));
-            let stokes = loss::stokes_l1(&premul(&s.s1), &t1, &premul(&s.s2), &t2, None);
+            let mut stokes =
+                loss::stokes_l1_premultiplied((&s.s1, &s.s2), &g.alpha, (t1, t2), target.gain);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * stokes.value);
-            let scale = |v: Vec<f64>| v.into_iter().map(|x| x * weights.lambda_stokes).collect();
-            grad_s12 = Some((scale(stokes.grad_s1), scale(stokes.grad_s2)));
+            for grad in [&mut stokes.grad_s1, &mut stokes.grad_s2] {
+                grad.par_iter_mut()
+                    .for_each(|x| *x *= weights.lambda_stokes);
+            }
+            grad_s12 = Some((stokes.grad_s1, stokes.grad_s2));
         } else {
             let extra = loss::l1(&pred, photometric_target, None);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * extra.value);

@@ -23,6 +23,9 @@ use super::{activate, activate_derivative, CubeMap, EnvMapError};
 /// for 56 maps) and one source block's rows (64 × 1.3 KiB) stay in the core's L2 cache.
 const OUTPUTS_PER_TASK: usize = 16;
 
+/// Elements per rayon task of [`EnvGrad::add`].
+const ADD_MIN_LEN: usize = 4096;
+
 /// Output texels that [`Convolution::apply`] computes together, one SIMD lane each.
 const OUTPUT_GROUP: usize = 8;
 
@@ -655,7 +658,8 @@ impl EnvGrad {
         }
     }
 
-    /// Adds another accumulator of the same shape (the reduction of per-thread accumulators).
+    /// Adds another accumulator of the same shape (the reduction of per-thread accumulators),
+    /// element by element in parallel: each sum is the same whatever the thread count.
     pub fn add(&mut self, other: &EnvGrad) {
         let pairs = self
             .levels
@@ -663,7 +667,10 @@ impl EnvGrad {
             .zip(&other.levels)
             .chain(self.irradiance.iter_mut().zip(&other.irradiance));
         for (a, b) in pairs {
-            a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
+            a.par_iter_mut()
+                .zip(b)
+                .with_min_len(ADD_MIN_LEN)
+                .for_each(|(x, y)| *x += y);
         }
     }
 }

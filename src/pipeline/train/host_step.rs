@@ -52,9 +52,10 @@ pub struct StepInputs<'a> {
 }
 
 fn add_into(dst: &mut [f64], src: &[f64], scale: f64) {
-    for (d, s) in dst.iter_mut().zip(src) {
-        *d += scale * s;
-    }
+    dst.par_iter_mut()
+        .zip(src)
+        .with_min_len(CHUNK)
+        .for_each(|(d, s)| *d += scale * s);
 }
 
 /// Runs forward and backward for `target` seen by `camera`, shading with `light` (the global

@@ -169,6 +169,17 @@ fn chunked_sum(grad: &mut [f64], term: impl Fn(usize, &mut f64) -> f64 + Sync) -
     })
 }
 
+/// The subgradient of |d|: its sign, and 0 at d = 0 (`f64::signum(0.0)` is 1).
+fn abs_subgradient(d: f64) -> f64 {
+    if d > 0.0 {
+        1.0
+    } else if d < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
 /// Mean absolute error `Σ w·|p − t| / n` over all `n` elements, where the optional `weight_mask`
 /// holds one weight per element or one per pixel (broadcast over channels). The divisor is the
 /// element count, not the weight sum, as `(|p − t| · m).mean()` in the reference code. The
@@ -188,15 +199,7 @@ pub fn l1(pred: &[f64], target: &[f64], weight_mask: Option<&[f64]>) -> LossValu
     let value = chunked_sum(&mut grad, |i, g| {
         let w = element_weight(weight_mask, i, channels);
         let d = pred[i] - target[i];
-        // f64::signum(0.0) is 1, so the subgradient 0 at equality is explicit.
-        let sign = if d > 0.0 {
-            1.0
-        } else if d < 0.0 {
-            -1.0
-        } else {
-            0.0
-        };
-        *g = w * sign * inv_n;
+        *g = w * abs_subgradient(d) * inv_n;
         w * d.abs()
     });
     LossValue {
@@ -277,14 +280,7 @@ pub fn stokes_l1_premultiplied(
     // |p − t| and the subgradient of element i, exactly as `l1` computes them.
     let term = |pred: &[DVec3], target: &[f32], i: usize, g: &mut f64| {
         let d = pred[i / 3][i % 3] * alpha[i / 3] - f64::from(target[i] * gain);
-        let sign = if d > 0.0 {
-            1.0
-        } else if d < 0.0 {
-            -1.0
-        } else {
-            0.0
-        };
-        *g = sign * inv_n;
+        *g = abs_subgradient(d) * inv_n;
         d.abs()
     };
     let mut grad_s1 = vec![0.0; n];

@@ -6,10 +6,10 @@
 //! gradients by the weights of [`LossWeights`] and sums them.
 //!
 //! Threading: [`ssim()`] (and so [`photometric`]) uses rayon over channels and rows; [`l1`],
-//! [`mask_mse`], [`depth_normal_consistency`], [`depth_distortion`] and [`aolp_normal`] over fixed
-//! chunks of [`CHUNK`] elements whose partial sums are added in chunk order, so every value is the
-//! same whatever the thread count; [`normal_smoothness`] (pairs of neighbours) is a
-//! single-threaded pass.
+//! [`stokes_l1_premultiplied`], [`mask_mse`], [`depth_normal_consistency`], [`depth_distortion`]
+//! and [`aolp_normal`] over fixed chunks of [`CHUNK`] elements whose partial sums are added in
+//! chunk order, so every value is the same whatever the thread count; [`normal_smoothness`]
+//! (pairs of neighbours) is a single-threaded pass.
 
 pub mod ssim;
 

@@ -390,7 +390,7 @@ fn the_premultiplied_stokes_loss_equals_stokes_l1_of_the_premultiplied_images() 
                 .map(|_| DVec3::from_slice(&random_vec(rng, 3, -0.4, 0.4)))
                 .collect()
         };
-        let (s1, s2) = (rgb(&mut rng), rgb(&mut rng));
+        let (mut s1, s2) = (rgb(&mut rng), rgb(&mut rng));
         let mut alpha = random_vec(&mut rng, pixels, 0.0, 1.0);
         alpha[0] = 0.0;
         alpha[1] = 1.0;
@@ -402,7 +402,6 @@ fn the_premultiplied_stokes_loss_equals_stokes_l1_of_the_premultiplied_images() 
         let (mut t1, t2) = (samples(&mut rng), samples(&mut rng));
         let gain = 1.25f32;
         t1[3] = 0.0; // pixel 1 (α = 1): prediction equal to the target below
-        let mut s1 = s1;
         s1[1].x = f64::from(t1[3] * gain);
         let premul = |v: &[DVec3]| -> Vec<f64> {
             v.iter()

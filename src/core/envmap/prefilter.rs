@@ -258,7 +258,9 @@ impl Convolution {
     /// texel is read once for the group and the kernel is evaluated for all lanes at once, which
     /// vectorizes. A lane whose block is culled or whose texel is beyond the cutoff adds an exact
     /// zero (the sources are finite), so each output is the same sum in the same order as one
-    /// output at a time (the test `grouped_apply_equals_one_output_at_a_time_bit_for_bit`).
+    /// output at a time (the test `grouped_apply_equals_one_output_at_a_time_bit_for_bit`). For the
+    /// same reason a narrow lobe skips the texels beyond every lane's cutoff: adding a zero leaves
+    /// a sum that started at +0 unchanged.
     fn apply(&self, grid: &CubeGrid, src: &[f64], weight: Option<&[f64]>) -> Vec<f64> {
         match self.kernel {
             Kernel::Ggx { alpha2 } => self.apply_with(grid, src, weight, |c| ggx_lobe(alpha2, c)),
@@ -284,6 +286,7 @@ impl Convolution {
             .for_each(|(group, out)| {
                 let group = OutputGroup {
                     conv: self,
+                    narrow: self.cos_cut > 0.0,
                     grid,
                     src,
                     weight,
@@ -427,6 +430,9 @@ impl Convolution {
 /// one lane per iteration: the shape the vectorizer turns into one vector instruction).
 struct OutputGroup<'a, K> {
     conv: &'a Convolution,
+    /// The lobe is narrower than a hemisphere (`cos_cut > 0`): texels outside every lane's lobe
+    /// are skipped.
+    narrow: bool,
     grid: &'a CubeGrid,
     src: &'a [f64],
     weight: Option<&'a [f64]>,
@@ -466,19 +472,25 @@ impl<K: Fn(f64) -> f64> OutputGroup<'_, K> {
             let dirs = &grid.block_dirs[block.start..block.end];
             for (&t, d) in texels.iter().zip(dirs) {
                 let t = t as usize;
-                let texel_weight = self.weight.map_or(1.0, |w| w[t]);
                 // Lane loops of plain arithmetic, which LLVM turns into vector instructions.
-                let mut w = [0.0f64; OUTPUT_GROUP];
+                let mut c = [0.0f64; OUTPUT_GROUP];
+                let mut inside = [false; OUTPUT_GROUP];
                 for k in 0..OUTPUT_GROUP {
                     // The same products and sums as `DVec3::dot`.
-                    let c = nx[k] * d.x + ny[k] * d.y + nz[k] * d.z;
-                    let value = (self.kernel)(c) * texel_weight;
+                    c[k] = nx[k] * d.x + ny[k] * d.y + nz[k] * d.z;
                     // `&`, not `&&`: no branch in the lane loop.
-                    w[k] = if live[k] & (c > conv.cos_cut) {
-                        value
-                    } else {
-                        0.0
-                    };
+                    inside[k] = live[k] & (c[k] > conv.cos_cut);
+                }
+                // A texel outside every lane's lobe adds exact zeros: a narrow lobe skips it (most
+                // of the texels of its live blocks are outside it), a wide one does not test.
+                if self.narrow && !inside.contains(&true) {
+                    continue;
+                }
+                let texel_weight = self.weight.map_or(1.0, |w| w[t]);
+                let mut w = [0.0f64; OUTPUT_GROUP];
+                for k in 0..OUTPUT_GROUP {
+                    let value = (self.kernel)(c[k]) * texel_weight;
+                    w[k] = if inside[k] { value } else { 0.0 };
                 }
                 let v = [self.src[t * 3], self.src[t * 3 + 1], self.src[t * 3 + 2]];
                 for channel in 0..3 {

@@ -286,7 +286,6 @@ impl Convolution {
             .for_each(|(group, out)| {
                 let group = OutputGroup {
                     conv: self,
-                    narrow: self.cos_cut > 0.0,
                     grid,
                     src,
                     weight,
@@ -430,9 +429,6 @@ impl Convolution {
 /// one lane per iteration: the shape the vectorizer turns into one vector instruction).
 struct OutputGroup<'a, K> {
     conv: &'a Convolution,
-    /// The lobe is narrower than a hemisphere (`cos_cut > 0`): texels outside every lane's lobe
-    /// are skipped.
-    narrow: bool,
     grid: &'a CubeGrid,
     src: &'a [f64],
     weight: Option<&'a [f64]>,
@@ -459,6 +455,8 @@ impl<K: Fn(f64) -> f64> OutputGroup<'_, K> {
         let ny: [f64; OUTPUT_GROUP] = std::array::from_fn(|k| dir(k).y);
         let nz: [f64; OUTPUT_GROUP] = std::array::from_fn(|k| dir(k).z);
         let mut acc = [[0.0f64; OUTPUT_GROUP]; 3];
+        // A lobe narrower than a hemisphere skips the texels outside every lane's lobe.
+        let narrow = conv.cos_cut > 0.0;
         for (block, &threshold) in grid.blocks.iter().zip(&conv.thresholds) {
             let centre = block.center;
             let mut live = [false; OUTPUT_GROUP];
@@ -483,7 +481,7 @@ impl<K: Fn(f64) -> f64> OutputGroup<'_, K> {
                 }
                 // A texel outside every lane's lobe adds exact zeros: a narrow lobe skips it (most
                 // of the texels of its live blocks are outside it), a wide one does not test.
-                if self.narrow && !inside.contains(&true) {
+                if narrow && !inside.contains(&true) {
                     continue;
                 }
                 let texel_weight = self.weight.map_or(1.0, |w| w[t]);

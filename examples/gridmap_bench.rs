@@ -85,7 +85,11 @@ fn main() -> anyhow::Result<()> {
         );
     }
     let mesh = mesh_extraction::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)?;
-    let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
+    let plan = prefilter_plan(
+        model.envmap.size,
+        model.config.fresnel_irradiance,
+        model.config.mip_levels_per_size as usize,
+    )?;
     let env = PreparedEnv::new(&model.envmap, plan)?;
     let cpu_before = cpu_seconds();
     let (t_build, grid) = best(repeats, || {

@@ -438,13 +438,17 @@ fn gridmap_shading_matches_cpu() {
             1.6,
         ),
     ];
-    for (seed, fresnel, scene) in [(21u64, false, 0), (22, true, 0), (23, true, 1)] {
+    // The last with two roughness levels per size (three 8² levels in a row).
+    for (seed, fresnel, scene, levels_per_size) in
+        [(21u64, false, 0, 1), (22, true, 0, 1), (23, true, 1, 2)]
+    {
         let ((mesh, surfels), placement, centre_x, distance) = &scenes[scene];
         let (placement, centre_x, distance) = (*placement, *centre_x, *distance);
         let bvh = Bvh::build(mesh);
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let cube = random_cube(&mut rng, 16);
-        let env = PreparedEnv::new(&cube, prefilter_plan(16, fresnel).unwrap()).unwrap();
+        let env =
+            PreparedEnv::new(&cube, prefilter_plan(16, fresnel, levels_per_size).unwrap()).unwrap();
         let grid = GridMap::build(mesh, surfels, &cube, env, placement).unwrap();
         assert_eq!(
             grid.anchors().len(),

@@ -380,7 +380,7 @@ fn a_device_step_under_gridmap_matches_the_host_step() {
     let mut scene = scene(3);
     let mut rng = ChaCha8Rng::seed_from_u64(4);
     let cube = random_cube(&mut rng, 16);
-    scene.env = PreparedEnv::new(&cube, prefilter_plan(16, false).unwrap()).unwrap();
+    scene.env = PreparedEnv::new(&cube, prefilter_plan(16, false, 1).unwrap()).unwrap();
     scene.camera = Camera::look_at(
         40,
         36,
@@ -696,7 +696,8 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
 /// The environment prefilter on the device (`set_envmap`: the raw cube map goes up and is
 /// prefiltered there) lights a step as the host's `PreparedEnv` does, and its transpose
 /// (`take_envmap_grad`) gives `PreparedEnv::backward` of the light's gradient, for the default
-/// chain (D = 64) with Fresnel-weighted irradiance (five irradiance kernels) and for a small one.
+/// chain (D = 64) with Fresnel-weighted irradiance (five irradiance kernels), for a small one,
+/// and for the small one with two roughness levels per size (three levels of one size in a row).
 #[test]
 fn the_device_prefilter_matches_the_host_prefilter() {
     use phygap::pipeline::reconstruction::prefilter_plan;
@@ -708,9 +709,9 @@ fn the_device_prefilter_matches_the_host_prefilter() {
     let target = target(&scene.camera, "full", &mut rng);
     let angles = BTreeMap::new();
     let plan_of_step = StepPlan::new(&target, Stage::Polar, &angles, &scene.weights);
-    for (size, fresnel) in [(64, true), (16, false)] {
+    for (size, fresnel, levels_per_size) in [(64, true, 1), (16, false, 1), (16, false, 2)] {
         let cube = random_cube(&mut rng, size);
-        let plan = prefilter_plan(size, fresnel).unwrap();
+        let plan = prefilter_plan(size, fresnel, levels_per_size).unwrap();
         scene.env = PreparedEnv::new(&cube, plan.clone()).unwrap();
         let lit_step = |device_prefilter: bool| {
             let mut t = trainer(&gpu, &scene, &target);

@@ -76,6 +76,11 @@ pub const MAX_SURFELS: u32 = 10_000_000;
 /// over several pixels and only make tiles longer.
 pub const MAX_LOWPASS_SIGMA_PX: f64 = 4.0;
 
+/// Most roughness levels per resolution of the specular mip chain: each level is a convolution
+/// redone every `envmap_prefilter_interval` steps, and 3 already brings the shading no closer to
+/// Mitsuba than 2 (README, *A finer roughness chain*).
+pub const MAX_MIP_LEVELS_PER_SIZE: u8 = 4;
+
 /// Every setting of a training run; also the training flags of the command line (each field a
 /// `--long-name` flag with the default as its default), so the CLI, the config file and the
 /// service's job `config` are one type.
@@ -243,6 +248,12 @@ pub struct TrainConfig {
     /// Cube-map face size of the learned environment.
     #[arg(long, default_value_t = TrainConfig::default().envmap_resolution)]
     pub envmap_resolution: u32,
+    /// Roughness levels per resolution of the prefiltered specular mip chain. 1 is METHOD.md
+    /// §4's chain (roughness 0.08, 0.5 and 1 at D = 64); 2 adds levels at 0.22 and 0.36, so that a
+    /// surface of intermediate roughness does not blend a near-mirror level into its highlight
+    /// (README, *A finer roughness chain*). A model renders with the chain it was trained with.
+    #[arg(long, default_value_t = TrainConfig::default().mip_levels_per_size)]
+    pub mip_levels_per_size: u8,
     /// Steps between rebuilds of the environment's prefiltered mip chain and irradiance map while
     /// the map is being learned (the map moves little per step; a rebuild costs ~0.1 s at D = 64).
     #[arg(long, default_value_t = TrainConfig::default().envmap_prefilter_interval)]
@@ -309,6 +320,9 @@ impl Default for TrainConfig {
             lambda_distortion: 0.0,
             lambda_aolp: 3.0,
             envmap_resolution: 64,
+            // A model's config.json without the key (written before the setting) reads as
+            // this default, so a change of it must read those models as 1 (`Model::load`).
+            mip_levels_per_size: 1,
             envmap_prefilter_interval: 10,
             checkpoint_interval: 1_000,
             eval_interval: 1_000,
@@ -391,6 +405,12 @@ impl TrainConfig {
         }
         if !(4..=1024).contains(&self.envmap_resolution) {
             return bad("envmap_resolution", "must be in 4..=1024");
+        }
+        if !(1..=MAX_MIP_LEVELS_PER_SIZE).contains(&self.mip_levels_per_size) {
+            return bad(
+                "mip_levels_per_size",
+                &format!("must be in 1..={MAX_MIP_LEVELS_PER_SIZE}"),
+            );
         }
         let non_negative = [
             ("lr_position_init", self.lr_position_init),
@@ -549,6 +569,16 @@ mod tests {
         assert!(Cli::command()
             .try_get_matches_from(["phygap", "--gridmap", "maybe"])
             .is_err());
+    }
+
+    #[test]
+    fn the_mip_chain_setting_is_checked() {
+        for bad in [0, MAX_MIP_LEVELS_PER_SIZE + 1] {
+            let e = TrainConfig::from_json(&format!(r#"{{"mip_levels_per_size": {bad}}}"#));
+            assert_eq!(e.unwrap_err().key, "mip_levels_per_size");
+        }
+        let given = TrainConfig::from_json(r#"{"mip_levels_per_size": 3}"#).unwrap();
+        assert_eq!(given.mip_levels_per_size, 3);
     }
 
     #[test]

@@ -497,7 +497,7 @@ mod tests {
     }
 
     fn prepared(cube: &CubeMap, fresnel: bool) -> PreparedEnv {
-        PreparedEnv::new(cube, prefilter_plan(SIZE, fresnel).unwrap()).unwrap()
+        PreparedEnv::new(cube, prefilter_plan(SIZE, fresnel, 1).unwrap()).unwrap()
     }
 
     #[test]

@@ -58,11 +58,13 @@ pub struct Reconstruction {
 pub fn prefilter_plan(
     size: usize,
     fresnel_irradiance: bool,
+    levels_per_size: usize,
 ) -> Result<std::sync::Arc<PrefilterPlan>, EnvMapError> {
     PrefilterPlan::new(MipChainSpec {
         base_size: size,
         min_size: (size / 4).max(2),
         fresnel_irradiance,
+        levels_per_size,
         ..MipChainSpec::default()
     })
 }
@@ -103,7 +105,11 @@ impl Reconstruction {
 
     /// The model with its prefiltered environment and a backend, GridMap not built.
     fn without_gridmap(model: Model) -> Result<Self, ReconstructionError> {
-        let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
+        let plan = prefilter_plan(
+            model.envmap.size,
+            model.config.fresnel_irradiance,
+            model.config.mip_levels_per_size as usize,
+        )?;
         let env = PreparedEnv::new(&model.envmap, plan)?;
         let backend = backend::select(model.config.backend)?;
         Ok(Reconstruction {
@@ -149,6 +155,11 @@ impl Reconstruction {
     /// GridMap, when the model renders with it.
     pub fn gridmap(&self) -> Option<&GridMap> {
         self.gridmap.as_ref()
+    }
+
+    /// The model's environment, prefiltered with the chain it was trained with.
+    pub fn environment(&self) -> &PreparedEnv {
+        &self.env
     }
 
     /// The light the model is shaded with: GridMap over the environment, or the environment.

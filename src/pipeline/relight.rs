@@ -140,6 +140,26 @@ mod tests {
     }
 
     #[test]
+    fn a_model_renders_with_the_mip_chain_it_was_trained_with() {
+        let camera = cameras_around(5, 3.5, 40, 45f64.to_radians())[2];
+        let render = |levels_per_size: u8| {
+            let dir = tempfile::tempdir().unwrap();
+            let mut model = sphere_model(false);
+            model.config.mip_levels_per_size = levels_per_size;
+            model.save(dir.path()).unwrap();
+            let loaded = Reconstruction::new(Model::load(dir.path()).unwrap()).unwrap();
+            let levels = loaded.environment().plan().roughness.len();
+            (levels, loaded.scene().render(&camera).unwrap().shaded.s0)
+        };
+        let (method_levels, method) = render(1);
+        let (fine_levels, fine) = render(2);
+        // 16² base: METHOD.md's 16², 8², 4²; with two per size the sharpest at 16², three at 8²
+        // (roughness 0.08 … 0.5) and r = 1 at 4².
+        assert_eq!((method_levels, fine_levels), (3, 5));
+        assert_ne!(method, fine, "the chains shade the sphere differently");
+    }
+
+    #[test]
     fn relighting_with_the_models_own_exported_map_reproduces_its_renders() {
         for gridmap in [false, true] {
             let dir = tempfile::tempdir().unwrap();

@@ -365,7 +365,7 @@ pub fn synth(out_dir: &Path, options: &SynthOptions) -> Result<(), SynthError> {
         let cube = CubeMap::from_latlong(latlong, WorldUp::Z, ENV_FACE_SIZE)?;
         Ok(PreparedEnv::new(
             &cube,
-            prefilter_plan(ENV_FACE_SIZE, false)?,
+            prefilter_plan(ENV_FACE_SIZE, false, 1)?,
         )?)
     };
     let env = prepare(&sky)?;

@@ -113,8 +113,8 @@ pub fn shell(rng: &mut ChaCha8Rng, n: usize) -> Surfels {
     s
 }
 
-/// A random environment on a 16³ cube (levels 16, 8, 4; two roughness levels per size with
-/// `fine`), radiance spanning sigmoid and linear branches.
+/// A random environment on a 16³ cube (levels 16, 8, 4; with `fine`, two roughness levels per
+/// size: 16, 8, 8, 8, 4), radiance spanning sigmoid and linear branches.
 pub fn random_env(rng: &mut ChaCha8Rng, fresnel_irradiance: bool, fine: bool) -> PreparedEnv {
     let spec = MipChainSpec {
         base_size: 16,

@@ -30,6 +30,9 @@ pub struct CheckShadingArgs {
     /// Weight the irradiance by the Fresnel transmission of the incoming light.
     #[arg(long)]
     pub fresnel_irradiance: bool,
+    /// Roughness levels per resolution of the specular mip chain (1: METHOD.md's chain).
+    #[arg(long, default_value_t = 1)]
+    pub mip_levels_per_size: usize,
     /// Print the figures as JSON.
     #[arg(long)]
     pub json: bool,
@@ -70,6 +73,7 @@ pub fn run(args: &CheckShadingArgs) -> Result<()> {
         up,
         args.envmap_resolution,
         args.fresnel_irradiance,
+        args.mip_levels_per_size,
     )?;
     let check = physics_check(
         &GroundTruthView {
@@ -109,8 +113,17 @@ pub fn run(args: &CheckShadingArgs) -> Result<()> {
     Ok(())
 }
 
-fn load_env(path: &Path, up: WorldUp, size: usize, fresnel: bool) -> Result<PreparedEnv> {
+fn load_env(
+    path: &Path,
+    up: WorldUp,
+    size: usize,
+    fresnel: bool,
+    levels_per_size: usize,
+) -> Result<PreparedEnv> {
     let cube = CubeMap::load_latlong(path, up, size)
         .with_context(|| format!("environment map {}", path.display()))?;
-    Ok(PreparedEnv::new(&cube, prefilter_plan(size, fresnel)?)?)
+    Ok(PreparedEnv::new(
+        &cube,
+        prefilter_plan(size, fresnel, levels_per_size)?,
+    )?)
 }

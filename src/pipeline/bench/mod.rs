@@ -193,7 +193,11 @@ pub fn bench_gridmap(model: &Model, repeats: usize) -> Result<GridMapTiming, Ben
         DepthPixels::All,
     )?;
     let mesh_seconds = start.elapsed().as_secs_f64();
-    let plan = prefilter_plan(model.envmap.size, model.config.fresnel_irradiance)?;
+    let plan = prefilter_plan(
+        model.envmap.size,
+        model.config.fresnel_irradiance,
+        model.config.mip_levels_per_size as usize,
+    )?;
     let env = PreparedEnv::new(&model.envmap, plan)?;
     let mut times = Vec::with_capacity(repeats.max(1));
     let mut anchors = 0;

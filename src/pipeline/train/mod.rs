@@ -377,7 +377,11 @@ pub fn train_on(
         mode,
         settings: config.raster_settings(),
         lut: BrdfLut::shared(),
-        plan: prefilter_plan(config.envmap_resolution as usize, config.fresnel_irradiance)?,
+        plan: prefilter_plan(
+            config.envmap_resolution as usize,
+            config.fresnel_irradiance,
+            config.mip_levels_per_size as usize,
+        )?,
         targets,
         radiance_scale,
         learning_rates: LearningRates::from_config(config, bounds.radius),

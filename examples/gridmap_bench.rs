@@ -20,7 +20,7 @@ use phygap::core::step::ViewTarget;
 use phygap::io::capture;
 use phygap::io::model::Model;
 use phygap::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
-use phygap::pipeline::reconstruction::{prefilter_plan, Reconstruction};
+use phygap::pipeline::reconstruction::{run_prefilter_plan, Reconstruction};
 use phygap::pipeline::train::host_step::{self, StepInputs};
 use phygap::pipeline::train::targets::{resolve_mode, view_target};
 
@@ -85,11 +85,7 @@ fn main() -> anyhow::Result<()> {
         );
     }
     let mesh = mesh_extraction::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)?;
-    let plan = prefilter_plan(
-        model.envmap.size,
-        model.config.fresnel_irradiance,
-        model.config.mip_levels_per_size as usize,
-    )?;
+    let plan = run_prefilter_plan(&model.config, model.envmap.size)?;
     let env = PreparedEnv::new(&model.envmap, plan)?;
     let cpu_before = cpu_seconds();
     let (t_build, grid) = best(repeats, || {

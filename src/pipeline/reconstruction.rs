@@ -11,6 +11,7 @@ use thiserror::Error;
 
 use crate::core::brdf_lut::BrdfLut;
 use crate::core::camera::Camera;
+use crate::core::config::TrainConfig;
 use crate::core::envmap::{CubeMap, EnvMapError, MipChainSpec, PrefilterPlan, PreparedEnv};
 use crate::core::gridmap::GridMap;
 use crate::core::light::LightProbe;
@@ -69,6 +70,20 @@ pub fn prefilter_plan(
     })
 }
 
+/// The prefilter plan a run with `config` trains with, for a learned map of face size `size`
+/// (its model's map, whose size is the config's `envmap_resolution`): the one place that reads
+/// which settings shape the chain, so a model renders with the chain it was trained with.
+pub fn run_prefilter_plan(
+    config: &TrainConfig,
+    size: usize,
+) -> Result<std::sync::Arc<PrefilterPlan>, EnvMapError> {
+    prefilter_plan(
+        size,
+        config.fresnel_irradiance,
+        config.mip_levels_per_size as usize,
+    )
+}
+
 impl Reconstruction {
     pub fn new(model: Model) -> Result<Self, ReconstructionError> {
         let mut reconstruction = Self::without_gridmap(model)?;
@@ -105,11 +120,7 @@ impl Reconstruction {
 
     /// The model with its prefiltered environment and a backend, GridMap not built.
     fn without_gridmap(model: Model) -> Result<Self, ReconstructionError> {
-        let plan = prefilter_plan(
-            model.envmap.size,
-            model.config.fresnel_irradiance,
-            model.config.mip_levels_per_size as usize,
-        )?;
+        let plan = run_prefilter_plan(&model.config, model.envmap.size)?;
         let env = PreparedEnv::new(&model.envmap, plan)?;
         let backend = backend::select(model.config.backend)?;
         Ok(Reconstruction {

@@ -31,7 +31,7 @@ use crate::gpu::GpuBackend;
 use crate::io::model::Model;
 use crate::pipeline::backend::Engine;
 use crate::pipeline::mesh_extraction::{self, MeshingError, GRIDMAP_MESH_RESOLUTION};
-use crate::pipeline::reconstruction::prefilter_plan;
+use crate::pipeline::reconstruction::run_prefilter_plan;
 use crate::testing::random_upstream;
 
 /// One benchmark measurement.
@@ -193,11 +193,7 @@ pub fn bench_gridmap(model: &Model, repeats: usize) -> Result<GridMapTiming, Ben
         DepthPixels::All,
     )?;
     let mesh_seconds = start.elapsed().as_secs_f64();
-    let plan = prefilter_plan(
-        model.envmap.size,
-        model.config.fresnel_irradiance,
-        model.config.mip_levels_per_size as usize,
-    )?;
+    let plan = run_prefilter_plan(&model.config, model.envmap.size)?;
     let env = PreparedEnv::new(&model.envmap, plan)?;
     let mut times = Vec::with_capacity(repeats.max(1));
     let mut anchors = 0;

@@ -63,7 +63,7 @@ use crate::pipeline::backend::{self, BackendError, Engine};
 use crate::pipeline::evaluate::{self, EvalError};
 use crate::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
 use crate::pipeline::peak_memory::peak_resident_bytes;
-use crate::pipeline::reconstruction::prefilter_plan;
+use crate::pipeline::reconstruction::run_prefilter_plan;
 use sparse::init_for_capture;
 
 use crate::core::step::ViewTarget;
@@ -377,11 +377,7 @@ pub fn train_on(
         mode,
         settings: config.raster_settings(),
         lut: BrdfLut::shared(),
-        plan: prefilter_plan(
-            config.envmap_resolution as usize,
-            config.fresnel_irradiance,
-            config.mip_levels_per_size as usize,
-        )?,
+        plan: run_prefilter_plan(config, config.envmap_resolution as usize)?,
         targets,
         radiance_scale,
         learning_rates: LearningRates::from_config(config, bounds.radius),

@@ -28,7 +28,7 @@ use crate::core::raster::{GBuffers, RasterError};
 use crate::core::render::ShadingInputs;
 use crate::core::shading::ShadingError;
 use crate::formats::image_io::{Image, ImageError};
-use crate::io::capture::{Capture, Measurement, View};
+use crate::io::capture::{scene_map, Capture, Measurement, SceneMap, View};
 use crate::pipeline::evaluate::{read_truth, Truth};
 use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
 
@@ -44,19 +44,9 @@ pub struct DiagnoseTruth {
 impl DiagnoseTruth {
     /// The maps `capture_dir/scene.json` names, where they exist.
     pub fn discover(capture_dir: &std::path::Path) -> DiagnoseTruth {
-        let scene = std::fs::read_to_string(capture_dir.join("scene.json"))
-            .ok()
-            .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok());
-        let map = |key: &str| {
-            scene
-                .as_ref()
-                .and_then(|s| s["env_map"][key].as_str())
-                .map(|relative| capture_dir.join(relative))
-                .filter(|path| path.is_file())
-        };
         DiagnoseTruth {
-            light: map("train_test"),
-            relight: map("relight"),
+            light: scene_map(capture_dir, SceneMap::TrainTest),
+            relight: scene_map(capture_dir, SceneMap::Relight),
         }
     }
 }

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use crate::io::capture::Capture;
+use crate::io::capture::{scene_map, Capture, SceneMap};
 use crate::io::model::Model;
 use crate::pipeline::evaluate::{self, EvalError, EvalReport};
 use crate::pipeline::mesh_extraction::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
@@ -30,16 +30,23 @@ impl GroundTruth {
     /// The relighting map named by `capture_dir/scene.json` (`env_map.relight`) and
     /// `capture_dir/mesh.ply`, where they exist; neither is required.
     pub fn discover(capture_dir: &Path) -> GroundTruth {
-        let relight_envmap = std::fs::read_to_string(capture_dir.join("scene.json"))
-            .ok()
-            .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok())
-            .and_then(|scene| scene["env_map"]["relight"].as_str().map(str::to_owned))
-            .map(|relative| capture_dir.join(relative))
-            .filter(|path| path.is_file());
-        let mesh = Some(capture_dir.join("mesh.ply")).filter(|path| path.is_file());
         GroundTruth {
-            relight_envmap,
-            mesh,
+            relight_envmap: scene_map(capture_dir, SceneMap::Relight),
+            mesh: Some(capture_dir.join("mesh.ply")).filter(|path| path.is_file()),
+        }
+    }
+
+    /// What [`Self::discover`] finds in `capture_dir`, with each path given in place of the one
+    /// found (the flags of `phygap eval` and `phygap bench quality`).
+    pub fn discover_or(
+        capture_dir: &Path,
+        relight_envmap: Option<PathBuf>,
+        mesh: Option<PathBuf>,
+    ) -> GroundTruth {
+        let found = GroundTruth::discover(capture_dir);
+        GroundTruth {
+            relight_envmap: relight_envmap.or(found.relight_envmap),
+            mesh: mesh.or(found.mesh),
         }
     }
 }
@@ -105,5 +112,26 @@ mod tests {
         // A map that scene.json names but the folder lacks is not used.
         std::fs::remove_file(dir.path().join("env/studio.exr")).unwrap();
         assert_eq!(GroundTruth::discover(dir.path()).relight_envmap, None);
+    }
+
+    #[test]
+    fn paths_given_replace_the_ones_found() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("mesh.ply"), b"x").unwrap();
+        let found = GroundTruth::discover_or(dir.path(), None, None);
+        assert_eq!(found, GroundTruth::discover(dir.path()));
+        assert_eq!(found.mesh, Some(dir.path().join("mesh.ply")));
+        let given = GroundTruth::discover_or(
+            dir.path(),
+            Some(PathBuf::from("other/map.exr")),
+            Some(PathBuf::from("other/mesh.ply")),
+        );
+        assert_eq!(
+            given,
+            GroundTruth {
+                relight_envmap: Some(PathBuf::from("other/map.exr")),
+                mesh: Some(PathBuf::from("other/mesh.ply")),
+            }
+        );
     }
 }

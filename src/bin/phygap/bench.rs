@@ -314,9 +314,11 @@ fn run_quality(a: &QualityBenchArgs) -> Result<()> {
         config.backend = v;
     }
     config.validate()?;
-    let mut truth = phygap::pipeline::scorecard::GroundTruth::discover(&a.capture);
-    truth.relight_envmap = a.relight_envmap.clone().or(truth.relight_envmap);
-    truth.mesh = a.gt_mesh.clone().or(truth.mesh);
+    let truth = phygap::pipeline::scorecard::GroundTruth::discover_or(
+        &a.capture,
+        a.relight_envmap.clone(),
+        a.gt_mesh.clone(),
+    );
     let scratch = std::env::temp_dir().join(format!("phygap-bench-quality-{}", std::process::id()));
     let model_dir = a.out.clone().unwrap_or_else(|| scratch.clone());
     let bar = crate::train::progress_bar(config.steps());

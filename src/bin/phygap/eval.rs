@@ -2,6 +2,7 @@
 //! working|full]`: metrics of a trained model on the capture's test views (at the resolution it
 //! was trained at, or the capture's own); with a relighting map, the relit S0 against the
 //! views' `relight_s0` ground truth; with a ground-truth mesh, the Chamfer-L1 of the model's mesh.
+//! Both are taken from the capture folder (`scene.json`'s relighting map, `mesh.ply`) unless given.
 
 use std::path::PathBuf;
 
@@ -24,10 +25,12 @@ pub struct EvalArgs {
     #[arg(long)]
     pub json: bool,
     /// Lat-long map (.exr/.hdr) the capture's `relight_s0` ground truth is lit by: adds
-    /// `relight_psnr` and `relight_ssim`.
+    /// `relight_psnr` and `relight_ssim` (default: the map the capture's `scene.json` names for
+    /// relighting, where it has one).
     #[arg(long)]
     pub relight_envmap: Option<PathBuf>,
-    /// Ground-truth mesh (PLY): adds `chamfer` (the model's mesh at the default resolution).
+    /// Ground-truth mesh (PLY): adds `chamfer` (the model's mesh at the default resolution;
+    /// default: the capture's `mesh.ply`, where it has one).
     #[arg(long)]
     pub gt_mesh: Option<PathBuf>,
     #[arg(long, help = crate::GRIDMAP_OVERRIDE_HELP)]
@@ -59,10 +62,11 @@ pub fn run(args: &EvalArgs) -> Result<()> {
     };
     let capture = capture::load_with(&args.capture, &options)?;
     crate::override_gridmap(&mut model, args.gridmap);
-    let truth = GroundTruth {
-        relight_envmap: args.relight_envmap.clone(),
-        mesh: args.gt_mesh.clone(),
-    };
+    let truth = GroundTruth::discover_or(
+        &args.capture,
+        args.relight_envmap.clone(),
+        args.gt_mesh.clone(),
+    );
     let report = scorecard::score(&model, &capture, &truth)?;
     if !args.json {
         print_table(&report);

@@ -20,6 +20,7 @@ pub mod mosaic;
 mod raw;
 mod raw_frame;
 pub mod resample;
+mod scene;
 pub mod simulate;
 pub mod undistort;
 
@@ -48,6 +49,7 @@ pub use limits::{CaptureLimits, LimitExceeded};
 
 use crate::core::resolution::Resolution;
 pub use raw::RawReport;
+pub use scene::{scene_map, SceneMap};
 
 /// Training or held-out view.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

@@ -70,9 +70,17 @@ fn describe(report: &Diagnosis) -> String {
         Some(base) => format!("{:+.2}", value - base),
         None => "–".to_owned(),
     };
+    // The first column as wide as its longest name ("materials+light").
+    let width = report
+        .variants
+        .iter()
+        .map(|v| v.name.chars().count())
+        .chain(["replaced".len()])
+        .max()
+        .unwrap_or(0);
     let mut text = format!(
         "loss budget over {} test views (S0 PSNR dB; relit PSNR dB; the gain of each ground truth)\n\
-         {:<10} {:>8} {:>8} {:>8} {:>8}\n",
+         {:<width$} {:>8} {:>8} {:>8} {:>8}\n",
         report.test_views, "replaced", "S0", "gain", "relit", "gain"
     );
     for v in &report.variants {
@@ -82,7 +90,7 @@ fn describe(report: &Diagnosis) -> String {
             _ => "–".to_owned(),
         };
         text.push_str(&format!(
-            "{:<10} {:>8.2} {:>8} {:>8} {:>8}\n",
+            "{:<width$} {:>8.2} {:>8} {:>8} {:>8}\n",
             v.name,
             v.s0_psnr,
             gain(v.s0_psnr, learned.map(|l| l.s0_psnr)),

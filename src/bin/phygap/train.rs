@@ -12,6 +12,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use phygap::core::config::TrainConfig;
 use phygap::core::events::TrainEvent;
 use phygap::io::capture::CaptureLimits;
+use phygap::pipeline::scorecard::GroundTruth;
 use phygap::pipeline::train::{self, TrainOutcome};
 
 #[derive(Args, Debug)]
@@ -83,6 +84,14 @@ pub fn run(args: &TrainArgs, matches: &clap::ArgMatches) -> Result<()> {
             println!("model written to {}", args.out.display());
             if let Ok(metrics) = std::fs::read_to_string(args.out.join("metrics.json")) {
                 println!("test metrics: {metrics}");
+            }
+            let truth = GroundTruth::discover(&args.capture);
+            if truth.relight_envmap.is_some() || truth.mesh.is_some() {
+                println!(
+                    "relit PSNR and Chamfer-L1 against the capture's relighting map and mesh: phygap eval {} {}",
+                    args.out.display(),
+                    args.capture.display()
+                );
             }
         }
         TrainOutcome::Interrupted { iteration } => {

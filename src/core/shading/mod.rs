@@ -554,6 +554,52 @@ pub struct StokesImage {
 }
 
 impl StokesImage {
+    /// The `width × height` image whose pixel `p` is `pixel(p)` (zero where it is `None`), its
+    /// five planes written in one pass, parallel over rows.
+    fn from_pixels<'a>(
+        width: usize,
+        height: usize,
+        pixel: impl Fn(usize) -> Option<&'a PixelStokes> + Sync,
+    ) -> StokesImage {
+        let plane = || -> Vec<DVec3> {
+            (0..width * height)
+                .into_par_iter()
+                .map(|_| DVec3::ZERO)
+                .collect()
+        };
+        let mut image = StokesImage {
+            width,
+            height,
+            s0: plane(),
+            s1: plane(),
+            s2: plane(),
+            diffuse: plane(),
+            specular: plane(),
+        };
+        let row = width.max(1);
+        (
+            image.s0.par_chunks_mut(row),
+            image.s1.par_chunks_mut(row),
+            image.s2.par_chunks_mut(row),
+            image.diffuse.par_chunks_mut(row),
+            image.specular.par_chunks_mut(row),
+        )
+            .into_par_iter()
+            .enumerate()
+            .for_each(|(y, (s0, s1, s2, diffuse, specular))| {
+                for x in 0..s0.len() {
+                    if let Some(o) = pixel(y * row + x) {
+                        s0[x] = o.s0;
+                        s1[x] = o.s1;
+                        s2[x] = o.s2;
+                        diffuse[x] = o.diffuse;
+                        specular[x] = o.specular;
+                    }
+                }
+            });
+        image
+    }
+
     /// Multiplies every radiance (Stokes, diffuse, specular) by `scale`.
     pub fn scale_radiance(&mut self, scale: f64) {
         if scale == 1.0 {
@@ -632,15 +678,11 @@ pub fn shade_image(
             }
         })
         .collect();
-    Ok(StokesImage {
-        width: camera.width as usize,
-        height: camera.height as usize,
-        s0: shaded.iter().map(|s| s.s0).collect(),
-        s1: shaded.iter().map(|s| s.s1).collect(),
-        s2: shaded.iter().map(|s| s.s2).collect(),
-        diffuse: shaded.iter().map(|s| s.diffuse).collect(),
-        specular: shaded.iter().map(|s| s.specular).collect(),
-    })
+    Ok(StokesImage::from_pixels(
+        camera.width as usize,
+        camera.height as usize,
+        |p| shaded.get(p),
+    ))
 }
 
 /// The forward intermediates of every active pixel of one view ([`shade_image_saved`]), so that
@@ -684,19 +726,10 @@ pub fn shade_image_saved(
         .map(|&p| forward(&buffers.pixel_input(camera, p), light, lut))
         .collect();
     let saved = SavedShading { forwards, slot };
-    let out = |p: usize| saved.get(p).map_or_else(PixelStokes::default, |f| f.out);
-    let plane = |part: fn(&PixelStokes) -> DVec3| -> Vec<DVec3> {
-        (0..pixels).into_par_iter().map(|p| part(&out(p))).collect()
-    };
-    let image = StokesImage {
-        width: camera.width as usize,
-        height: camera.height as usize,
-        s0: plane(|o| o.s0),
-        s1: plane(|o| o.s1),
-        s2: plane(|o| o.s2),
-        diffuse: plane(|o| o.diffuse),
-        specular: plane(|o| o.specular),
-    };
+    let _planes = tracing::info_span!("stokes_planes").entered();
+    let image = StokesImage::from_pixels(camera.width as usize, camera.height as usize, |p| {
+        saved.get(p).map(|f| &f.out)
+    });
     Ok((image, saved))
 }
 

@@ -511,13 +511,22 @@ fn image_batch_matches_per_pixel_shading() {
     let mut expected_env = env.zero_grad();
     for p in 0..n {
         if !active[p] {
-            assert_eq!(img.s0[p], DVec3::ZERO);
+            for plane in [&img.s0, &img.s1, &img.s2, &img.diffuse, &img.specular] {
+                assert_eq!(plane[p], DVec3::ZERO);
+            }
             assert_eq!(gbuf.normal[p], DVec3::ZERO);
             continue;
         }
         let input = buffers.pixel_input(&camera, p);
         let s = shade(&input, &env, &lut);
-        assert_eq!((img.s0[p], img.s1[p], img.s2[p]), (s.s0, s.s1, s.s2));
+        let planes = (
+            img.s0[p],
+            img.s1[p],
+            img.s2[p],
+            img.diffuse[p],
+            img.specular[p],
+        );
+        assert_eq!(planes, (s.s0, s.s1, s.s2, s.diffuse, s.specular));
         let g = shade_backward(&input, &env, &lut, &ups[p], &mut expected_env);
         assert_eq!(gbuf.normal[p], g.normal);
         assert_eq!(gbuf.ior[p], g.ior);

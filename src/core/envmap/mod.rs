@@ -18,7 +18,9 @@
 
 pub mod grid;
 pub mod latlong;
+pub mod orbit_kernel;
 pub mod prefilter;
+pub mod symmetry;
 
 use glam::DVec3;
 use thiserror::Error;

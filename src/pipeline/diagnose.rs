@@ -28,7 +28,7 @@ use crate::core::raster::{GBuffers, RasterError};
 use crate::core::render::ShadingInputs;
 use crate::core::shading::ShadingError;
 use crate::formats::image_io::{Image, ImageError};
-use crate::io::capture::{scene_map, Capture, Measurement, SceneMap, View};
+use crate::io::capture::{Capture, Measurement, SceneMaps, View};
 use crate::pipeline::evaluate::{read_truth, Truth};
 use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
 
@@ -44,9 +44,10 @@ pub struct DiagnoseTruth {
 impl DiagnoseTruth {
     /// The maps `capture_dir/scene.json` names, where they exist.
     pub fn discover(capture_dir: &std::path::Path) -> DiagnoseTruth {
+        let maps = SceneMaps::read(capture_dir);
         DiagnoseTruth {
-            light: scene_map(capture_dir, SceneMap::TrainTest),
-            relight: scene_map(capture_dir, SceneMap::Relight),
+            light: maps.train_test,
+            relight: maps.relight,
         }
     }
 }

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use crate::io::capture::{scene_map, Capture, SceneMap};
+use crate::io::capture::{Capture, SceneMaps};
 use crate::io::model::Model;
 use crate::pipeline::evaluate::{self, EvalError, EvalReport};
 use crate::pipeline::mesh_extraction::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
@@ -31,7 +31,7 @@ impl GroundTruth {
     /// `capture_dir/mesh.ply`, where they exist; neither is required.
     pub fn discover(capture_dir: &Path) -> GroundTruth {
         GroundTruth {
-            relight_envmap: scene_map(capture_dir, SceneMap::Relight),
+            relight_envmap: SceneMaps::read(capture_dir).relight,
             mesh: Some(capture_dir.join("mesh.ply")).filter(|path| path.is_file()),
         }
     }

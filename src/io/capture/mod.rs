@@ -49,7 +49,7 @@ pub use limits::{CaptureLimits, LimitExceeded};
 
 use crate::core::resolution::Resolution;
 pub use raw::RawReport;
-pub use scene::{scene_map, SceneMap};
+pub use scene::SceneMaps;
 
 /// Training or held-out view.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

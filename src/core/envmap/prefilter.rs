@@ -5,11 +5,13 @@
 //! (`D(h) · cos`, with N = V = R as nvdiffrec's `specular_cubemap`; GGX α = r², r the Disney
 //! roughness of that level); the diffuse irradiance map `E_d(n) = (1/π) Σ E(ω) max(n·ω, 0) ΔΩ` is
 //! computed from the lowest pyramid level (optionally weighted by the Fresnel transmission of the
-//! incoming light, for a few IoRs). Lobe convolutions cull 8×8 texel blocks by bounding cones;
-//! kernel weights are evaluated on the fly (no weight matrices are stored) and the normalizers are
-//! precomputed once per plan. Threading: every convolution and its transpose is parallel over
-//! output texels with rayon; lookups are read-only and thread-safe; gradients of lookups are added
-//! into per-thread [`EnvGrad`] accumulators that callers reduce with [`EnvGrad::add`].
+//! incoming light, for a few IoRs). Every kernel depends only on the angle between two
+//! directions, so a convolution stores one row of weights per orbit of the cube's 48 symmetries
+//! ([`super::orbit_kernel`]), built with the normalizers once per plan; the 8×8 texel blocks'
+//! culling thresholds are kept for the gpu prefilter, which walks the grid instead. Threading:
+//! every convolution and its transpose is parallel over orbits with rayon; lookups are read-only
+//! and thread-safe; gradients of lookups are added into per-thread [`EnvGrad`] accumulators that
+//! callers reduce with [`EnvGrad::add`].
 
 use std::sync::Arc;
 
@@ -230,8 +232,8 @@ pub fn fresnel_unpolarized(c: f64, ior: f64) -> f64 {
     0.5 * (rs * rs + rp * rp)
 }
 
-/// One convolution of a plan: kernel, angular cutoff, per-block culling thresholds and (for lobes)
-/// per-output normalizers.
+/// One convolution of a plan: kernel, angular cutoff, its weights one row per orbit, per-block
+/// culling thresholds (for the gpu's walk of the grid) and (for lobes) per-output normalizers.
 #[derive(Clone, Debug)]
 struct Convolution {
     kernel: Kernel,

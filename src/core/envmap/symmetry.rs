@@ -20,7 +20,6 @@ pub const NUM_SYMMETRIES: usize = 48;
 /// The symmetries' action on the texels of one cube size, with one representative per orbit.
 #[derive(Clone, Debug)]
 pub struct CubeSymmetry {
-    size: usize,
     /// `image[g · n + t]`: the texel g maps texel t onto (n texels).
     image: Vec<u32>,
     /// The representative of each orbit: its smallest texel index, ascending.
@@ -57,16 +56,10 @@ impl CubeSymmetry {
             }
         }
         CubeSymmetry {
-            size,
             image,
             representatives,
             owner,
         }
-    }
-
-    /// Face size D.
-    pub fn size(&self) -> usize {
-        self.size
     }
 
     /// The texel that symmetry `g` maps texel `t` onto.

@@ -10,6 +10,7 @@ pub mod densify;
 pub mod engine;
 pub mod envmap;
 pub mod events;
+pub mod filled;
 pub mod gradcheck;
 pub mod gridmap;
 pub mod iterations;

@@ -3,8 +3,11 @@
 //! pixels are coverage-weighted, background is black).
 //!
 //! Used by training (forward half of a step), evaluation, `phygap render` and relighting.
+//!
+//! Threading: the shading inputs are gathered from the G-buffers in parallel over pixels (rayon).
 
 use glam::DVec3;
+use rayon::prelude::*;
 use thiserror::Error;
 
 use crate::core::brdf_lut::BrdfLut;
@@ -40,18 +43,18 @@ impl ShadingInputs {
     pub fn new(g: &GBuffers, camera: &Camera) -> Self {
         let w = g.width;
         ShadingInputs {
-            normal: g.normal.iter().map(|n| DVec3::from_array(*n)).collect(),
-            albedo: g.albedo.iter().map(|a| DVec3::from_array(*a)).collect(),
+            normal: g.normal.par_iter().map(|n| DVec3::from_array(*n)).collect(),
+            albedo: g.albedo.par_iter().map(|a| DVec3::from_array(*a)).collect(),
             position: g
                 .depth
-                .iter()
+                .par_iter()
                 .enumerate()
                 .map(|(p, &z)| {
                     let (u, v) = ((p % w) as f64 + 0.5, (p / w) as f64 + 0.5);
                     camera.backproject(u, v, z)
                 })
                 .collect(),
-            active: g.alpha.iter().map(|&a| a > SHADE_ALPHA_MIN).collect(),
+            active: g.alpha.par_iter().map(|&a| a > SHADE_ALPHA_MIN).collect(),
         }
     }
 

@@ -23,6 +23,8 @@ use rayon::prelude::*;
 use super::grid::CubeGrid;
 use super::symmetry::{CubeSymmetry, NUM_SYMMETRIES};
 
+use crate::core::filled::filled;
+
 /// Values of one source texel in the orbit layout: RGB for each of the 48 symmetries.
 const ROW: usize = NUM_SYMMETRIES * 3;
 
@@ -106,7 +108,7 @@ impl OrbitKernel {
     /// `out[o] = Σ_t k(d_o · d_t) · w_t · src[t]` (RGB, `src[t · 3 + c]`), `w` = `weight` or 1.
     pub fn apply(&self, src: &[f64], weight: Option<&[f64]>) -> Vec<f64> {
         let sym = &self.symmetry;
-        let mut rows = vec![0.0; self.support.len() * ROW];
+        let mut rows = filled(self.support.len() * ROW, 0.0);
         rows.par_chunks_mut(ROW)
             .zip(&self.support)
             .for_each(|(row, &s)| {
@@ -133,10 +135,10 @@ impl OrbitKernel {
                 self.row_sums(&rows, orbits)
             })
             .collect();
-        let mut out = vec![0.0; sym.owner.len() * 3];
-        for (o, &(r, g)) in out.chunks_exact_mut(3).zip(&sym.owner) {
+        let mut out = Vec::with_capacity(sym.owner.len() * 3);
+        for &(r, g) in &sym.owner {
             let g = g as usize * 3;
-            o.copy_from_slice(&sums[r as usize][g..g + 3]);
+            out.extend_from_slice(&sums[r as usize][g..g + 3]);
         }
         out
     }

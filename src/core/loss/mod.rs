@@ -20,6 +20,7 @@ use rayon::prelude::*;
 
 use crate::core::camera::Camera;
 use crate::core::config::TrainConfig;
+use crate::core::filled::filled;
 
 /// The float type a loss computes in where an engine may choose it (SSIM: [`ssim_in`]); inputs
 /// and gradients are `f64` either way.
@@ -195,7 +196,7 @@ pub fn l1(pred: &[f64], target: &[f64], weight_mask: Option<&[f64]>) -> LossValu
     );
     let channels = weight_channels(pred.len(), weight_mask, "l1");
     let inv_n = 1.0 / pred.len().max(1) as f64;
-    let mut grad = vec![0.0; pred.len()];
+    let mut grad = filled(pred.len(), 0.0);
     let value = chunked_sum(&mut grad, |i, g| {
         let w = element_weight(weight_mask, i, channels);
         let d = pred[i] - target[i];
@@ -283,8 +284,8 @@ pub fn stokes_l1_premultiplied(
         *g = abs_subgradient(d) * inv_n;
         d.abs()
     };
-    let mut grad_s1 = vec![0.0; n];
-    let mut grad_s2 = vec![0.0; n];
+    let mut grad_s1 = filled(n, 0.0);
+    let mut grad_s2 = filled(n, 0.0);
     // Chunks of `CHUNK` elements summed in order, as `l1` sums each component.
     let sums: Vec<(f64, f64)> = (grad_s1.par_chunks_mut(CHUNK), grad_s2.par_chunks_mut(CHUNK))
         .into_par_iter()
@@ -321,7 +322,7 @@ pub fn mask_mse(alpha: &[f64], mask: &[f64]) -> LossValue {
         "mask_mse: alpha and mask lengths differ"
     );
     let inv_n = 1.0 / alpha.len().max(1) as f64;
-    let mut grad = vec![0.0; alpha.len()];
+    let mut grad = filled(alpha.len(), 0.0);
     let value = chunked_sum(&mut grad, |i, g| {
         let d = alpha[i] - mask[i];
         *g = 2.0 * d * inv_n;
@@ -353,9 +354,9 @@ pub fn depth_distortion(
         "depth_distortion: alpha, depth and depth_sq lengths differ"
     );
     let norm = 1.0 / (alpha.len().max(1) as f64 * scale * scale);
-    let mut grad_alpha = vec![0.0; alpha.len()];
-    let mut grad_depth = vec![0.0; alpha.len()];
-    let mut grad_depth_sq = vec![0.0; alpha.len()];
+    let mut grad_alpha = filled(alpha.len(), 0.0);
+    let mut grad_depth = filled(alpha.len(), 0.0);
+    let mut grad_depth_sq = filled(alpha.len(), 0.0);
     let chunks = (
         grad_alpha.par_chunks_mut(CHUNK),
         grad_depth.par_chunks_mut(CHUNK),
@@ -413,7 +414,7 @@ pub fn normal_smoothness(normal: &[f64], s0: &[f64], width: usize, height: usize
     let sc = s0.len() / pixels;
     let inv_n = 1.0 / pixels as f64;
     let sqrt_eps = NORMAL_SMOOTH_EPS.sqrt();
-    let mut grad = vec![0.0; normal.len()];
+    let mut grad = filled(normal.len(), 0.0);
     let mut value = 0.0;
     let mut pair = |a: usize, b: usize| {
         let d = [
@@ -497,8 +498,8 @@ pub fn depth_normal_consistency(
             && norm3(&depth_normal[p * 3..p * 3 + 3]) > MIN_NORMAL_NORM
     };
     let count = (0..pixels).into_par_iter().filter(|&p| valid(p)).count();
-    let mut grad_normal = vec![0.0; normal.len()];
-    let mut grad_depth_normal = vec![0.0; normal.len()];
+    let mut grad_normal = filled(normal.len(), 0.0);
+    let mut grad_depth_normal = filled(normal.len(), 0.0);
     if count == 0 {
         return DepthNormalLossValue {
             value: 0.0,
@@ -596,7 +597,7 @@ pub fn aolp_normal(normal: &[f64], camera: &Camera, polarization: &[[f64; 2]]) -
     );
     let width = camera.width as usize;
     let norm = 1.0 / pixels.max(1) as f64;
-    let mut grad = vec![0.0; normal.len()];
+    let mut grad = filled(normal.len(), 0.0);
     let value = sum_in_chunk_order(
         grad.par_chunks_mut(3 * CHUNK).into_par_iter(),
         |chunk, g| {

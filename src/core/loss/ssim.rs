@@ -21,6 +21,7 @@ use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 use rayon::prelude::*;
 
 use super::{LossPrecision, LossValue};
+use crate::core::filled::filled;
 use crate::core::simd::avx2_available;
 
 /// Side of the square Gaussian window.
@@ -101,7 +102,7 @@ fn separable_blur<T: Sample>(
     let kernel = gaussian_kernel().map(T::of);
     let avx2 = avx2_available();
     let stride = planes * width;
-    let mut rows = vec![T::ZERO; stride * height];
+    let mut rows = filled(stride * height, T::ZERO);
     rows.par_chunks_mut(stride).enumerate().for_each_init(
         || vec![T::ZERO; width + 2 * RADIUS],
         |padded, (y, out)| {
@@ -115,7 +116,7 @@ fn separable_blur<T: Sample>(
             }
         },
     );
-    let mut out = vec![T::ZERO; stride * height];
+    let mut out = filled(stride * height, T::ZERO);
     out.par_chunks_mut(stride)
         .enumerate()
         .for_each(|(y, out_row)| {
@@ -351,7 +352,7 @@ fn ssim_cropped<T: Sample>(
         T::of(inv_n),
     );
     let outside = (width * height - crop.width * crop.height) * channels;
-    let mut grad = vec![0.0; pred.len()];
+    let mut grad = filled(pred.len(), 0.0);
     let row = crop.width * channels;
     grad.par_chunks_mut(width * channels)
         .skip(crop.y0)
@@ -427,7 +428,7 @@ impl Crop {
     /// The crop's pixels of an interleaved `width`-wide image, in `T`.
     fn cut<T: Sample>(&self, image: &[f64], width: usize, channels: usize) -> Vec<T> {
         let row = self.width * channels;
-        let mut out = vec![T::ZERO; row * self.height];
+        let mut out = filled(row * self.height, T::ZERO);
         out.par_chunks_mut(row).enumerate().for_each(|(y, out)| {
             let start = ((self.y0 + y) * width + self.x0) * channels;
             for (o, &v) in out.iter_mut().zip(&image[start..start + row]) {
@@ -452,7 +453,7 @@ fn ssim_sum<T: Sample>(
     let m = moments(pred, target, width, height, channels);
     // Adjoints of the moments, row-interleaved like the blur output (plane ADJOINTS · c + q).
     let stride = ADJOINTS * channels * width;
-    let mut adjoints = vec![T::ZERO; stride * height];
+    let mut adjoints = filled(stride * height, T::ZERO);
     let row_sums: Vec<f64> = adjoints
         .par_chunks_mut(stride)
         .enumerate()
@@ -485,7 +486,7 @@ fn ssim_sum<T: Sample>(
         let start = y * stride + k * width;
         row.copy_from_slice(&adjoints[start..start + width]);
     });
-    let mut grad = vec![T::ZERO; pred.len()];
+    let mut grad = filled(pred.len(), T::ZERO);
     grad.par_chunks_mut(width * channels)
         .enumerate()
         .for_each(|(y, row)| {

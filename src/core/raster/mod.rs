@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::core::camera::Camera;
+use crate::core::filled::filled;
 use crate::core::surfels::{SurfelGrads, Surfels};
 
 /// Thresholds of the rasterizer (2DGS defaults).
@@ -154,14 +155,14 @@ impl GBuffers {
         GBuffers {
             width,
             height,
-            alpha: vec![0.0; n],
-            depth: vec![0.0; n],
-            normal: vec![[0.0; 3]; n],
-            albedo: vec![[0.0; 3]; n],
-            roughness: vec![0.0; n],
-            ior: vec![0.0; n],
-            depth_sq: vec![0.0; n],
-            depth_normal: vec![[0.0; 3]; n],
+            alpha: filled(n, 0.0),
+            depth: filled(n, 0.0),
+            normal: filled(n, [0.0; 3]),
+            albedo: filled(n, [0.0; 3]),
+            roughness: filled(n, 0.0),
+            ior: filled(n, 0.0),
+            depth_sq: filled(n, 0.0),
+            depth_normal: filled(n, [0.0; 3]),
         }
     }
 

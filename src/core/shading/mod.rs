@@ -21,6 +21,7 @@ use thiserror::Error;
 use crate::core::brdf_lut::{BrdfLut, LutSample};
 use crate::core::camera::Camera;
 use crate::core::envmap::EnvGrad;
+use crate::core::filled::filled;
 use crate::core::light::{LightProbe, SavedLookup};
 
 pub use check::{physics_check, GroundTruthView, ShadingCheck};
@@ -779,7 +780,7 @@ fn image_backward(
     buffers.check(pixels)?;
     upstream.check(pixels)?;
     let width = camera.width as usize;
-    let mut grads = vec![PixelInputGrad::default(); pixels];
+    let mut grads = filled(pixels, PixelInputGrad::default());
     // A fixed number of row blocks, each with its own light-gradient accumulator, summed in block
     // order: the result does not depend on rayon's scheduling (bit-exact, resumable training).
     let rows = camera.height as usize;

@@ -7,6 +7,8 @@ pub mod ply;
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
+use crate::core::filled::filled;
+
 /// Offset of the IoR activation: η = `IOR_MIN` + sigmoid(raw), so η ∈ (1.3, 2.3).
 pub const IOR_MIN: f64 = 1.3;
 
@@ -72,13 +74,13 @@ impl Surfels {
     /// N surfels with every parameter zero (the layout of a gradient buffer).
     pub fn zeros(n: usize) -> Self {
         Surfels {
-            position: vec![[0.0; 3]; n],
-            log_scale: vec![[0.0; 2]; n],
-            rotation: vec![[0.0; 4]; n],
-            opacity: vec![0.0; n],
-            albedo: vec![[0.0; 3]; n],
-            roughness: vec![0.0; n],
-            ior: vec![0.0; n],
+            position: filled(n, [0.0; 3]),
+            log_scale: filled(n, [0.0; 2]),
+            rotation: filled(n, [0.0; 4]),
+            opacity: filled(n, 0.0),
+            albedo: filled(n, [0.0; 3]),
+            roughness: filled(n, 0.0),
+            ior: filled(n, 0.0),
         }
     }
 

@@ -17,6 +17,7 @@ use crate::core::brdf_lut::BrdfLut;
 use crate::core::engine::Backend;
 use crate::core::envmap::EnvGrad;
 use crate::core::events::Stage;
+use crate::core::filled::filled;
 use crate::core::light::LightProbe;
 use crate::core::loss::{self, sum_in_chunk_order, LossWeights, CHUNK};
 use crate::core::raster::{GBufferGrads, GBuffers, RasterSettings};
@@ -182,7 +183,7 @@ struct ImageGrads {
 fn predict(g: &GBuffers, shaded: Option<&Shaded>, plan: &StepPlan) -> Vec<f64> {
     let pixels = g.width * g.height;
     let polarizer = plan.polarizer_cos_sin();
-    let mut pred = vec![0.0; pixels * 3];
+    let mut pred = filled(pixels * 3, 0.0);
     pred.par_chunks_mut(3).enumerate().for_each(|(p, out)| {
         let colour = match shaded {
             None => DVec3::from_array(g.albedo[p]) * plan.unpolarized_scale,
@@ -353,9 +354,9 @@ fn chain_shaded(
 ) -> Result<(f64, EnvGrad), TrainError> {
     let (pixels, s) = (g.width * g.height, &shaded.image);
     let polarizer = plan.polarizer_cos_sin();
-    let mut d0 = vec![DVec3::ZERO; pixels];
-    let mut d1 = vec![DVec3::ZERO; pixels];
-    let mut d2 = vec![DVec3::ZERO; pixels];
+    let mut d0 = filled(pixels, DVec3::ZERO);
+    let mut d1 = filled(pixels, DVec3::ZERO);
+    let mut d2 = filled(pixels, DVec3::ZERO);
     // Per pixel: the Stokes images' upstream and the opacity's; the angle's gradient is summed
     // in chunk order (the same whatever the thread count).
     let chunks = (

@@ -41,6 +41,7 @@ use super::{
     Rasterized, SavedForward,
 };
 use crate::core::camera::Camera;
+use crate::core::filled::filled;
 use crate::core::surfels::Surfels;
 
 /// Which compiled copy of the tile kernels runs.
@@ -359,9 +360,9 @@ impl FastBackend {
         let consts = PixelConsts::new(settings);
 
         let n = grid.count();
-        let mut sums = vec![0.0f32; n * NUM_SUMS * TILE_PIXELS];
-        let mut final_transmittance = vec![1.0f64; n * TILE_PIXELS];
-        let mut contributors = vec![0u32; n * TILE_PIXELS];
+        let mut sums = filled(n * NUM_SUMS * TILE_PIXELS, 0.0f32);
+        let mut final_transmittance = filled(n * TILE_PIXELS, 1.0f64);
+        let mut contributors = filled(n * TILE_PIXELS, 0u32);
         let evaluations: u64 = {
             let _span = info_span!("rasterize", entries = bins.entries.len()).entered();
             (
@@ -371,6 +372,7 @@ impl FastBackend {
             )
                 .into_par_iter()
                 .enumerate()
+                .with_max_len(1)
                 .map_init(
                     || (Vec::new(), ForwardScratch::default()),
                     |(list, scratch), (t, (sums, transmittance, contributors))| {
@@ -443,46 +445,49 @@ impl FastBackend {
         {
             let _span = info_span!("rasterize_backward").entered();
             let slots = SlotWriter::new(&mut slot_grads);
-            (0..grid.count()).into_par_iter().for_each_init(
-                || (Vec::new(), BackwardScratch::default(), Vec::new()),
-                |(list, scratch, local), t| {
-                    let base = t * TILE_PIXELS;
-                    let contributors = &saved.contributors[base..base + TILE_PIXELS];
-                    if contributors.iter().all(|&c| c == 0) {
-                        return;
-                    }
-                    bins.gather(t, list);
-                    scratch.clear();
-                    let [x0, y0, x1, y1] = grid.bounds(t);
-                    for y in y0..y1 {
-                        for x in x0..x1 {
-                            let li = (y - y0) * TILE + x - x0;
-                            let k = y * gb.width + x;
-                            let pixel = pixel_upstream(gb, upstream, &depth_grad, k, eps);
-                            scratch.pixel(
-                                li,
-                                &PixelUpstream {
-                                    transmittance: saved.final_transmittance[base + li],
-                                    contributors: contributors[li],
-                                    ..pixel
-                                },
-                            );
+            (0..grid.count())
+                .into_par_iter()
+                .with_max_len(1)
+                .for_each_init(
+                    || (Vec::new(), BackwardScratch::default(), Vec::new()),
+                    |(list, scratch, local), t| {
+                        let base = t * TILE_PIXELS;
+                        let contributors = &saved.contributors[base..base + TILE_PIXELS];
+                        if contributors.iter().all(|&c| c == 0) {
+                            return;
                         }
-                    }
-                    local.clear();
-                    local.resize(list.len(), LocalGrad::default());
-                    let bounds = [x0, y0, x1, y1].map(|v| v as u32);
-                    tile::backward_tile(self.path, list, bounds, &consts, scratch, local);
-                    let own_slots = &bins.entry_slots[bins.tile_range(t)];
-                    for (&slot, g) in own_slots.iter().zip(local.iter()) {
-                        // SAFETY: `entry_slots` is a permutation of the entries (`project_and_bin`
-                        // hands out each slot once, to one entry) and this tile alone owns the
-                        // entries of `tile_range(t)`, so no other thread writes this slot, and
-                        // nothing reads the slots until the parallel loop has ended.
-                        unsafe { slots.write(slot, *g) };
-                    }
-                },
-            );
+                        bins.gather(t, list);
+                        scratch.clear();
+                        let [x0, y0, x1, y1] = grid.bounds(t);
+                        for y in y0..y1 {
+                            for x in x0..x1 {
+                                let li = (y - y0) * TILE + x - x0;
+                                let k = y * gb.width + x;
+                                let pixel = pixel_upstream(gb, upstream, &depth_grad, k, eps);
+                                scratch.pixel(
+                                    li,
+                                    &PixelUpstream {
+                                        transmittance: saved.final_transmittance[base + li],
+                                        contributors: contributors[li],
+                                        ..pixel
+                                    },
+                                );
+                            }
+                        }
+                        local.clear();
+                        local.resize(list.len(), LocalGrad::default());
+                        let bounds = [x0, y0, x1, y1].map(|v| v as u32);
+                        tile::backward_tile(self.path, list, bounds, &consts, scratch, local);
+                        let own_slots = &bins.entry_slots[bins.tile_range(t)];
+                        for (&slot, g) in own_slots.iter().zip(local.iter()) {
+                            // SAFETY: `entry_slots` is a permutation of the entries (`project_and_bin`
+                            // hands out each slot once, to one entry) and this tile alone owns the
+                            // entries of `tile_range(t)`, so no other thread writes this slot, and
+                            // nothing reads the slots until the parallel loop has ended.
+                            unsafe { slots.write(slot, *g) };
+                        }
+                    },
+                );
         }
 
         // Per surfel, its entries in tile order: a fixed order, no shared writes.

@@ -29,8 +29,9 @@
 //! weights on the surface position is not differentiated (the shader does not take position
 //! gradients).
 //!
-//! Threading: probe rendering is parallel over (anchor, texel row) with rayon, prefiltering over
-//! output texels; lookups are read-only and shared by the shader's threads.
+//! Threading: probe rendering is parallel over (anchor, texel row) with rayon, prefiltering and
+//! the texel-major interleave over output texels; lookups are read-only and shared by the
+//! shader's threads.
 
 use std::sync::Arc;
 
@@ -43,6 +44,7 @@ use crate::core::envmap::grid::Tap;
 use crate::core::envmap::{
     inverse_activate, texel_dir, CubeMap, EnvMapError, LookupJacobian, PrefilterPlan, PreparedEnv,
 };
+use crate::core::filled::filled;
 use crate::core::kdtree::KdTree;
 use crate::core::mesh::bvh::Bvh;
 use crate::core::mesh::TriangleMesh;
@@ -214,15 +216,17 @@ pub struct ProbeTexels {
 impl ProbeTexels {
     /// Interleaves the maps of `probes`, all prefiltered with `plan`.
     fn new(probes: &[PreparedEnv], plan: Arc<PrefilterPlan>) -> Self {
-        let interleave = |buffer: &dyn Fn(&PreparedEnv) -> &[f64]| -> Vec<f64> {
+        // Per texel (in parallel), its RGB from every probe in turn.
+        let interleave = |buffer: &(dyn Fn(&PreparedEnv) -> &[f64] + Sync)| -> Vec<f64> {
             let texels = probes.first().map_or(0, |p| buffer(p).len() / 3);
-            let mut out = vec![0.0; texels * probes.len() * 3];
-            for (k, probe) in probes.iter().enumerate() {
-                for (t, rgb) in buffer(probe).chunks_exact(3).enumerate() {
-                    let at = (t * probes.len() + k) * 3;
-                    out[at..at + 3].copy_from_slice(rgb);
-                }
-            }
+            let mut out = filled(texels * probes.len() * 3, 0.0);
+            out.par_chunks_mut((probes.len() * 3).max(1))
+                .enumerate()
+                .for_each(|(t, row)| {
+                    for (rgb, probe) in row.chunks_exact_mut(3).zip(probes) {
+                        rgb.copy_from_slice(&buffer(probe)[t * 3..t * 3 + 3]);
+                    }
+                });
             out
         };
         ProbeTexels {

@@ -184,6 +184,19 @@ fn ground_truth_stokes(
     }
 }
 
+/// Ground-truth S0 of a test view, where [`ground_truth_stokes`] finds Stokes ground truth (only
+/// S0 is read).
+fn ground_truth_s0(view: &View, capture: &Capture) -> Result<Option<Vec<f64>>, ImageError> {
+    if let Measurement::Stokes { s0, .. } = &view.measurement {
+        return Ok(Some(to_f64(s0)));
+    }
+    let gt = &view.ground_truth;
+    match (&gt.s0, &gt.s1, &gt.s2) {
+        (Some(s0), Some(_), Some(_)) => Ok(Some(read_truth(s0, 3, capture, Truth::Radiance)?)),
+        _ => Ok(None),
+    }
+}
+
 /// Per-pixel grey (channel mean) of an interleaved RGB image.
 fn grey(rgb: &[f64]) -> Vec<f64> {
     rgb.chunks_exact(3)
@@ -214,6 +227,55 @@ fn image_comparison(
         Measurement::Rgb { image } => (rendered.premultiplied(&s.s0), to_f64(image)),
         Measurement::Stokes { s0, .. } => (rendered.premultiplied(&s.s0), to_f64(s0)),
     }
+}
+
+/// The photometric prediction of a test view and its target, interleaved RGB: S0 against the
+/// Stokes ground truth's S0 where there is one (`gt_s0`), else [`image_comparison`].
+fn photometric_pair(
+    view: &View,
+    rendered: &RenderedView,
+    gt_s0: Option<&[f64]>,
+    angles: &BTreeMap<String, f64>,
+) -> (Vec<f64>, Vec<f64>) {
+    match gt_s0 {
+        Some(t0) => (rendered.premultiplied(&rendered.shaded.s0), t0.to_vec()),
+        None => image_comparison(view, rendered, angles),
+    }
+}
+
+/// The mask of a test view as the metrics take it.
+fn view_mask(view: &View) -> Vec<bool> {
+    view.mask.data.iter().map(|&m| m > 0.5).collect()
+}
+
+/// The mean test-view S0 PSNR of [`evaluate_scaled`] (the same figure, bit for bit), without the
+/// rest of its metrics: what a run reports as it trains. It renders each test view and reads no
+/// ground-truth file besides S0 where S0 is not the view's own measurement (the full evaluation
+/// also reads each view's normal, albedo, roughness and IoR maps at the capture's full size).
+/// `None` when the capture has no test views.
+pub fn test_psnr_scaled(
+    scene: &Scene,
+    radiance_scale: f64,
+    capture: &Capture,
+    angles: &BTreeMap<String, f64>,
+) -> Result<Option<f64>, EvalError> {
+    let _span = tracing::info_span!("test_psnr").entered();
+    let mut means = Means::default();
+    for view in capture.test_views() {
+        let mut rendered = scene.render(&view.camera)?;
+        rendered.shaded.scale_radiance(radiance_scale);
+        let gt_s0 = ground_truth_s0(view, capture)?;
+        let (pred, target) = photometric_pair(view, &rendered, gt_s0.as_deref(), angles);
+        let mask = view_mask(view);
+        let psnr = metrics::psnr_srgb8(&pred, &target, 3, Some(&mask)).map_err(|source| {
+            EvalError::Metrics {
+                view: view.name.clone(),
+                source,
+            }
+        })?;
+        means.add("psnr", Some(psnr));
+    }
+    Ok(means.get("psnr"))
 }
 
 /// Evaluates `scene` on every test view of `capture`. `angles` are the learned polarizer angles in
@@ -250,14 +312,12 @@ pub fn evaluate_scaled(
         rendered.shaded.scale_radiance(radiance_scale);
         let g = rendered.gbuffers();
         let (w, h) = (g.width, g.height);
-        let mask_pixels: Vec<bool> = view.mask.data.iter().map(|&m| m > 0.5).collect();
+        let mask_pixels = view_mask(view);
         let mask = Some(mask_pixels.as_slice());
         let s = &rendered.shaded;
         let gt_stokes = ground_truth_stokes(view, capture)?;
-        let (pred0, target0) = match &gt_stokes {
-            Some([t0, _, _]) => (rendered.premultiplied(&s.s0), t0.clone()),
-            None => image_comparison(view, &rendered, angles),
-        };
+        let gt_s0 = gt_stokes.as_ref().map(|[t0, _, _]| t0.as_slice());
+        let (pred0, target0) = photometric_pair(view, &rendered, gt_s0, angles);
         means.add(
             "psnr",
             Some(metrics::psnr_srgb8(&pred0, &target0, 3, mask).map_err(metric_err)?),

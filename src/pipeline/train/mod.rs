@@ -951,16 +951,12 @@ impl Run<'_> {
         state: &TrainState,
         light: &dyn LightProbe,
     ) -> Result<Option<f64>, TrainError> {
-        if self.capture.test_views().next().is_none() {
-            return Ok(None);
-        }
-        let report = evaluate::evaluate_scaled(
+        Ok(evaluate::test_psnr_scaled(
             &self.scene(state, light),
             self.radiance_scale,
             self.capture,
             &state.polarizer_angles,
-        )?;
-        Ok(report.psnr)
+        )?)
     }
 
     /// Writes the model folder and `metrics.json`.

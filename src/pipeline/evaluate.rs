@@ -12,7 +12,7 @@ use thiserror::Error;
 
 use crate::core::metrics::{self, MetricsError};
 use crate::core::render::{RenderError, RenderedView, Scene};
-use crate::formats::image_io::{self, ImageError};
+use crate::formats::image_io::{self, Image, ImageError};
 use crate::io::capture::{resample, Capture, Measurement, PolarizerAngle, View};
 
 /// The JSON printed by `phygap eval` (keys fixed by the CLI contract).
@@ -162,39 +162,52 @@ pub(crate) fn read_truth(
     Ok(values)
 }
 
-fn to_f64(img: &crate::formats::image_io::Image) -> Vec<f64> {
+fn to_f64(img: &Image) -> Vec<f64> {
     img.to_rgb().data.iter().map(|&v| f64::from(v)).collect()
 }
 
-/// Ground-truth Stokes of a test view: from its measurement, else from `s*_path` ground truth.
+/// Where a test view's Stokes ground truth is: its own Stokes measurement, else its `s*_path`
+/// ground-truth files when it names all three.
+enum StokesTruth<'a> {
+    Measured([&'a Image; 3]),
+    Files([&'a Path; 3]),
+}
+
+impl<'a> StokesTruth<'a> {
+    fn of(view: &'a View) -> Option<Self> {
+        if let Measurement::Stokes { s0, s1, s2 } = &view.measurement {
+            return Some(StokesTruth::Measured([s0, s1, s2]));
+        }
+        let gt = &view.ground_truth;
+        match (&gt.s0, &gt.s1, &gt.s2) {
+            (Some(a), Some(b), Some(c)) => Some(StokesTruth::Files([a, b, c])),
+            _ => None,
+        }
+    }
+
+    /// Component `k` (0 = S0) as interleaved RGB at the capture's working resolution.
+    fn read(&self, k: usize, capture: &Capture) -> Result<Vec<f64>, ImageError> {
+        match self {
+            StokesTruth::Measured(images) => Ok(to_f64(images[k])),
+            StokesTruth::Files(paths) => read_truth(paths[k], 3, capture, Truth::Radiance),
+        }
+    }
+}
+
+/// Ground-truth Stokes of a test view ([`StokesTruth`]), `None` where it has none.
 fn ground_truth_stokes(
     view: &View,
     capture: &Capture,
 ) -> Result<Option<[Vec<f64>; 3]>, ImageError> {
-    if let Measurement::Stokes { s0, s1, s2 } = &view.measurement {
-        return Ok(Some([to_f64(s0), to_f64(s1), to_f64(s2)]));
-    }
-    let gt = &view.ground_truth;
-    match (&gt.s0, &gt.s1, &gt.s2) {
-        (Some(a), Some(b), Some(c)) => {
-            let read = |path| read_truth(path, 3, capture, Truth::Radiance);
-            Ok(Some([read(a)?, read(b)?, read(c)?]))
-        }
-        _ => Ok(None),
-    }
-}
-
-/// Ground-truth S0 of a test view, where [`ground_truth_stokes`] finds Stokes ground truth (only
-/// S0 is read).
-fn ground_truth_s0(view: &View, capture: &Capture) -> Result<Option<Vec<f64>>, ImageError> {
-    if let Measurement::Stokes { s0, .. } = &view.measurement {
-        return Ok(Some(to_f64(s0)));
-    }
-    let gt = &view.ground_truth;
-    match (&gt.s0, &gt.s1, &gt.s2) {
-        (Some(s0), Some(_), Some(_)) => Ok(Some(read_truth(s0, 3, capture, Truth::Radiance)?)),
-        _ => Ok(None),
-    }
+    StokesTruth::of(view)
+        .map(|t| {
+            Ok([
+                t.read(0, capture)?,
+                t.read(1, capture)?,
+                t.read(2, capture)?,
+            ])
+        })
+        .transpose()
 }
 
 /// Per-pixel grey (channel mean) of an interleaved RGB image.
@@ -234,11 +247,11 @@ fn image_comparison(
 fn photometric_pair(
     view: &View,
     rendered: &RenderedView,
-    gt_s0: Option<&[f64]>,
+    gt_s0: Option<Vec<f64>>,
     angles: &BTreeMap<String, f64>,
 ) -> (Vec<f64>, Vec<f64>) {
     match gt_s0 {
-        Some(t0) => (rendered.premultiplied(&rendered.shaded.s0), t0.to_vec()),
+        Some(t0) => (rendered.premultiplied(&rendered.shaded.s0), t0),
         None => image_comparison(view, rendered, angles),
     }
 }
@@ -264,8 +277,10 @@ pub fn test_psnr_scaled(
     for view in capture.test_views() {
         let mut rendered = scene.render(&view.camera)?;
         rendered.shaded.scale_radiance(radiance_scale);
-        let gt_s0 = ground_truth_s0(view, capture)?;
-        let (pred, target) = photometric_pair(view, &rendered, gt_s0.as_deref(), angles);
+        let gt_s0 = StokesTruth::of(view)
+            .map(|t| t.read(0, capture))
+            .transpose()?;
+        let (pred, target) = photometric_pair(view, &rendered, gt_s0, angles);
         let mask = view_mask(view);
         let psnr = metrics::psnr_srgb8(&pred, &target, 3, Some(&mask)).map_err(|source| {
             EvalError::Metrics {
@@ -316,7 +331,7 @@ pub fn evaluate_scaled(
         let mask = Some(mask_pixels.as_slice());
         let s = &rendered.shaded;
         let gt_stokes = ground_truth_stokes(view, capture)?;
-        let gt_s0 = gt_stokes.as_ref().map(|[t0, _, _]| t0.as_slice());
+        let gt_s0 = gt_stokes.as_ref().map(|[t0, _, _]| t0.clone());
         let (pred0, target0) = photometric_pair(view, &rendered, gt_s0, angles);
         means.add(
             "psnr",

@@ -335,9 +335,8 @@ impl RowConsts {
     fn new(sp: &Splat, group: &Group) -> Self {
         let y = group.y;
         let dy = y - sp.mean[1];
-        // Written out, not `sp.plane.map(..)`: `array::map` calls its closure through a function
-        // that LLVM left out of line and compiled without AVX2, so the AVX2 kernels spilled their
-        // vectors and called it three times per group (6-13% of the backward kernel's samples).
+        // Written out, not `sp.plane.map(..)` (see `super::lanes` on `array::map`): it was three
+        // SSE calls per group, 6–13% of the backward kernel's samples.
         let [r0, r1, r2] = &sp.plane;
         RowConsts {
             p: [y * r0[1] + r0[2], y * r1[1] + r1[2], y * r2[1] + r2[2]],
@@ -514,7 +513,7 @@ pub(super) fn forward_body(
     for (k, sp) in list.iter().enumerate() {
         let (in_tile, offset) = sp.in_tile(tile);
         let entry_count = [k as u32 + 1; LANES];
-        let features = sp.features.map(F32x8::splat);
+        let features: [F32x8; NUM_FEATURES] = std::array::from_fn(|f| F32x8::splat(sp.features[f]));
         for group in Groups::new(in_tile, offset, walk) {
             let done = Mask8(group.load(&s.done));
             let alive = group.inside.and_not(done);
@@ -721,12 +720,12 @@ impl GradLanes {
     #[inline(always)]
     fn reduce(&self) -> LocalGrad {
         LocalGrad {
-            plane: self.plane.map(|r| r.map(F32x8::sum)),
+            plane: std::array::from_fn(|k| std::array::from_fn(|i| self.plane[k][i].sum())),
             det: self.det.sum(),
-            mean: self.mean.map(F32x8::sum),
+            mean: std::array::from_fn(|i| self.mean[i].sum()),
             opacity: self.opacity.sum(),
             view_depth: self.view_depth.sum(),
-            features: self.features.map(F32x8::sum),
+            features: std::array::from_fn(|f| self.features[f].sum()),
         }
     }
 }
@@ -744,7 +743,7 @@ fn backward_body(
     for k in (0..max_contrib.min(list.len())).rev() {
         let sp = &list[k];
         let (in_tile, offset) = sp.in_tile(tile);
-        let features = sp.features.map(F32x8::splat);
+        let features: [F32x8; NUM_FEATURES] = std::array::from_fn(|f| F32x8::splat(sp.features[f]));
         let mut acc = GradLanes::default();
         for group in Groups::new(in_tile, offset, Walk::Rows) {
             let alive = group

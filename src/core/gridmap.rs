@@ -42,7 +42,8 @@ use thiserror::Error;
 
 use crate::core::envmap::grid::Tap;
 use crate::core::envmap::{
-    inverse_activate, texel_dir, CubeMap, EnvMapError, LookupJacobian, PrefilterPlan, PreparedEnv,
+    inverse_activate, texel_dir, CubeMap, CubePoint, EnvMapError, LookupJacobian, PrefilterPlan,
+    PreparedEnv,
 };
 use crate::core::filled::filled;
 use crate::core::kdtree::KdTree;
@@ -428,11 +429,12 @@ impl GridMap {
         self.weights_into(x, weights);
         let (l0, t, dt) = self.global.level_blend(roughness);
         let grids = &self.global.plan().grids;
+        let point = CubePoint::of(dir);
         let mut value = DVec3::ZERO;
         let mut jacobian = LookupJacobian::default();
         let mut per_level = [DVec3::ZERO; 2];
         for (k, (level, scale)) in [(l0, 1.0 - t), (l0 + 1, t)].into_iter().enumerate() {
-            let (taps, dw) = grids[level].taps_with_grad(dir);
+            let (taps, dw) = grids[level].taps_at(&point);
             let blended = self.blend_taps(weights, &taps, |l| &l.levels[level]);
             accumulate_taps(&taps, &dw, &blended, scale, &mut value, &mut jacobian);
             per_level[k] = weighted_sum(&taps, &blended);

@@ -159,12 +159,20 @@ impl CubeGrid {
 
     /// The four bilinear taps of a lookup along `dir` (non-zero, need not be unit).
     pub fn taps(&self, dir: DVec3) -> [Tap; 4] {
-        self.taps_with_grad(dir).0
+        // Inlined, so the gradients nobody reads are not computed.
+        self.taps_at(&CubePoint::of(dir)).0
     }
 
     /// Bilinear taps plus the gradient of each tap weight with respect to `dir`.
     pub fn taps_with_grad(&self, dir: DVec3) -> ([Tap; 4], [DVec3; 4]) {
-        let (face, du, dv, u, v) = dir_to_face_uv_with_grad(dir);
+        self.taps_at(&CubePoint::of(dir))
+    }
+
+    /// [`Self::taps_with_grad`] at a direction already placed on the cube (for lookups of one
+    /// direction in several grids: the levels of a mip chain).
+    #[inline]
+    pub fn taps_at(&self, point: &CubePoint) -> ([Tap; 4], [DVec3; 4]) {
+        let CubePoint { face, u, v, du, dv } = *point;
         let s = self.size as f64;
         // Continuous texel coordinates; texel x has its centre at x.
         let cx = (u + 1.0) * 0.5 * s - 0.5;
@@ -198,6 +206,26 @@ impl CubeGrid {
             .iter()
             .map(|&(t, w)| w * rgb(values, t))
             .sum()
+    }
+}
+
+/// Where a direction meets the cube: its face and face coordinates `(u, v)` ∈ [−1, 1]², with
+/// their gradients in the direction ([`dir_to_face_uv_with_grad`]); the same for every face size.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CubePoint {
+    pub face: usize,
+    pub u: f64,
+    pub v: f64,
+    pub du: DVec3,
+    pub dv: DVec3,
+}
+
+impl CubePoint {
+    /// The point of `dir` (non-zero, need not be unit).
+    #[inline]
+    pub fn of(dir: DVec3) -> Self {
+        let (face, du, dv, u, v) = dir_to_face_uv_with_grad(dir);
+        CubePoint { face, u, v, du, dv }
     }
 }
 

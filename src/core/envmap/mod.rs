@@ -25,7 +25,7 @@ pub mod symmetry;
 use glam::DVec3;
 use thiserror::Error;
 
-pub use grid::{CubeGrid, LookupJacobian};
+pub use grid::{CubeGrid, CubePoint, LookupJacobian};
 pub use latlong::WorldUp;
 pub use prefilter::{EnvGrad, MipChainSpec, PrefilterPlan, PreparedEnv};
 
@@ -183,6 +183,7 @@ pub fn dir_to_face_uv(dir: DVec3) -> (usize, f64, f64) {
 }
 
 /// [`dir_to_face_uv`] with the gradients ∂u/∂dir and ∂v/∂dir.
+#[inline]
 pub fn dir_to_face_uv_with_grad(dir: DVec3) -> (usize, DVec3, DVec3, f64, f64) {
     let a = dir.abs();
     let face = if a.x >= a.y && a.x >= a.z {

@@ -18,7 +18,7 @@ use std::sync::Arc;
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::grid::{add_rgb, rgb, CubeGrid};
+use super::grid::{add_rgb, rgb, CubeGrid, CubePoint};
 use super::orbit_kernel::OrbitKernel;
 use super::{activate, activate_derivative, CubeMap, EnvMapError};
 
@@ -635,9 +635,14 @@ impl PreparedEnv {
     /// bilinear within the two nearest levels, linear between them.
     pub fn specular(&self, dir: DVec3, roughness: f64) -> DVec3 {
         let (l0, t, _) = self.level_blend(roughness);
-        let a = self.plan.grids[l0].sample(&self.levels[l0], dir);
-        let b = self.plan.grids[l0 + 1].sample(&self.levels[l0 + 1], dir);
-        a * (1.0 - t) + b * t
+        let point = CubePoint::of(dir);
+        let sample = |level: usize| -> DVec3 {
+            let (taps, _) = self.plan.grids[level].taps_at(&point);
+            taps.iter()
+                .map(|&(texel, w)| w * rgb(&self.levels[level], texel))
+                .sum()
+        };
+        sample(l0) * (1.0 - t) + sample(l0 + 1) * t
     }
 
     /// Backward of [`Self::specular`]: adds dL/d(level texels) into `grad` and returns
@@ -666,10 +671,11 @@ impl PreparedEnv {
         mut grad: Option<&mut EnvGrad>,
     ) -> (DVec3, f64) {
         let (l0, t, dt) = self.level_blend(roughness);
+        let point = CubePoint::of(dir);
         let mut grad_dir = DVec3::ZERO;
         let mut values = [0.0; 2];
         for (k, (level, scale)) in [(l0, 1.0 - t), (l0 + 1, t)].into_iter().enumerate() {
-            let (taps, dw) = self.plan.grids[level].taps_with_grad(dir);
+            let (taps, dw) = self.plan.grids[level].taps_at(&point);
             for (&(texel, w), dw) in taps.iter().zip(dw) {
                 let v = rgb(&self.levels[level], texel).dot(grad_out);
                 values[k] += w * v;

@@ -157,13 +157,8 @@ impl CubeGrid {
         self.border[(face * p + (y + 1) as usize) * p + (x + 1) as usize] as usize
     }
 
-    /// The four bilinear taps of a lookup along `dir` (non-zero, need not be unit).
-    pub fn taps(&self, dir: DVec3) -> [Tap; 4] {
-        // Inlined, so the gradients nobody reads are not computed.
-        self.taps_at(&CubePoint::of(dir)).0
-    }
-
-    /// Bilinear taps plus the gradient of each tap weight with respect to `dir`.
+    /// The four bilinear taps of a lookup along `dir` (non-zero, need not be unit), plus the
+    /// gradient of each tap weight with respect to `dir`.
     pub fn taps_with_grad(&self, dir: DVec3) -> ([Tap; 4], [DVec3; 4]) {
         self.taps_at(&CubePoint::of(dir))
     }
@@ -202,7 +197,15 @@ impl CubeGrid {
 
     /// Bilinear lookup of an RGB texel buffer (`values[t · 3 + c]`).
     pub fn sample(&self, values: &[f64], dir: DVec3) -> DVec3 {
-        self.taps(dir)
+        self.sample_at(values, &CubePoint::of(dir))
+    }
+
+    /// [`Self::sample`] at a direction already placed on the cube.
+    #[inline]
+    pub fn sample_at(&self, values: &[f64], point: &CubePoint) -> DVec3 {
+        // Inlined, so the tap gradients nobody reads are not computed.
+        self.taps_at(point)
+            .0
             .iter()
             .map(|&(t, w)| w * rgb(values, t))
             .sum()

@@ -636,12 +636,7 @@ impl PreparedEnv {
     pub fn specular(&self, dir: DVec3, roughness: f64) -> DVec3 {
         let (l0, t, _) = self.level_blend(roughness);
         let point = CubePoint::of(dir);
-        let sample = |level: usize| -> DVec3 {
-            let (taps, _) = self.plan.grids[level].taps_at(&point);
-            taps.iter()
-                .map(|&(texel, w)| w * rgb(&self.levels[level], texel))
-                .sum()
-        };
+        let sample = |level: usize| self.plan.grids[level].sample_at(&self.levels[level], &point);
         sample(l0) * (1.0 - t) + sample(l0 + 1) * t
     }
 

@@ -106,6 +106,12 @@ impl F32x8 {
         F32x8([v; LANES])
     }
 
+    /// [`Self::splat`] of each value.
+    #[inline(always)]
+    pub fn splat_each<const N: usize>(values: &[f32; N]) -> [Self; N] {
+        std::array::from_fn(|i| Self::splat(values[i]))
+    }
+
     /// `start, start + 1, …, start + 7`.
     #[inline(always)]
     pub fn ramp(start: f32) -> Self {

@@ -127,14 +127,11 @@ impl Splat {
     #[inline(always)]
     fn in_tile(&self, tile: [u32; 4]) -> ([usize; 4], [f32; 2]) {
         let r = self.rect;
-        let local = [
-            r[0].clamp(tile[0], tile[2]) - tile[0],
-            r[1].clamp(tile[1], tile[3]) - tile[1],
-            r[2].clamp(tile[0], tile[2]) - tile[0],
-            r[3].clamp(tile[1], tile[3]) - tile[1],
-        ];
+        let local =
+            |k: usize, axis: usize| (r[k].clamp(tile[axis], tile[axis + 2]) - tile[axis]) as usize;
         let offset = [tile[0] as f32 - r[0] as f32, tile[1] as f32 - r[1] as f32];
-        (local.map(|v| v as usize), offset)
+        // No `array::map` in a kernel (see `super::lanes`).
+        ([local(0, 0), local(1, 1), local(2, 0), local(3, 1)], offset)
     }
 }
 
@@ -514,7 +511,7 @@ pub(super) fn forward_body(
     for (k, sp) in list.iter().enumerate() {
         let (in_tile, offset) = sp.in_tile(tile);
         let entry_count = [k as u32 + 1; LANES];
-        let features: [F32x8; NUM_FEATURES] = std::array::from_fn(|f| F32x8::splat(sp.features[f]));
+        let features = F32x8::splat_each(&sp.features);
         for group in Groups::new(in_tile, offset, walk) {
             let done = Mask8(group.load(&s.done));
             let alive = group.inside.and_not(done);
@@ -744,7 +741,7 @@ fn backward_body(
     for k in (0..max_contrib.min(list.len())).rev() {
         let sp = &list[k];
         let (in_tile, offset) = sp.in_tile(tile);
-        let features: [F32x8; NUM_FEATURES] = std::array::from_fn(|f| F32x8::splat(sp.features[f]));
+        let features = F32x8::splat_each(&sp.features);
         let mut acc = GradLanes::default();
         for group in Groups::new(in_tile, offset, Walk::Rows) {
             let alive = group

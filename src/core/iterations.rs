@@ -95,9 +95,9 @@ impl std::str::FromStr for Iterations {
         if text == "auto" {
             return Ok(Iterations::Auto);
         }
-        text.parse::<u32>()
-            .map(Iterations::Fixed)
-            .map_err(|_| format!("`{text}`: expected auto or a number of steps"))
+        text.parse::<u32>().map(Iterations::Fixed).map_err(|_| {
+            format!("`{text}`: expected auto or a number of steps in 1..={MAX_ITERATIONS}")
+        })
     }
 }
 
@@ -114,7 +114,11 @@ impl Serialize for Iterations {
 impl<'de> Deserialize<'de> for Iterations {
     /// A number of steps, or a string as [`FromStr`](std::str::FromStr) reads it.
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        crate::core::setting::deserialize_number_or_text(deserializer, Iterations::Fixed)
+        crate::core::setting::deserialize_number_or_text(
+            deserializer,
+            "iterations",
+            Iterations::Fixed,
+        )
     }
 }
 

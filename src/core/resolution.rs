@@ -111,7 +111,11 @@ impl Serialize for Resolution {
 impl<'de> Deserialize<'de> for Resolution {
     /// A string as [`FromStr`](std::str::FromStr) reads it, or a number (a longest side).
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        crate::core::setting::deserialize_number_or_text(deserializer, Resolution::LongestSide)
+        crate::core::setting::deserialize_number_or_text(
+            deserializer,
+            "resolution",
+            Resolution::LongestSide,
+        )
     }
 }
 

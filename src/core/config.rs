@@ -275,6 +275,20 @@ pub struct TrainConfig {
     /// meanwhile runs when they are over.
     #[arg(long, default_value_t = TrainConfig::default().opacity_recovery_steps)]
     pub opacity_recovery_steps: u32,
+
+    /// Whether the export fails when no mesh can be extracted (the TSDF of the model's depth
+    /// has no zero crossing, as after a run too short to form a surface). Off: the export goes
+    /// on without `mesh.ply` and `model.glb` and says why in `metrics.json`'s `warnings` (a
+    /// service job succeeds with that warning).
+    #[arg(
+        long,
+        value_name = "on|off",
+        value_parser = parse_switch,
+        action = clap::ArgAction::Set,
+        // The struct's default, in the flag's own words.
+        default_value = "off"
+    )]
+    pub require_mesh: bool,
 }
 
 impl Default for TrainConfig {
@@ -329,6 +343,7 @@ impl Default for TrainConfig {
             mesh_interval: 1_000,
             gridmap_interval: 300,
             opacity_recovery_steps: 300,
+            require_mesh: false,
         }
     }
 }

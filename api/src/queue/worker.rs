@@ -586,6 +586,11 @@ fn execute_steps(
             state
                 .pipeline
                 .export(&model_dir, Some(&capture_dir), &staging)?;
+            // What the export went without (a mesh that could not be extracted) shows on the job.
+            for message in phygap::pipeline::export::warnings(&staging) {
+                let iteration = live.progress.lock().map_or(0, |p| p.iteration);
+                live.record(&TrainEvent::Warning { iteration, message });
+            }
         }
         JobSpec::Relight {
             parent_job_id,

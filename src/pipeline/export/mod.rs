@@ -11,7 +11,7 @@ use glam::DVec3;
 use thiserror::Error;
 
 use crate::core::envmap::EnvMapError;
-use crate::core::mesh::TriangleMesh;
+use crate::core::mesh::{MeshError, TriangleMesh};
 use crate::formats::image_io::{self, ImageError};
 use crate::io::capture::{self, CaptureError};
 use crate::io::model::{Model, ModelError, LATLONG_HEIGHT, TEST_CAMERAS_FILE};
@@ -57,7 +57,7 @@ const COPIED: [&str; 5] = [
     "surfels.ply",
     ENVMAP_EXR_FILE,
     "config.json",
-    "metrics.json",
+    METRICS_FILE,
     "model.json",
 ];
 
@@ -69,6 +69,49 @@ pub const GLB_FILE: &str = "model.glb";
 
 /// The lat-long environment map (copied from the model folder, written when it lacks one).
 pub const ENVMAP_EXR_FILE: &str = "envmap.exr";
+
+/// The run's metrics (copied from the model folder); the export adds its `warnings` (a list of
+/// text, e.g. why there is no mesh).
+pub const METRICS_FILE: &str = "metrics.json";
+
+/// Appends `warning` to the `warnings` of the metrics file at `path` (made if missing).
+fn add_warning(path: &Path, warning: &str) -> Result<(), ExportError> {
+    let io = |source| ExportError::Io {
+        path: path.to_owned(),
+        source,
+    };
+    let mut metrics = match std::fs::read(path) {
+        Ok(bytes) => serde_json::from_slice::<serde_json::Value>(&bytes)
+            .ok()
+            .filter(serde_json::Value::is_object)
+            .unwrap_or_else(|| serde_json::json!({})),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => serde_json::json!({}),
+        Err(e) => return Err(io(e)),
+    };
+    if let Some(object) = metrics.as_object_mut() {
+        let list = object
+            .entry("warnings")
+            .or_insert_with(|| serde_json::json!([]));
+        if !list.is_array() {
+            *list = serde_json::json!([]);
+        }
+        if let Some(list) = list.as_array_mut() {
+            list.push(warning.into());
+        }
+    }
+    let text = serde_json::to_vec_pretty(&metrics).map_err(|e| io(e.into()))?;
+    std::fs::write(path, text).map_err(io)
+}
+
+/// The warnings an export left in `out_dir`'s metrics (none when it left none).
+pub fn warnings(out_dir: &Path) -> Vec<String> {
+    std::fs::read(out_dir.join(METRICS_FILE))
+        .ok()
+        .and_then(|bytes| serde_json::from_slice::<serde_json::Value>(&bytes).ok())
+        .and_then(|metrics| metrics.get("warnings").cloned())
+        .and_then(|list| serde_json::from_value::<Vec<String>>(list).ok())
+        .unwrap_or_default()
+}
 
 /// Kinds rendered for every test camera (DoLP and AoLP: the polarization the model predicts).
 const RENDERED: [&str; 5] = ["s0", "normal", "albedo", "dolp", "aolp"];
@@ -116,13 +159,29 @@ pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportEr
             written.push(to);
         }
     }
-    let mesh = mesh_extraction::extract_from_model(&model, DEFAULT_MESH_RESOLUTION)?;
-    let mesh_path = out_dir.join(MESH_FILE);
-    mesh_extraction::write_mesh(&mesh, &mesh_path)?;
-    written.push(mesh_path);
-    let glb_path = out_dir.join(GLB_FILE);
-    write_model_glb(&model, &mesh, &glb_path)?;
-    written.push(glb_path);
+    let mesh = match mesh_extraction::extract_from_model(&model, DEFAULT_MESH_RESOLUTION) {
+        Ok(mesh) => Some(mesh),
+        // A run too short to form a surface still has its light, materials and renders.
+        Err(MeshingError::Mesh(MeshError::NoSurface)) if !model.config.require_mesh => {
+            let warning = format!("no {MESH_FILE} or {GLB_FILE}: {}", MeshError::NoSurface);
+            tracing::warn!(%warning, "exporting without a mesh");
+            let metrics = out_dir.join(METRICS_FILE);
+            add_warning(&metrics, &warning)?;
+            if !written.contains(&metrics) {
+                written.push(metrics);
+            }
+            None
+        }
+        Err(e) => return Err(e.into()),
+    };
+    if let Some(mesh) = mesh {
+        let mesh_path = out_dir.join(MESH_FILE);
+        mesh_extraction::write_mesh(&mesh, &mesh_path)?;
+        written.push(mesh_path);
+        let glb_path = out_dir.join(GLB_FILE);
+        write_model_glb(&model, &mesh, &glb_path)?;
+        written.push(glb_path);
+    }
     let up = model.world_up()?;
     let latlong = model.envmap.to_latlong(LATLONG_HEIGHT, up);
     let exr_path = out_dir.join(ENVMAP_EXR_FILE);

@@ -97,7 +97,9 @@ def translate(error: httpx.HTTPError) -> PhygapError:
         return Timeout(f"timed out: {error}")
     if isinstance(error, (httpx.UnsupportedProtocol, httpx.InvalidURL)):
         return BadInput(f"bad URL: {error}")
-    return ConnectionError(f"{type(error).__name__}: {error}" if str(error) else type(error).__name__)
+    return ConnectionError(
+        f"{type(error).__name__}: {error}" if str(error) else type(error).__name__
+    )
 
 
 class Transport:

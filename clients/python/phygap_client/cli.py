@@ -43,7 +43,9 @@ def _parser() -> argparse.ArgumentParser:
     submit.add_argument("--config", help="training settings: a JSON file, or JSON text")
     submit.add_argument("--iterations", help="training steps (a number, or auto)")
     submit.add_argument("--wait", action="store_true", help="wait for the job to end")
-    submit.add_argument("--download", metavar="DIR", help="download every artifact (implies --wait)")
+    submit.add_argument(
+        "--download", metavar="DIR", help="download every artifact (implies --wait)"
+    )
 
     wait = commands.add_parser("wait", help="wait for a job to end")
     wait.add_argument("job")

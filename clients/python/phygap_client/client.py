@@ -17,7 +17,7 @@ import httpx
 
 from . import _archive
 from ._transport import RetryPolicy, Safety, Transport, guarded
-from .errors import BadInput, ConnectionError, JobFailed, ServiceError, Timeout
+from .errors import BadInput, ConnectionError, JobFailed, PhygapError, ServiceError, Timeout
 from .models import ENDED, Artifact, Capture, Job, PathLike, ProgressEvent, ServiceInfo, Upload
 
 __all__ = ["Client", "ProgressBar", "PART_BYTES", "DEFAULT_URL"]
@@ -446,9 +446,7 @@ class Client:
         return Job.from_json(data, self)
 
     @_public
-    def restart(
-        self, job: Union[str, Job], config: Optional[Mapping[str, Any]] = None
-    ) -> Job:
+    def restart(self, job: Union[str, Job], config: Optional[Mapping[str, Any]] = None) -> Job:
         """Runs a failed or cancelled job again: from its last checkpoint, or over with the
         settings in `config` changed. Sent again only when it certainly did not arrive."""
         body: dict[str, Any] = {"config": dict(config)} if config else {}
@@ -548,10 +546,14 @@ class Client:
         for artifact in self.artifacts(job):
             relative = PurePosixPath(artifact.name)
             if relative.is_absolute() or ".." in relative.parts or not relative.parts:
-                raise ServiceError(200, "unsafe_name", f"artifact name {artifact.name!r}")
+                raise PhygapError(
+                    f"the service named an artifact outside the folder: {artifact.name!r}"
+                )
             if on_file is not None:
                 on_file(artifact)
-            paths.append(self._download(artifact.job_id, artifact.name, root.joinpath(*relative.parts)))
+            paths.append(
+                self._download(artifact.job_id, artifact.name, root.joinpath(*relative.parts))
+            )
         return paths
 
     @_public
@@ -592,4 +594,3 @@ class Client:
 
         response = self._transport.call(Safety.UNSENT, attempt)
         return Job.from_json(response.json(), self)
-

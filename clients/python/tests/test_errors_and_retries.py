@@ -52,8 +52,18 @@ def test_503_and_429_are_retried_honouring_retry_after() -> None:
         if request.path == "/v1/info":
             if len([s for s in seen if s.path == "/v1/info"]) < 2:
                 return error(503, "store_unavailable", {"retry-after": "1"})
-            return 200, {}, {"version": "9", "engines": {}, "limits": {}, "queue": {},
-                             "workers": 1, "account": None}
+            return (
+                200,
+                {},
+                {
+                    "version": "9",
+                    "engines": {},
+                    "limits": {},
+                    "queue": {},
+                    "workers": 1,
+                    "account": None,
+                },
+            )
         if request.path == "/v1/jobs":
             if not [s for s in seen if s.path == "/v1/jobs"]:
                 return error(429, "queued_job_limit", {"retry-after": "1"})

@@ -68,8 +68,14 @@ def test_submit_waits_and_downloads(server: Server, capture_dir: Path, tmp_path:
     config = tmp_path / "config.json"
     config.write_text(json.dumps(QUICK))
     result = run_command(
-        server, "submit", str(capture_dir), "--config", str(config), "--wait",
-        "--download", str(tmp_path / "out"),
+        server,
+        "submit",
+        str(capture_dir),
+        "--config",
+        str(config),
+        "--wait",
+        "--download",
+        str(tmp_path / "out"),
     )
     assert result.returncode == 0, result.stderr
     assert "succeeded" in result.stdout

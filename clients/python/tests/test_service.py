@@ -60,9 +60,7 @@ def test_archives_upload_zip_and_tar(phygap: Client, capture_dir: Path, tmp_path
         assert phygap.upload(archive_path).views == 10
 
 
-def test_a_large_upload_resumes_where_it_stopped(
-    phygap: Client, padded_capture_dir: Path
-) -> None:
+def test_a_large_upload_resumes_where_it_stopped(phygap: Client, padded_capture_dir: Path) -> None:
     class Interrupted(Exception):
         pass
 
@@ -107,8 +105,9 @@ def test_unknown_things_are_not_found(phygap: Client) -> None:
 def test_a_job_runs_and_reports_its_events(phygap: Client, capture_dir: Path) -> None:
     capture = phygap.upload(capture_dir)
     job = capture.train(QUICK, idempotency_key="client-test-events", max_runtime_seconds=600)
-    again = phygap.train(capture.id, QUICK, idempotency_key="client-test-events",
-                         max_runtime_seconds=600)
+    again = phygap.train(
+        capture.id, QUICK, idempotency_key="client-test-events", max_runtime_seconds=600
+    )
     assert again.id == job.id
     assert (job.priority, job.max_runtime_seconds, job.kind) == (0, 600, "train")
     events: list[ProgressEvent] = []
@@ -141,8 +140,9 @@ def test_download_all_keeps_the_folders(trained: Job, tmp_path: Path) -> None:
 
 
 def test_a_cut_download_resumes(trained: Job, tmp_path: Path) -> None:
-    name = next(a.name for a in trained.artifacts() if a.name.endswith(".ply") or a.name ==
-                "surfels.ply")
+    name = next(
+        a.name for a in trained.artifacts() if a.name.endswith(".ply") or a.name == "surfels.ply"
+    )
     target = tmp_path / "whole" / name
     trained.download(name, target)
     whole = target.read_bytes()
@@ -227,12 +227,14 @@ def test_negative_iterations_name_the_field_and_its_range(
     with pytest.raises(ServiceError) as raised:
         capture.train({"iterations": -5})
     assert raised.value.status == 422
-    assert "iterations" in raised.value.message and "1..=1000000" in raised.value.message, (
-        raised.value.message
-    )
+    assert (
+        "iterations" in raised.value.message and "1..=1000000" in raised.value.message
+    ), raised.value.message
 
 
-def test_token_travels_from_the_environment(server: Server, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_token_travels_from_the_environment(
+    server: Server, monkeypatch: pytest.MonkeyPatch
+) -> None:
     monkeypatch.setenv("PHYGAP_TOKEN", TOKEN)
     monkeypatch.setenv("PHYGAP_URL", server.url)
     with Client() as client:

@@ -63,7 +63,13 @@ enum Piece<'a> {
 fn pieces(text: &str) -> Vec<Piece<'_>> {
     let mut out = Vec::new();
     let mut fence: Option<&str> = None;
-    for line in text.lines() {
+    // Where the paragraph being read starts: code spans may run over its line breaks.
+    let mut paragraph: Option<usize> = None;
+    let mut offset = 0;
+    for raw in text.split_inclusive('\n') {
+        let start = offset;
+        offset += raw.len();
+        let line = raw.trim_end_matches(['\n', '\r']);
         let trimmed = line.trim_start();
         if let Some(marker) = fence {
             if trimmed.starts_with(marker) {
@@ -73,27 +79,40 @@ fn pieces(text: &str) -> Vec<Piece<'_>> {
             }
             continue;
         }
-        if trimmed.starts_with("```") || trimmed.starts_with("~~~") {
-            fence = Some(&trimmed[..3]);
-            continue;
-        }
-        if let Some(rest) = trimmed.strip_prefix('#') {
-            let level = 1 + rest.chars().take_while(|c| *c == '#').count();
-            out.push(Piece::Heading(level, rest.trim_start_matches('#').trim()));
-            continue;
-        }
-        let mut prose = String::new();
-        for (i, part) in line.split('`').enumerate() {
-            if i % 2 == 1 {
-                out.push(Piece::Span(part));
-            } else {
-                prose.push_str(part);
-                prose.push(' ');
+        let opens_fence = trimmed.starts_with("```") || trimmed.starts_with("~~~");
+        let heading = trimmed.strip_prefix('#');
+        if opens_fence || heading.is_some() || trimmed.is_empty() {
+            if let Some(first) = paragraph.take() {
+                paragraph_pieces(&text[first..start], &mut out);
             }
         }
-        out.push(Piece::Prose(prose));
+        if opens_fence {
+            fence = Some(&trimmed[..3]);
+        } else if let Some(rest) = heading {
+            let level = 1 + rest.chars().take_while(|c| *c == '#').count();
+            out.push(Piece::Heading(level, rest.trim_start_matches('#').trim()));
+        } else if !trimmed.is_empty() {
+            paragraph.get_or_insert(start);
+        }
+    }
+    if let Some(first) = paragraph {
+        paragraph_pieces(&text[first..], &mut out);
     }
     out
+}
+
+/// A paragraph's code spans, then its prose with each span replaced by a space.
+fn paragraph_pieces<'a>(paragraph: &'a str, out: &mut Vec<Piece<'a>>) {
+    let mut prose = String::new();
+    for (i, part) in paragraph.split('`').enumerate() {
+        if i % 2 == 1 {
+            out.push(Piece::Span(part));
+            prose.push(' ');
+        } else {
+            prose.push_str(part);
+        }
+    }
+    out.push(Piece::Prose(prose));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -110,7 +129,7 @@ fn source_paths(text: &str) -> Vec<&str> {
         })
         // Two components at least (`store/` alone is relative to the sentence's folder).
         .filter(|t| t.trim_end_matches('/').contains('/'))
-        .filter(|t| !t.contains([' ', '*', '{', '#']) && !t.contains("://"))
+        .filter(|t| !t.contains([' ', '\n', '*', '{', '#']) && !t.contains("://"))
         .filter(|t| !t.starts_with("..") && !t.starts_with('/'))
         .filter(|t| SUFFIXES.iter().any(|s| t.ends_with(s)))
         .collect()
@@ -152,27 +171,29 @@ fn link_targets(text: &str) -> Vec<String> {
     let mut targets = Vec::new();
     for piece in pieces(text) {
         let Piece::Prose(prose) = piece else { continue };
-        let trimmed = prose.trim_start();
-        if trimmed.starts_with('[') {
-            if let Some((label, target)) = trimmed.split_once("]:") {
-                if !label.contains(']') {
-                    targets.push(target.split_whitespace().next().unwrap_or("").to_owned());
-                    continue;
+        for line in prose.lines() {
+            let trimmed = line.trim_start();
+            if trimmed.starts_with('[') {
+                if let Some((label, target)) = trimmed.split_once("]:") {
+                    if !label.contains(']') {
+                        targets.push(target.split_whitespace().next().unwrap_or("").to_owned());
+                        continue;
+                    }
                 }
             }
-        }
-        let mut rest = prose.as_str();
-        while let Some(at) = rest.find("](") {
-            let after = &rest[at + 2..];
-            let end = after.find(')').unwrap_or(after.len());
-            let inside = after[..end].trim();
-            let target = match inside.strip_prefix('<') {
-                Some(angled) => angled.split('>').next().unwrap_or(""),
-                // `[text](path "title")`
-                None => inside.split_whitespace().next().unwrap_or(""),
-            };
-            targets.push(target.to_owned());
-            rest = &after[end..];
+            let mut rest = line;
+            while let Some(at) = rest.find("](") {
+                let after = &rest[at + 2..];
+                let end = after.find(')').unwrap_or(after.len());
+                let inside = after[..end].trim();
+                let target = match inside.strip_prefix('<') {
+                    Some(angled) => angled.split('>').next().unwrap_or(""),
+                    // `[text](path "title")`
+                    None => inside.split_whitespace().next().unwrap_or(""),
+                };
+                targets.push(target.to_owned());
+                rest = &after[end..];
+            }
         }
     }
     targets
@@ -567,7 +588,8 @@ fn flags_belong_to_the_command_before_them_or_to_the_section() {
     let text = "\
 Intro `--backend gpu`, `cargo test --release` and `curl --data-binary @x`.\n\
 ## `phygap train`\n\
-Takes `--iterations N`; `phygap eval --resolution full` and `phygap-api serve --token T`.\n\
+Takes `--iterations N`; `phygap eval --resolution full` and `phygap-api serve\n\
+--token T`.\n\
 ### Working resolution\n\
 `--resolution auto`\n\
 ```\n\

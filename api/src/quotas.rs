@@ -4,7 +4,15 @@
 //! routes make before they accept work. The admin is held only to the server's bounds.
 //!
 //! Running jobs are limited where a worker claims (the store skips an account's queued jobs
-//! while it runs its limit); queued jobs and storage where a request would add to them.
+//! while it runs its limit); queued jobs and storage where a request would add to them. Storage
+//! is reserved, not just checked: a request writes a [`Reservation`] of the bytes it will keep
+//! in the same store transaction as the check, before it keeps any, so concurrent uploads (in
+//! one process or many on one database) cannot pass a quota together; a body without a
+//! Content-Length reserves as it arrives and is cut off where it crosses the quota. A
+//! reservation is released when its request ends (by then a recorded capture or upload counts
+//! in its place), and one its process never released stops counting after a lease. Queued jobs
+//! are reserved the same way: a submit, relight or restart holds a [`QueuePlace`] until its job
+//! is in the queue.
 
 use std::collections::BTreeMap;
 
@@ -14,7 +22,14 @@ use utoipa::ToSchema;
 
 use crate::auth::Caller;
 use crate::error::ApiError;
+use crate::store::now_ms;
 use crate::AppState;
+
+/// How long a reservation counts unless released or renewed: longer than any upload takes.
+const RESERVATION_LEASE_MS: i64 = 6 * 3600 * 1000;
+/// Bytes a body without a Content-Length reserves at a time as it arrives.
+const RESERVATION_STEP: u64 = 4 << 20;
+const MIB: u64 = 1 << 20;
 
 /// Lowest and highest priority a job may have; accounts are further held to their
 /// `max_priority`.
@@ -159,13 +174,38 @@ pub struct JobRequestLimits {
     pub max_runtime_seconds: Option<u64>,
 }
 
-/// Whether `caller` may queue one more job with these settings: the priority within its bounds,
-/// the time limit within the server's, and room in its queue.
+/// A place in an account's queue reserved for one job ([`admit_job`]), written in the store
+/// transaction that checks `max_queued`, so concurrent submits cannot pass the limit together.
+/// Dropping it releases it: by then its job is queued and counts instead, or was not submitted.
+pub struct QueuePlace {
+    state: AppState,
+    job_id: String,
+}
+
+impl Drop for QueuePlace {
+    fn drop(&mut self) {
+        let Ok(runtime) = tokio::runtime::Handle::try_current() else {
+            return;
+        };
+        let (store, job_id) = (self.state.store.clone(), std::mem::take(&mut self.job_id));
+        runtime.spawn(async move {
+            if let Err(e) = store.release_queue_place(&job_id).await {
+                // It stops counting when its job is queued, or when its lease ends.
+                tracing::warn!(job_id, error = %e, "releasing a queue place failed");
+            }
+        });
+    }
+}
+
+/// Whether `caller` may queue one more job, `job_id`, with these settings: the priority within
+/// its bounds, the time limit within the server's, and room in its queue, where a place is
+/// reserved for the job (hold the place until the job is submitted; `None`: no queue limit).
 pub async fn admit_job(
     state: &AppState,
     caller: &Caller,
     request: JobRequestLimits,
-) -> Result<(), ApiError> {
+    job_id: &str,
+) -> Result<Option<QueuePlace>, ApiError> {
     let limits = caller.account().map(|a| state.config.quotas().of(a));
     let highest = limits
         .and_then(|l| l.max_priority)
@@ -192,45 +232,202 @@ pub async fn admit_job(
     }
     let (Some(account), Some(max_queued)) = (caller.account(), limits.and_then(|l| l.max_queued))
     else {
-        return Ok(());
+        return Ok(None);
     };
-    let usage = state.store.account_usage(account).await?;
-    if usage.queued >= max_queued {
+    let now = now_ms();
+    let placed = state
+        .store
+        .reserve_queue_place(
+            account,
+            job_id,
+            max_queued,
+            now,
+            now.saturating_add(RESERVATION_LEASE_MS),
+        )
+        .await?;
+    if let Err(queued) = placed {
         return Err(ApiError::new(
             StatusCode::TOO_MANY_REQUESTS,
             "queued_job_limit",
             format!(
-                "account `{account}` has {} jobs queued, its limit; submit again when one starts",
-                usage.queued
+                "account `{account}` has {queued} jobs queued (or being submitted), its limit; \
+                 submit again when one starts"
             ),
         ));
     }
-    Ok(())
+    Ok(Some(QueuePlace {
+        state: state.clone(),
+        job_id: job_id.to_owned(),
+    }))
 }
 
-/// Whether `caller` may store `bytes` more (a capture or an upload of that size).
-pub async fn admit_bytes(state: &AppState, caller: &Caller, bytes: u64) -> Result<(), ApiError> {
-    let Some(account) = caller.account() else {
-        return Ok(());
-    };
-    let Some(limit) = state.config.quotas().of(account).max_storage_bytes else {
-        return Ok(());
-    };
-    let usage = state.store.account_usage(account).await?;
-    if usage.stored_bytes.saturating_add(bytes) > limit {
-        return Err(ApiError::new(
-            StatusCode::FORBIDDEN,
-            "storage_quota_exceeded",
-            format!(
-                "account `{account}` stores {} MiB of its {} MiB; {} MiB more do not fit (delete \
-                 captures it no longer needs)",
-                usage.stored_bytes >> 20,
-                limit >> 20,
-                bytes.div_ceil(1 << 20)
-            ),
-        ));
+/// `bytes` in MiB as a person reads them: whole MiB bare, else with two decimals (`0.55`).
+pub fn mib(bytes: u64) -> String {
+    if bytes % MIB == 0 {
+        (bytes / MIB).to_string()
+    } else {
+        format!("{:.2}", bytes as f64 / MIB as f64)
     }
-    Ok(())
+}
+
+fn over_quota(account: &str, stored: u64, limit: u64, what: &str) -> ApiError {
+    ApiError::new(
+        StatusCode::FORBIDDEN,
+        "storage_quota_exceeded",
+        format!(
+            "account `{account}` stores {} MiB of its {} MiB; {what} (delete captures it no \
+             longer needs)",
+            mib(stored),
+            mib(limit)
+        ),
+    )
+}
+
+/// Storage reserved in the store for one capture or upload (`id`) while its bytes arrive,
+/// written in the transaction that checks the account's quota. Dropping it releases it: by
+/// then the capture or upload is recorded and counts instead, or it failed and its bytes are
+/// free again.
+pub struct Reservation {
+    state: AppState,
+    id: String,
+    account: String,
+    limit: u64,
+    /// Bytes reserved so far.
+    granted: u64,
+}
+
+impl Reservation {
+    /// The account `caller` stores for and its storage limit, when it has one.
+    fn limited(state: &AppState, caller: &Caller) -> Option<(String, u64)> {
+        let account = caller.account()?;
+        let limit = state.config.quotas().of(account).max_storage_bytes?;
+        Some((account.to_owned(), limit))
+    }
+
+    /// Reserves `bytes` for `id`, or refuses (403 `storage_quota_exceeded`) when they do not
+    /// fit; `None` when `caller` has no storage limit.
+    pub async fn exactly(
+        state: &AppState,
+        caller: &Caller,
+        id: &str,
+        bytes: u64,
+    ) -> Result<Option<Reservation>, ApiError> {
+        let Some((account, limit)) = Self::limited(state, caller) else {
+            return Ok(None);
+        };
+        let mut reservation = Reservation {
+            state: state.clone(),
+            id: id.to_owned(),
+            account,
+            limit,
+            granted: 0,
+        };
+        let reserved = reservation.reserve(bytes, false).await?;
+        if reserved.granted < bytes {
+            return Err(over_quota(
+                &reservation.account,
+                reserved.stored_bytes,
+                limit,
+                &format!("{} MiB more do not fit", mib(bytes)),
+            ));
+        }
+        Ok(Some(reservation))
+    }
+
+    /// For a body of unknown length: reserves a first step (what fits of it), refusing at once
+    /// an account with no room left; [`Reservation::cover`] reserves more as the body arrives.
+    /// `None` when `caller` has no storage limit.
+    pub async fn growing(
+        state: &AppState,
+        caller: &Caller,
+        id: &str,
+    ) -> Result<Option<Reservation>, ApiError> {
+        let Some((account, limit)) = Self::limited(state, caller) else {
+            return Ok(None);
+        };
+        let mut reservation = Reservation {
+            state: state.clone(),
+            id: id.to_owned(),
+            account,
+            limit,
+            granted: 0,
+        };
+        let reserved = reservation.reserve(RESERVATION_STEP, true).await?;
+        if reserved.granted == 0 {
+            return Err(over_quota(
+                &reservation.account,
+                reserved.stored_bytes,
+                limit,
+                "nothing more fits",
+            ));
+        }
+        Ok(Some(reservation))
+    }
+
+    /// Makes sure the `total` bytes received so far are reserved, reserving more as needed;
+    /// 403 `storage_quota_exceeded` once they cross what the account has left.
+    pub async fn cover(&mut self, total: u64) -> Result<(), ApiError> {
+        if total <= self.granted {
+            return Ok(());
+        }
+        let want = (total - self.granted).max(RESERVATION_STEP);
+        let reserved = self.reserve(want, true).await?;
+        if total <= self.granted {
+            return Ok(());
+        }
+        Err(over_quota(
+            &self.account,
+            reserved
+                .stored_bytes
+                .saturating_sub(self.granted - reserved.granted),
+            self.limit,
+            &format!(
+                "this upload, sent without a Content-Length, passed what is left after {} MiB",
+                mib(total)
+            ),
+        ))
+    }
+
+    async fn reserve(
+        &mut self,
+        bytes: u64,
+        partial: bool,
+    ) -> Result<crate::store::Reserved, ApiError> {
+        let now = now_ms();
+        let reserved = self
+            .state
+            .store
+            .reserve_bytes(
+                &self.account,
+                &self.id,
+                bytes,
+                partial,
+                self.limit,
+                now,
+                now.saturating_add(RESERVATION_LEASE_MS),
+            )
+            .await?;
+        self.granted += reserved.granted;
+        Ok(reserved)
+    }
+}
+
+impl Drop for Reservation {
+    fn drop(&mut self) {
+        if self.granted == 0 {
+            return;
+        }
+        let Ok(runtime) = tokio::runtime::Handle::try_current() else {
+            return;
+        };
+        let (store, id) = (self.state.store.clone(), std::mem::take(&mut self.id));
+        runtime.spawn(async move {
+            if let Err(e) = store.release_reservation(&id).await {
+                // It stops counting when its lease ends.
+                tracing::warn!(id, error = %e, "releasing a storage reservation failed");
+            }
+        });
+    }
 }
 
 #[cfg(test)]
@@ -263,6 +460,14 @@ mod tests {
             (running.default, running.accounts_json()),
             (Some(1), r#"{"alice":2}"#.into())
         );
+    }
+
+    #[test]
+    fn sizes_are_shown_in_mib_with_decimals_where_needed() {
+        assert_eq!(mib(2 << 20), "2");
+        assert_eq!(mib(0), "0");
+        assert_eq!(mib(576_717), "0.55");
+        assert_eq!(mib((3 << 20) + 1), "3.00");
     }
 
     #[test]

@@ -3,13 +3,18 @@
 //!
 //! An upload declares the archive's size and a part size, which fix every part's length. Each part
 //! arrives with its SHA-256 (`Content-Digest: sha-256=:…:`, RFC 9530) and is kept only when its
-//! length and digest match; it is stored under a name that holds its digest, so a part sent again
-//! never overwrites the copy a commit may be reading. Parts live in the object store when the
-//! deployment has one (any replica may receive any part), else under `uploads/` in the data dir.
-//! A commit joins the parts in order into one file, checking each part's digest again and the
-//! whole archive's when one was declared, and hands it to the validation a one-shot upload gets.
-//! Uploads idle for longer than `--upload-expiry-hours` are removed with their parts
-//! ([`sweep_idle`]).
+//! length and digest match. Every request stores its copy of a part under a key of its own (the
+//! part's number and digest, and an id of the request's: [`UploadPart::copy`]), so no request
+//! overwrites or removes a copy another stored: a part sent again while a commit reads the
+//! first copy, and refused, removes only its own. A commit reads the copies its snapshot of the
+//! upload's record names; a copy that cannot be read back (gone, or changed) is answered with
+//! 409 `part_unreadable` naming the part, whose record is dropped so that it is sent again.
+//! Parts live in the object store when the deployment has one (any replica may receive any
+//! part), else under `uploads/` in the data dir. A commit joins the parts in order into one
+//! file, checking each part's digest again and the whole archive's when one was declared, and
+//! hands it to the validation a one-shot upload gets. An upload idle for longer than
+//! `--upload-expiry-hours` takes nothing more (410 `upload_expired`) and is removed with its
+//! parts by the next sweep ([`sweep_idle`]).
 
 use std::path::{Path, PathBuf};
 
@@ -23,6 +28,69 @@ use tokio::io::AsyncWriteExt;
 use crate::error::ApiError;
 use crate::store::{UploadPart, UploadRecord};
 use crate::AppState;
+
+/// Points where a test holds a request to force an interleaving ([`pause::at`]): a part received
+/// but not yet stored, a part stored but not yet recorded, and a commit that took its upload but
+/// has read no part yet. Only
+/// `cfg(test)` builds hold anywhere; elsewhere [`pause::at`] returns at once.
+pub(crate) mod pause {
+    /// A part's bytes are received and checked, not yet moved under its key.
+    pub const PART_RECEIVED: &str = "part received";
+    /// A part's bytes are stored under its key; the store has not recorded it yet.
+    pub const PART_STORED: &str = "part stored";
+    /// A commit holds the upload (`committing`); it has read none of its parts yet.
+    pub const COMMIT_TAKEN: &str = "commit taken";
+
+    #[cfg(test)]
+    pub use armed::{arm, at, Pause};
+
+    /// Returns at once: outside tests nothing is ever held.
+    #[cfg(not(test))]
+    pub async fn at(_upload_id: &str, _point: &'static str) {}
+
+    #[cfg(test)]
+    mod armed {
+        use std::sync::{Arc, Mutex};
+
+        use tokio::sync::Notify;
+
+        /// One armed point: `reached` is notified when a request gets there, which then waits
+        /// for `release`.
+        #[derive(Default)]
+        pub struct Pause {
+            pub reached: Notify,
+            pub release: Notify,
+        }
+
+        type Armed = Vec<(String, &'static str, Arc<Pause>)>;
+        static ARMED: Mutex<Armed> = Mutex::new(Vec::new());
+
+        /// Holds the next request about `upload_id` that reaches `point`.
+        pub fn arm(upload_id: &str, point: &'static str) -> Arc<Pause> {
+            let pause = Arc::new(Pause::default());
+            ARMED
+                .lock()
+                .unwrap()
+                .push((upload_id.to_owned(), point, pause.clone()));
+            pause
+        }
+
+        /// Waits here when this point is armed for `upload_id` (once: it disarms itself).
+        pub async fn at(upload_id: &str, point: &'static str) {
+            let armed = {
+                let mut armed = ARMED.lock().unwrap();
+                armed
+                    .iter()
+                    .position(|(id, p, _)| id == upload_id && *p == point)
+                    .map(|i| armed.remove(i).2)
+            };
+            if let Some(pause) = armed {
+                pause.reached.notify_one();
+                pause.release.notified().await;
+            }
+        }
+    }
+}
 
 /// Smallest part size an upload may choose (the last part may be shorter).
 pub const MIN_PART_BYTES: u64 = 64 << 10;
@@ -84,9 +152,13 @@ pub fn is_sha256_hex(text: &str) -> bool {
     text.len() == 64 && text.bytes().all(|b| b.is_ascii_hexdigit())
 }
 
-/// Where a part's bytes are kept, relative to the object store's root or the data dir.
+/// Where a part's copy is kept, relative to the object store's root or the data dir.
 fn part_key(upload_id: &str, part: &UploadPart) -> String {
-    crate::object_keys::upload_part(upload_id, part.index, &part.sha256)
+    let key = crate::object_keys::upload_part(upload_id, part.index, &part.sha256);
+    match &part.copy {
+        Some(copy) => format!("{key}.{copy}"),
+        None => key,
+    }
 }
 
 /// A temporary file removed when dropped, unless it was moved away.
@@ -107,7 +179,8 @@ fn part_size_mismatch(index: u32, expected: u64) -> ApiError {
 
 /// Receives part `index` of `upload` (`expected` bytes long) from `body`, checks its length and
 /// `digest`, and stores it.
-/// Returns the part to record; nothing is left behind when it is refused or the body breaks off.
+/// Returns the part to record, stored under a key no other request writes; nothing is left
+/// behind when it is refused or the body breaks off.
 pub async fn receive_part(
     state: &AppState,
     upload: &UploadRecord,
@@ -148,7 +221,9 @@ pub async fn receive_part(
         index,
         size: received,
         sha256: hex(&actual),
+        copy: Some(crate::queue::new_id("copy")),
     };
+    pause::at(&upload.id, pause::PART_RECEIVED).await;
     let key = part_key(&upload.id, &part);
     match &state.bucket {
         Some(bucket) => bucket.upload_file(&key, &temp.0).await?,
@@ -167,7 +242,8 @@ pub async fn receive_part(
     Ok(part)
 }
 
-/// Removes one stored copy of a part (one that was replaced by a part sent again).
+/// Removes one stored copy of a part: one that a part sent again replaced, or the copy of a
+/// request that was refused after storing it (each request removes only its own copy).
 pub async fn discard_part(state: &AppState, upload_id: &str, part: &UploadPart) {
     let key = part_key(upload_id, part);
     let result = match &state.bucket {
@@ -182,7 +258,7 @@ pub async fn discard_part(state: &AppState, upload_id: &str, part: &UploadPart) 
     }
 }
 
-/// Removes every stored part of an upload.
+/// Removes every stored part of an upload, and its folder.
 pub async fn discard_parts(state: &AppState, upload_id: &str) {
     let folder = crate::object_keys::upload(upload_id);
     if let Some(bucket) = &state.bucket {
@@ -198,35 +274,67 @@ pub async fn discard_parts(state: &AppState, upload_id: &str) {
     }
 }
 
+/// Why a commit could not join an upload's parts.
+#[derive(Debug)]
+pub enum AssembleError {
+    /// The stored copy of this part could not be read back, or no longer matches its digest:
+    /// the client sends the part again.
+    PartUnreadable { index: u32 },
+    /// Anything else: the whole archive's digest (the client's), or writing the joined file.
+    Refused(ApiError),
+}
+
+impl From<ApiError> for AssembleError {
+    fn from(e: ApiError) -> Self {
+        AssembleError::Refused(e)
+    }
+}
+
+/// The answer to a commit that could not read part `index` back.
+pub fn part_unreadable(upload_id: &str, index: u32) -> ApiError {
+    ApiError::conflict(
+        "part_unreadable",
+        format!(
+            "part {index} of upload `{upload_id}` could not be read back from storage; it is \
+             no longer listed as received: send part {index} again, then commit"
+        ),
+    )
+}
+
 /// Joins an upload's parts, in order, into `target`: each part's bytes are checked against the
 /// digest recorded for it, and the whole archive's against the upload's declared SHA-256.
-/// A whole-archive mismatch is the client's (422 `digest_mismatch`); a part that no longer
-/// matches its record is a storage fault (500).
+/// A whole-archive mismatch is the client's (422 `digest_mismatch`); a part whose stored copy
+/// is gone or no longer matches its record is [`AssembleError::PartUnreadable`].
 pub async fn assemble(
     state: &AppState,
     upload: &UploadRecord,
     target: &Path,
-) -> Result<(), ApiError> {
+) -> Result<(), AssembleError> {
     let mut file = tokio::fs::File::create(target)
         .await
         .map_err(|e| ApiError::internal("joining the parts", e))?;
     let mut whole = Sha256::new();
     for part in &upload.parts {
         let key = part_key(&upload.id, part);
+        let unreadable = |e: &dyn std::fmt::Display| {
+            tracing::warn!(upload_id = %upload.id, key, error = %e, "a stored part cannot be read");
+            AssembleError::PartUnreadable { index: part.index }
+        };
         let mut part_digest = Sha256::new();
         let mut stream: std::pin::Pin<
             Box<dyn futures_util::Stream<Item = std::io::Result<bytes::Bytes>> + Send>,
         > = match &state.bucket {
-            Some(bucket) => Box::pin(bucket.read_range(&key, 0, part.size).await?),
-            None => {
-                let local = tokio::fs::File::open(state.paths.root.join(&key))
-                    .await
-                    .map_err(|e| ApiError::internal("reading a stored part", e))?;
-                Box::pin(tokio_util::io::ReaderStream::new(local))
-            }
+            Some(bucket) => match bucket.read_range(&key, 0, part.size).await {
+                Ok(stream) => Box::pin(stream),
+                Err(e) => return Err(unreadable(&e)),
+            },
+            None => match tokio::fs::File::open(state.paths.root.join(&key)).await {
+                Ok(local) => Box::pin(tokio_util::io::ReaderStream::new(local)),
+                Err(e) => return Err(unreadable(&e)),
+            },
         };
         while let Some(chunk) = stream.next().await {
-            let chunk = chunk.map_err(|e| ApiError::internal("reading a stored part", e))?;
+            let chunk = chunk.map_err(|e| unreadable(&e))?;
             part_digest.update(&chunk);
             whole.update(&chunk);
             file.write_all(&chunk)
@@ -234,10 +342,7 @@ pub async fn assemble(
                 .map_err(|e| ApiError::internal("joining the parts", e))?;
         }
         if hex(&part_digest.finalize()) != part.sha256 {
-            return Err(ApiError::internal(
-                "joining the parts",
-                format!("stored part {} of {} changed", part.index, upload.id),
-            ));
+            return Err(unreadable(&"its bytes no longer match its digest"));
         }
     }
     file.flush()
@@ -252,6 +357,7 @@ pub async fn assemble(
         )),
         _ => Ok(()),
     }
+    .map_err(AssembleError::Refused)
 }
 
 /// Removes uploads (and their parts) untouched for longer than the service's upload expiry;
@@ -278,6 +384,33 @@ pub fn expires_at(state: &AppState, updated_at: i64) -> i64 {
     updated_at.saturating_add(expiry)
 }
 
+/// 410 `upload_expired` for an upload past its expiry at `now`, which takes no more parts and
+/// no commit (the next sweep removes it).
+pub fn refuse_expired(state: &AppState, upload: &UploadRecord, now: i64) -> Result<(), ApiError> {
+    let expired = expires_at(state, upload.updated_at);
+    if now >= expired {
+        return Err(ApiError::new(
+            StatusCode::GONE,
+            "upload_expired",
+            format!(
+                "upload `{}` expired at {} (idle past --upload-expiry-hours); start a new one",
+                upload.id,
+                crate::store::rfc3339(expired)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A part number as the path gives it: decimal digits without a sign or leading zeros (`0`,
+/// `17`), so one part has one name.
+pub fn part_number(text: &str) -> Option<u32> {
+    let canonical = !text.is_empty()
+        && text.bytes().all(|b| b.is_ascii_digit())
+        && (text == "0" || !text.starts_with('0'));
+    canonical.then(|| text.parse().ok()).flatten()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -294,6 +427,28 @@ mod tests {
             parts: Vec::new(),
             created_at: 0,
             updated_at: 0,
+        }
+    }
+
+    #[test]
+    fn part_numbers_are_canonical_decimals() {
+        assert_eq!(part_number("0"), Some(0));
+        assert_eq!(part_number("17"), Some(17));
+        assert_eq!(part_number("4294967295"), Some(u32::MAX));
+        for bad in [
+            "",
+            "+1",
+            "01",
+            "00",
+            "-0",
+            " 1",
+            "1 ",
+            "1.0",
+            "0x1",
+            "4294967296",
+            "１",
+        ] {
+            assert_eq!(part_number(bad), None, "{bad:?}");
         }
     }
 

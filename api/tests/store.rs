@@ -617,6 +617,7 @@ fn part(index: u32, sha: char) -> UploadPart {
         index,
         size: 100,
         sha256: sha.to_string().repeat(64),
+        copy: Some(format!("copy_{index}{sha}")),
     }
 }
 
@@ -659,6 +660,17 @@ async fn uploads_take_parts_until_one_commit_settles_them(s: &dyn Store) {
         PartOutcome::Closed
     );
     assert!(s.begin_commit("upl_1", 101, 200).await.unwrap().is_some());
+    // A part that could not be read back is forgotten, the rest kept, the upload open again.
+    let lost = UploadEnd::PartsLost { indexes: vec![2] };
+    s.end_commit("upl_1", &lost, 102).await.unwrap();
+    let reopened = s.upload("upl_1").await.unwrap().unwrap();
+    assert_eq!(reopened.state, UploadState::Open);
+    assert_eq!(reopened.parts, [part(0, 'c')]);
+    assert!(matches!(
+        s.record_part("upl_1", &part(2, 'a'), 102).await.unwrap(),
+        PartOutcome::Recorded { replaced: None }
+    ));
+    s.begin_commit("upl_1", 102, 200).await.unwrap().unwrap();
     // Reopened by a failure of the service: parts again, then committed for good.
     s.end_commit("upl_1", &UploadEnd::Reopened, 102)
         .await
@@ -786,6 +798,158 @@ async fn claims_follow_priority_and_running_limits(s: &dyn Store) {
     assert_eq!(s.account_usage("bob").await.unwrap().stored_bytes, 0);
 }
 
+/// Storage is reserved in the transaction that checks it: of concurrent reservations only what
+/// fits is granted; a partial one takes what is left; a reservation stops counting once its
+/// capture or upload is recorded, when released, and when its lease ends.
+async fn storage_is_reserved_in_the_transaction_that_checks_it(s: Arc<dyn Store>) {
+    let capture = CaptureRecord {
+        id: "cap_held".into(),
+        views: 1,
+        width: 8,
+        height: 8,
+        kinds: vec![],
+        warnings: vec![],
+        size_bytes: 250,
+        created_at: 1,
+        account: Some("alice".into()),
+    };
+    s.insert_capture(&capture).await.unwrap();
+    // Usage is read at the clock's time: reservations are made around it.
+    let now = phygap_api::store::now_ms();
+    let until = now + 3_600_000;
+    let tasks: Vec<_> = (0..20)
+        .map(|i| {
+            let s = s.clone();
+            tokio::spawn(async move {
+                s.reserve_bytes("alice", &format!("cap_{i}"), 100, false, 1000, now, until)
+                    .await
+                    .unwrap()
+            })
+        })
+        .collect();
+    let mut granted = Vec::new();
+    for task in tasks {
+        let reserved = task.await.unwrap();
+        assert!(
+            reserved.granted == 0 || reserved.granted == 100,
+            "{reserved:?}"
+        );
+        if reserved.granted == 0 {
+            assert!(reserved.stored_bytes > 900, "{reserved:?}");
+        }
+        granted.push(reserved.granted);
+    }
+    assert_eq!(granted.iter().filter(|&&g| g == 100).count(), 7);
+    assert_eq!(s.account_usage("alice").await.unwrap().stored_bytes, 950);
+    assert_eq!(s.account_usage("bob").await.unwrap().stored_bytes, 0);
+    // What is left, partially; then nothing.
+    let partial = s
+        .reserve_bytes("alice", "cap_partial", 400, true, 1000, now, until)
+        .await
+        .unwrap();
+    assert_eq!((partial.granted, partial.stored_bytes), (50, 950));
+    let none = s
+        .reserve_bytes("alice", "cap_none", 1, false, 1000, now, until)
+        .await
+        .unwrap();
+    assert_eq!((none.granted, none.stored_bytes), (0, 1000));
+    // A reservation grows under its id; releases free their bytes.
+    s.release_reservation("cap_partial").await.unwrap();
+    for _ in 0..2 {
+        let grown = s
+            .reserve_bytes("alice", "cap_grown", 20, true, 1000, now, until)
+            .await
+            .unwrap();
+        assert_eq!(grown.granted, 20);
+    }
+    assert_eq!(s.account_usage("alice").await.unwrap().stored_bytes, 990);
+    // Recorded, a capture counts in its reservation's place (not twice).
+    let winner = (0..20)
+        .map(|i| format!("cap_{i}"))
+        .zip(&granted)
+        .find(|(_, &g)| g == 100)
+        .unwrap()
+        .0;
+    s.insert_capture(&CaptureRecord {
+        id: winner.clone(),
+        size_bytes: 90,
+        ..capture.clone()
+    })
+    .await
+    .unwrap();
+    assert_eq!(s.account_usage("alice").await.unwrap().stored_bytes, 980);
+    s.release_reservation(&winner).await.unwrap();
+    assert_eq!(s.account_usage("alice").await.unwrap().stored_bytes, 980);
+    // Past their lease, reservations count no more; the next check drops them.
+    let later = s
+        .reserve_bytes("alice", "cap_later", 600, false, 1000, until, until + 1)
+        .await
+        .unwrap();
+    assert_eq!((later.granted, later.stored_bytes), (600, 340));
+}
+
+/// Places in an account's queue are reserved in the transaction that checks `max_queued`: of
+/// concurrent reservations only what fits is granted; a place counts until its job is queued
+/// (then the job counts), released, or past its lease.
+async fn queue_places_are_reserved_in_the_transaction_that_checks_them(s: Arc<dyn Store>) {
+    let queued = NewJob {
+        account: Some("alice".into()),
+        ..new_job("job_queued", 1)
+    };
+    s.submit(&queued, None).await.unwrap();
+    let tasks: Vec<_> = (0..10)
+        .map(|i| {
+            let s = s.clone();
+            tokio::spawn(async move {
+                s.reserve_queue_place("alice", &format!("job_{i}"), 3, 10, 1000)
+                    .await
+                    .unwrap()
+            })
+        })
+        .collect();
+    let mut placed = Vec::new();
+    for (i, task) in tasks.into_iter().enumerate() {
+        match task.await.unwrap() {
+            Ok(()) => placed.push(format!("job_{i}")),
+            Err(held) => assert_eq!(held, 3),
+        }
+    }
+    assert_eq!(placed.len(), 2, "{placed:?}");
+    // Submitted, a job counts in its place's stead (not twice); bob's queue is his own.
+    let submitted = NewJob {
+        account: Some("alice".into()),
+        ..new_job(&placed[0], 2)
+    };
+    s.submit(&submitted, None).await.unwrap();
+    assert_eq!(
+        s.reserve_queue_place("alice", "job_x", 3, 11, 1000)
+            .await
+            .unwrap(),
+        Err(3)
+    );
+    assert_eq!(
+        s.reserve_queue_place("bob", "job_b", 1, 11, 1000)
+            .await
+            .unwrap(),
+        Ok(())
+    );
+    // Released, or past its lease, a place is free again.
+    s.release_queue_place(&placed[1]).await.unwrap();
+    assert_eq!(
+        s.reserve_queue_place("alice", "job_y", 3, 12, 1000)
+            .await
+            .unwrap(),
+        Ok(())
+    );
+    assert_eq!(
+        s.reserve_queue_place("alice", "job_z", 4, 1000, 2000)
+            .await
+            .unwrap(),
+        Ok(()),
+        "job_y's place ended at 1000"
+    );
+}
+
 async fn the_suite<F, Fut>(fresh: F)
 where
     F: Fn() -> Fut,
@@ -808,6 +972,8 @@ where
     concurrent_submits_with_one_key_create_one_job(fresh().await).await;
     cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;
     uploads_take_parts_until_one_commit_settles_them(fresh().await.as_ref()).await;
+    storage_is_reserved_in_the_transaction_that_checks_it(fresh().await).await;
+    queue_places_are_reserved_in_the_transaction_that_checks_them(fresh().await).await;
     accounts_see_their_jobs_and_deletion_and_retention_spare_what_is_in_use(fresh().await.as_ref())
         .await;
 }
@@ -938,7 +1104,7 @@ async fn replicas_starting_together_migrate_the_schema_once() {
         start.await.unwrap().unwrap();
     }
     let versions = admin_query(&url, "SELECT count(*) FROM schema_migrations").await;
-    assert_eq!(versions, [3]);
+    assert_eq!(versions, [4]);
     // A database from a newer build is refused, not silently used.
     admin_query(
         &url,

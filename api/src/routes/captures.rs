@@ -1,6 +1,8 @@
 //! Capture upload (streamed to disk, extracted safely, validated by the pipeline), lookup and
 //! deletion. A rejected upload leaves nothing behind: its temporary folder is removed and no
-//! record is written.
+//! record is written. An account's storage quota is reserved before a byte is kept
+//! ([`crate::quotas::Reservation`]): the declared length at once, a body without one as it
+//! arrives, cut off where it crosses the quota.
 
 use std::path::{Path as FsPath, PathBuf};
 
@@ -20,6 +22,7 @@ use crate::error::{ApiError, ErrorBody, ProblemBody};
 use crate::openapi::Binary;
 use crate::pipeline::{DeathReason, PipelineError};
 use crate::queue::new_id;
+use crate::quotas::Reservation;
 use crate::store::{now_ms, rfc3339, CaptureRecord, DeleteOutcome};
 use crate::AppState;
 
@@ -107,19 +110,27 @@ fn too_large(limit: u64) -> ApiError {
     ApiError::too_large(format!("upload exceeds the limit of {} MiB", limit >> 20))
 }
 
-/// Streams a request body into `target`, refusing more than `limit` bytes; returns the size.
-pub async fn stream_to_file(body: Body, target: &FsPath, limit: u64) -> Result<u64, ApiError> {
-    stream_to_file_with(body, target, limit, || too_large(limit), |_| {}).await
-}
-
-/// [`stream_to_file`] answering `over_limit()` past `limit` bytes and showing every chunk to
-/// `inspect` as it is written (a digest, for instance).
+/// Streams a request body into `target`, answering `over_limit()` past `limit` bytes and
+/// showing every chunk to `inspect` as it is written (a digest, for instance); returns the size.
 pub async fn stream_to_file_with(
     body: Body,
     target: &FsPath,
     limit: u64,
     over_limit: impl Fn() -> ApiError,
+    inspect: impl FnMut(&[u8]),
+) -> Result<u64, ApiError> {
+    stream_to_file_within(body, target, limit, over_limit, inspect, None).await
+}
+
+/// [`stream_to_file_with`] that also keeps the bytes received covered by `quota`, before
+/// each chunk is written: a body that crosses it is answered with the quota's refusal.
+async fn stream_to_file_within(
+    body: Body,
+    target: &FsPath,
+    limit: u64,
+    over_limit: impl Fn() -> ApiError,
     mut inspect: impl FnMut(&[u8]),
+    mut quota: Option<&mut Reservation>,
 ) -> Result<u64, ApiError> {
     let mut file = tokio::fs::File::create(target)
         .await
@@ -132,6 +143,12 @@ pub async fn stream_to_file_with(
         if total > limit {
             drain_stream(&mut stream).await;
             return Err(over_limit());
+        }
+        if let Some(quota) = quota.as_deref_mut() {
+            if let Err(over_quota) = quota.cover(total).await {
+                drain_stream(&mut stream).await;
+                return Err(over_quota);
+            }
         }
         inspect(&chunk);
         file.write_all(&chunk)
@@ -384,31 +401,45 @@ pub async fn upload(
     if let Err(too_large) = check_content_length(&headers, limit) {
         return Err(refuse_unread(body, too_large).await);
     }
-    let declared = content_length(&headers);
-    let admitted = crate::quotas::admit_bytes(&state, &caller, declared.unwrap_or(0)).await;
-    if let Err(over_quota) = admitted {
-        return Err(refuse_unread(body, over_quota).await);
-    }
     let id = new_id("cap");
+    // The account's storage is reserved before a byte is kept: the declared length, or a body
+    // without one as it arrives.
+    let reserved = match content_length(&headers) {
+        Some(declared) => Reservation::exactly(&state, &caller, &id, declared).await,
+        None => Reservation::growing(&state, &caller, &id).await,
+    };
+    let mut reservation = match reserved {
+        Ok(reservation) => reservation,
+        Err(over_quota) => return Err(refuse_unread(body, over_quota).await),
+    };
     let staging = TempDir::create(state.paths.tmp.join(&id))?;
     let archive = staging.path().join("upload");
-    let size = stream_to_file(body, &archive, limit).await?;
+    let size = stream_to_file_within(
+        body,
+        &archive,
+        limit,
+        || too_large(limit),
+        |_| {},
+        reservation.as_mut(),
+    )
+    .await?;
     if size == 0 {
         return Err(ApiError::bad_request(
             "empty_upload",
             "the request body is empty; send a .zip or .tar archive",
         ));
     }
-    // A body sent without a length is held to the quota once its size is known.
-    if declared.is_none() {
-        crate::quotas::admit_bytes(&state, &caller, size).await?;
-    }
     // The rest runs to completion in its own task even if the client disconnects, so the
-    // capture is either recorded or removed, and the temporary folder always cleaned up.
+    // capture is either recorded or removed, and the temporary folder always cleaned up; the
+    // reservation is held until the capture's record counts in its place.
     let account = caller.account().map(str::to_owned);
-    let record = tokio::spawn(ingest(state.clone(), staging, id, archive, size, account))
-        .await
-        .map_err(|e| ApiError::internal("processing the upload", e))??;
+    let record = tokio::spawn(async move {
+        let recorded = ingest(state.clone(), staging, id, archive, size, account).await;
+        drop(reservation);
+        recorded
+    })
+    .await
+    .map_err(|e| ApiError::internal("processing the upload", e))??;
     tracing::info!(capture_id = %record.id, views = record.views, "capture accepted");
     Ok((StatusCode::CREATED, Json(record.into())))
 }

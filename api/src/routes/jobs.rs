@@ -336,11 +336,15 @@ pub async fn submit(
         Some(key) => state.store.has_request_key(caller.account(), key).await?,
         None => false,
     };
-    if !replay {
-        crate::quotas::admit_job(&state, &caller, asks).await?;
-    }
+    let job_id = new_id("job");
+    // A place in the account's queue is held for the job until it is submitted.
+    let _place = if replay {
+        None
+    } else {
+        crate::quotas::admit_job(&state, &caller, asks, &job_id).await?
+    };
     let job = NewJob {
-        id: new_id("job"),
+        id: job_id,
         capture_id: request.capture_id,
         webhook_url,
         priority: asks.priority,
@@ -656,7 +660,9 @@ pub async fn relight(
         priority: parent.priority,
         max_runtime_seconds: None,
     };
-    crate::quotas::admit_job(&state, &caller, asks).await?;
+    let id = new_id("job");
+    // A place in the account's queue is held for the job until it is submitted.
+    let _place = crate::quotas::admit_job(&state, &caller, asks, &id).await?;
     let multipart = multipart.map_err(|e| {
         ApiError::new(
             StatusCode::UNSUPPORTED_MEDIA_TYPE,
@@ -664,7 +670,6 @@ pub async fn relight(
             e.body_text(),
         )
     })?;
-    let id = new_id("job");
     let staging = TempDir::create(state.paths.tmp.join(&id))?;
     let RelightInputs {
         envmap_file,
@@ -873,7 +878,8 @@ pub async fn restart(
         priority: job.priority,
         max_runtime_seconds: job.max_runtime_seconds,
     };
-    crate::quotas::admit_job(&state, &caller, asks).await?;
+    // A place in the account's queue is held for the job until it is back in the queue.
+    let _place = crate::quotas::admit_job(&state, &caller, asks, &id).await?;
     let (spec, fresh) = match &job.spec {
         JobSpec::Train { config } => {
             let changed = match &request.config {

@@ -17,8 +17,11 @@ use crate::auth::Caller;
 use crate::error::{ApiError, ErrorBody};
 use crate::openapi::Binary;
 use crate::queue::new_id;
+use crate::quotas::Reservation;
 use crate::store::{now_ms, rfc3339, PartOutcome, UploadEnd, UploadRecord, UploadState};
-use crate::uploads::{self, DEFAULT_PART_BYTES, MAX_PARTS, MAX_PART_BYTES, MIN_PART_BYTES};
+use crate::uploads::{
+    self, AssembleError, DEFAULT_PART_BYTES, MAX_PARTS, MAX_PART_BYTES, MIN_PART_BYTES,
+};
 use crate::AppState;
 
 /// How long a commit holds an upload before another request may commit it again (a process
@@ -151,8 +154,9 @@ pub struct UploadPath {
 pub struct PartPath {
     /// The upload's id (`upl_…`).
     id: String,
-    /// The part's number, from 0.
-    index: u32,
+    /// The part's number, from 0, in decimal digits without a sign or leading zeros.
+    #[param(value_type = u32)]
+    index: String,
 }
 
 /// The upload `id` where `caller` may see it (404 otherwise).
@@ -233,10 +237,12 @@ pub async fn create(
             return Err(invalid_upload("sha256 must be 64 hexadecimal digits"));
         }
     }
-    crate::quotas::admit_bytes(&state, &caller, request.size).await?;
+    let id = new_id("upl");
+    // Held until the upload's record counts its size in the reservation's place.
+    let reservation = Reservation::exactly(&state, &caller, &id, request.size).await?;
     let now = now_ms();
     let record = UploadRecord {
-        id: new_id("upl"),
+        id,
         account: caller.account().map(str::to_owned),
         size: request.size,
         part_size,
@@ -247,6 +253,7 @@ pub async fn create(
         updated_at: now,
     };
     state.store.create_upload(&record).await?;
+    drop(reservation);
     tracing::info!(upload_id = %record.id, size = record.size, part_size, "upload created");
     Ok((StatusCode::CREATED, Json(UploadView::new(&state, record))))
 }
@@ -287,36 +294,40 @@ fn not_open(upload: &UploadRecord) -> ApiError {
     )
 }
 
-/// What a part request's path and headers decide before its body is read: the open upload,
-/// the part's length and its declared SHA-256.
+/// What a part request's path and headers decide before its body is read: the open upload (not
+/// expired), the part's number and length, and its declared SHA-256.
 async fn check_part_request(
     state: &AppState,
     caller: &Caller,
     id: &str,
-    index: u32,
+    index: &str,
     headers: &HeaderMap,
-) -> Result<(UploadRecord, u64, [u8; 32]), ApiError> {
+) -> Result<(UploadRecord, u32, u64, [u8; 32]), ApiError> {
     let upload = visible_upload(state, caller, id).await?;
     if !matches!(upload.state, UploadState::Open) {
         return Err(not_open(&upload));
     }
+    uploads::refuse_expired(state, &upload, now_ms())?;
     let digest = uploads::content_digest(headers)?;
-    let expected = uploads::part_length(&upload, index).ok_or_else(|| {
+    let no_such_part = || {
         ApiError::bad_request(
             "no_such_part",
             format!(
-                "this upload has parts 0 to {}",
+                "this upload has parts 0 to {}, numbered in decimal digits without a sign or \
+                 leading zeros",
                 uploads::part_count(upload.size, upload.part_size).saturating_sub(1)
             ),
         )
-    })?;
+    };
+    let index = uploads::part_number(index).ok_or_else(no_such_part)?;
+    let expected = uploads::part_length(&upload, index).ok_or_else(no_such_part)?;
     if let Some(declared) = content_length(headers).filter(|&declared| declared != expected) {
         return Err(ApiError::bad_request(
             "part_size_mismatch",
             format!("part {index} must be {expected} bytes long, not {declared}"),
         ));
     }
-    Ok((upload, expected, digest))
+    Ok((upload, index, expected, digest))
 }
 
 /// `PUT /v1/uploads/{id}/parts/{index}`.
@@ -329,7 +340,8 @@ async fn check_part_request(
     description = "The body is the part's bytes: exactly part_size of them (the last part: the \
         rest of the archive). Content-Digest: sha-256=:<base64>: (RFC 9530) is required; a part \
         is kept only when its length and digest match, and a part sent again replaces the one \
-        before. A body that breaks off leaves nothing behind: send the part again.",
+        before. A body that breaks off leaves nothing behind: send the part again. Part numbers \
+        are decimal digits without a sign or leading zeros.",
     params(PartPath),
     request_body(content((Binary = "application/octet-stream"))),
     responses(
@@ -339,6 +351,8 @@ async fn check_part_request(
             than the part's (part_size_mismatch), a number past the last part (no_such_part), \
             or a body that broke off (upload_interrupted)", body = ErrorBody),
         (status = NOT_FOUND, description = "No such upload the token may see (not_found)", body = ErrorBody),
+        (status = GONE, description = "The upload expired: idle past --upload-expiry-hours \
+            (upload_expired)", body = ErrorBody),
         (status = REQUEST_TIMEOUT, description = "The body arrived slower than the service's \
             minimum rate (request_timeout)", body = ErrorBody),
         (status = CONFLICT, description = "The upload is being committed, committed or failed \
@@ -352,15 +366,25 @@ pub async fn put_part(
     headers: HeaderMap,
     body: Body,
 ) -> Result<Json<PartView>, ApiError> {
-    let (upload, expected, digest) =
-        match check_part_request(&state, &caller, &id, index, &headers).await {
+    let (upload, index, expected, digest) =
+        match check_part_request(&state, &caller, &id, &index, &headers).await {
             Ok(checked) => checked,
             Err(refused) => return Err(refuse_unread(body, refused).await),
         };
     let part = uploads::receive_part(&state, &upload, index, expected, body, digest).await?;
-    match state.store.record_part(&id, &part, now_ms()).await? {
+    uploads::pause::at(&id, uploads::pause::PART_STORED).await;
+    // The copy is this request's alone: whatever the store answers, no other request's copy
+    // is touched.
+    let recorded = match state.store.record_part(&id, &part, now_ms()).await {
+        Ok(recorded) => recorded,
+        Err(e) => {
+            uploads::discard_part(&state, &id, &part).await;
+            return Err(e.into());
+        }
+    };
+    match recorded {
         PartOutcome::Recorded { replaced } => {
-            if let Some(old) = replaced.filter(|old| old.sha256 != part.sha256) {
+            if let Some(old) = replaced {
                 uploads::discard_part(&state, &id, &old).await;
             }
         }
@@ -370,7 +394,8 @@ pub async fn put_part(
             return Err(not_open(&upload));
         }
         PartOutcome::NotFound => {
-            uploads::discard_part(&state, &id, &part).await;
+            // Deleted meanwhile: its folder, which this request may have made again, goes too.
+            uploads::discard_parts(&state, &id).await;
             return Err(ApiError::not_found("upload", &id));
         }
     }
@@ -396,9 +421,13 @@ fn stored_failure(code: &str, message: &str) -> ApiError {
 }
 
 /// Joins, validates and records a committed upload's archive as a new capture.
-async fn commit_parts(state: AppState, upload: UploadRecord) -> Result<CaptureView, ApiError> {
+async fn commit_parts(
+    state: AppState,
+    upload: UploadRecord,
+) -> Result<CaptureView, uploads::AssembleError> {
     let capture_id = new_id("cap");
-    let staging = TempDir::create(state.paths.tmp.join(&capture_id))?;
+    let staging = TempDir::create(state.paths.tmp.join(&capture_id))
+        .map_err(uploads::AssembleError::Refused)?;
     let archive = staging.path().join("upload");
     uploads::assemble(&state, &upload, &archive).await?;
     let record = ingest(
@@ -409,7 +438,8 @@ async fn commit_parts(state: AppState, upload: UploadRecord) -> Result<CaptureVi
         upload.size,
         upload.account.clone(),
     )
-    .await?;
+    .await
+    .map_err(uploads::AssembleError::Refused)?;
     tracing::info!(upload_id = %upload.id, capture_id = %record.id, views = record.views, "upload committed");
     Ok(record.into())
 }
@@ -423,8 +453,10 @@ async fn commit_parts(state: AppState, upload: UploadRecord) -> Result<CaptureVi
     summary = "Turn a complete resumable upload into a capture",
     description = "Joins the parts in order, checks the declared SHA-256, then extracts and \
         validates the archive as POST /v1/captures does. Committing again answers the same \
-        capture (200) or the same refusal; a refused upload's parts are removed. A failure of \
-        the service's own (500) leaves the upload open: commit again.",
+        capture (200) or the same refusal; a refused upload's parts are removed. A part whose \
+        stored copy cannot be read back is named (409 part_unreadable) and dropped from the \
+        received parts: send it again, then commit. A failure of the service's own (500) \
+        leaves the upload open: commit again.",
     params(UploadPath),
     responses(
         (status = CREATED, description = "The capture it became", body = CaptureView),
@@ -434,7 +466,10 @@ async fn commit_parts(state: AppState, upload: UploadRecord) -> Result<CaptureVi
         (status = NOT_FOUND, description = "No such upload the token may see, or its capture \
             was deleted since (not_found)", body = ErrorBody),
         (status = CONFLICT, description = "Parts are missing (upload_incomplete, naming them), \
-            or a commit is under way (upload_committing)", body = ErrorBody),
+            a commit is under way (upload_committing), or a stored part could not be read back \
+            (part_unreadable, naming it: it is no longer listed as received, send it again)", body = ErrorBody),
+        (status = GONE, description = "The upload expired: idle past --upload-expiry-hours \
+            (upload_expired)", body = ErrorBody),
         (status = PAYLOAD_TOO_LARGE, description = "An archive expanding past the limits \
             (payload_too_large)", body = ErrorBody),
         (status = UNSUPPORTED_MEDIA_TYPE, description = "Not a .zip or .tar archive \
@@ -458,6 +493,7 @@ pub async fn commit(
         UploadState::Failed { code, message } => return Err(stored_failure(code, message)),
         UploadState::Open | UploadState::Committing { .. } => {}
     }
+    uploads::refuse_expired(&state, &upload, now_ms())?;
     let count = uploads::part_count(upload.size, upload.part_size);
     let missing: Vec<u64> = (0..count)
         .filter(|&i| !upload.parts.iter().any(|p| u64::from(p.index) == i))
@@ -493,22 +529,39 @@ pub async fn commit(
     // settled: committed, failed, or open again.
     let task_state = state.clone();
     let outcome = tokio::spawn(async move {
+        uploads::pause::at(&id, uploads::pause::COMMIT_TAKEN).await;
+        let parts = upload.parts.clone();
         let result = commit_parts(task_state.clone(), upload).await;
         let end = match &result {
             Ok(capture) => UploadEnd::Committed {
                 capture_id: capture.id().to_owned(),
             },
-            Err(e) if e.status.is_client_error() => UploadEnd::Failed {
+            Err(AssembleError::PartUnreadable { index }) => UploadEnd::PartsLost {
+                indexes: vec![*index],
+            },
+            Err(AssembleError::Refused(e)) if e.status.is_client_error() => UploadEnd::Failed {
                 code: e.code.to_owned(),
                 message: e.message.clone(),
             },
-            Err(_) => UploadEnd::Reopened,
+            Err(AssembleError::Refused(_)) => UploadEnd::Reopened,
         };
         task_state.store.end_commit(&id, &end, now_ms()).await?;
-        if !matches!(end, UploadEnd::Reopened) {
-            uploads::discard_parts(&task_state, &id).await;
+        match &end {
+            UploadEnd::Reopened => {}
+            UploadEnd::PartsLost { indexes } => {
+                // What is left of the unreadable copies (one that changed) goes with them.
+                for part in parts.iter().filter(|p| indexes.contains(&p.index)) {
+                    uploads::discard_part(&task_state, &id, part).await;
+                }
+            }
+            UploadEnd::Committed { .. } | UploadEnd::Failed { .. } => {
+                uploads::discard_parts(&task_state, &id).await;
+            }
         }
-        result
+        result.map_err(|e| match e {
+            AssembleError::PartUnreadable { index } => uploads::part_unreadable(&id, index),
+            AssembleError::Refused(e) => e,
+        })
     })
     .await
     .map_err(|e| ApiError::internal("committing the upload", e))?;
@@ -545,4 +598,158 @@ pub async fn remove(
         uploads::discard_parts(&state, &id).await;
     }
     Ok(StatusCode::NO_CONTENT)
+}
+
+#[cfg(test)]
+mod tests {
+    //! Interleavings of part, commit and delete requests, forced with [`uploads::pause`]: a
+    //! request is held at a chosen point while another runs, then let go.
+
+    use std::sync::Arc;
+    use std::time::Duration;
+
+    use base64::Engine as _;
+    use sha2::{Digest as _, Sha256};
+
+    use crate::uploads::pause;
+    use crate::{Server, ServiceConfig};
+
+    /// A server on loopback over a fresh data dir, no workers, the core validating in process.
+    async fn server() -> (tempfile::TempDir, Server, reqwest::Client, String) {
+        let dir = tempfile::tempdir().unwrap();
+        let mut config = ServiceConfig::new(dir.path());
+        config.bind = "127.0.0.1:0".parse().unwrap();
+        config.workers = 0;
+        let server = Server::start(
+            config,
+            Arc::new(crate::core_pipeline::CorePipeline::default()),
+        )
+        .await
+        .unwrap();
+        let base = format!("http://{}", server.local_addr());
+        (dir, server, reqwest::Client::new(), base)
+    }
+
+    /// A small valid capture as a tar.
+    fn capture_tar() -> Vec<u8> {
+        let dir = tempfile::tempdir().unwrap();
+        let options = phygap::pipeline::synth::SynthOptions {
+            views: 10,
+            size: 24,
+            ..Default::default()
+        };
+        phygap::pipeline::synth::synth(dir.path(), &options).unwrap();
+        let mut builder = tar::Builder::new(Vec::new());
+        builder.append_dir_all(".", dir.path()).unwrap();
+        builder.into_inner().unwrap()
+    }
+
+    const PART: usize = 64 << 10;
+
+    async fn create(client: &reqwest::Client, base: &str, size: usize) -> String {
+        let response = client
+            .post(format!("{base}/v1/uploads"))
+            .json(&serde_json::json!({ "size": size, "part_size": PART }))
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(response.status(), 201);
+        let body: serde_json::Value = response.json().await.unwrap();
+        body["id"].as_str().unwrap().to_owned()
+    }
+
+    async fn put(
+        client: &reqwest::Client,
+        base: &str,
+        id: &str,
+        index: usize,
+        bytes: &[u8],
+    ) -> u16 {
+        let digest = base64::engine::general_purpose::STANDARD.encode(Sha256::digest(bytes));
+        client
+            .put(format!("{base}/v1/uploads/{id}/parts/{index}"))
+            .header("content-digest", format!("sha-256=:{digest}:"))
+            .body(bytes.to_vec())
+            .send()
+            .await
+            .unwrap()
+            .status()
+            .as_u16()
+    }
+
+    async fn commit(client: &reqwest::Client, base: &str, id: &str) -> (u16, serde_json::Value) {
+        let response = client
+            .post(format!("{base}/v1/uploads/{id}/commit"))
+            .send()
+            .await
+            .unwrap();
+        let status = response.status().as_u16();
+        (status, response.json().await.unwrap_or_default())
+    }
+
+    async fn reached(pause: &pause::Pause) {
+        tokio::time::timeout(Duration::from_secs(30), pause.reached.notified())
+            .await
+            .expect("the request reached its pause point");
+    }
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+    async fn a_part_sent_again_while_a_commit_runs_leaves_the_commit_its_parts() {
+        let (_dir, server, client, base) = server().await;
+        let archive = capture_tar();
+        let id = create(&client, &base, archive.len()).await;
+        for (index, part) in archive.chunks(PART).enumerate() {
+            assert_eq!(put(&client, &base, &id, index, part).await, 200);
+        }
+
+        // Part 0 again, the same bytes: held once stored, before the store records it.
+        let stored = pause::arm(&id, pause::PART_STORED);
+        let again = tokio::spawn({
+            let (client, base, id) = (client.clone(), base.clone(), id.clone());
+            let part = archive[..PART].to_vec();
+            async move { put(&client, &base, &id, 0, &part).await }
+        });
+        reached(&stored).await;
+        // A commit takes the upload and is held before it reads a part.
+        let taken = pause::arm(&id, pause::COMMIT_TAKEN);
+        let committing = tokio::spawn({
+            let (client, base, id) = (client.clone(), base.clone(), id.clone());
+            async move { commit(&client, &base, &id).await }
+        });
+        reached(&taken).await;
+        // The part request is refused (the upload is being committed) and cleans up after
+        // itself; then the commit reads its parts.
+        stored.release.notify_one();
+        assert_eq!(again.await.unwrap(), 409);
+        taken.release.notify_one();
+        let (status, body) = committing.await.unwrap();
+        assert_eq!(status, 201, "{body}");
+        assert!(body["id"].as_str().unwrap().starts_with("cap_"), "{body}");
+        server.shutdown().await;
+    }
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+    async fn a_delete_during_a_part_leaves_no_folder_behind() {
+        let (dir, server, client, base) = server().await;
+        let id = create(&client, &base, 3 * PART).await;
+        let part = vec![7u8; PART];
+        // Held before it stores its copy, while the upload and its folder are removed.
+        let stored = pause::arm(&id, pause::PART_RECEIVED);
+        let sending = tokio::spawn({
+            let (client, base, id, part) = (client.clone(), base.clone(), id.clone(), part.clone());
+            async move { put(&client, &base, &id, 1, &part).await }
+        });
+        reached(&stored).await;
+        let deleted = client
+            .delete(format!("{base}/v1/uploads/{id}"))
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(deleted.status(), 204);
+        stored.release.notify_one();
+        assert_eq!(sending.await.unwrap(), 404);
+        let folder = dir.path().join("uploads").join(&id);
+        assert!(!folder.exists(), "{} is left", folder.display());
+        server.shutdown().await;
+    }
 }

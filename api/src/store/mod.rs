@@ -310,6 +310,10 @@ pub struct UploadPart {
     pub size: u64,
     /// Lower-case hexadecimal SHA-256.
     pub sha256: String,
+    /// The request that stored this copy of the part (part of its key, so no other request
+    /// writes or removes it); `None` for a part an older release stored under its number and
+    /// digest alone.
+    pub copy: Option<String>,
 }
 
 /// What recording a part did.
@@ -336,6 +340,21 @@ pub enum UploadEnd {
     },
     /// A failure of the service's own: open again, to be committed again.
     Reopened,
+    /// Open again without these parts, whose stored copies could not be read back: the client
+    /// sends them again.
+    PartsLost {
+        indexes: Vec<u32>,
+    },
+}
+
+/// What a storage reservation ([`Store::reserve_bytes`]) found and granted.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Reserved {
+    /// Bytes added to the reservation by this call (0: refused).
+    pub granted: u64,
+    /// What the account stored before the call: captures, open uploads and live reservations
+    /// (this one's earlier grants included).
+    pub stored_bytes: u64,
 }
 
 /// Result of deleting a capture or a job.
@@ -408,8 +427,8 @@ pub trait Store: Send + Sync + 'static {
         self.claim_within(owner, now, lease_until, &RunningLimits::default())
             .await
     }
-    /// What `account` holds: its running and queued jobs, and the bytes of its captures and
-    /// open uploads.
+    /// What `account` holds: its running and queued jobs, and the bytes of its captures, open
+    /// uploads and live storage reservations ([`Store::reserve_bytes`]).
     async fn account_usage(&self, account: &str) -> Result<AccountUsage, StoreError>;
     /// Writes progress and extends the lease; returns whether a cancel was requested.
     async fn heartbeat(
@@ -505,6 +524,41 @@ pub trait Store: Send + Sync + 'static {
     async fn delete_upload(&self, id: &str) -> Result<bool, StoreError>;
     /// Uploads last touched before `before` (unix ms), in any state.
     async fn uploads_idle_before(&self, before: i64) -> Result<Vec<String>, StoreError>;
+    /// Reserves storage for `account` under `id` (the id of the capture or upload the bytes
+    /// are for), checking its stored bytes against `limit` in the same transaction as the
+    /// reservation is written, so concurrent requests, from any process, cannot pass the limit
+    /// together. Grants `bytes` more when they fit; when they do not, what still fits if
+    /// `partial`, else nothing. A reservation adds to the account's stored bytes until `until`
+    /// (unix ms, renewed by each grant) or until a capture or upload with its id is recorded
+    /// (which then counts instead); [`Store::release_reservation`] removes it.
+    #[allow(clippy::too_many_arguments)]
+    async fn reserve_bytes(
+        &self,
+        account: &str,
+        id: &str,
+        bytes: u64,
+        partial: bool,
+        limit: u64,
+        now: i64,
+        until: i64,
+    ) -> Result<Reserved, StoreError>;
+    /// Removes a reservation (whether or not its capture or upload was recorded).
+    async fn release_reservation(&self, id: &str) -> Result<(), StoreError>;
+    /// Reserves a place in `account`'s queue for job `job_id` (about to be submitted, or
+    /// restarted) when its queued jobs and live places number fewer than `max_queued`, checked
+    /// in the transaction that writes the place; `Err(n)`: refused, the account holds `n`. A
+    /// place counts until `until` (unix ms), or until its job is in the queue (or past it);
+    /// [`Store::release_queue_place`] removes it.
+    async fn reserve_queue_place(
+        &self,
+        account: &str,
+        job_id: &str,
+        max_queued: u32,
+        now: i64,
+        until: i64,
+    ) -> Result<Result<(), u32>, StoreError>;
+    /// Removes a queue place (whether or not its job was submitted).
+    async fn release_queue_place(&self, job_id: &str) -> Result<(), StoreError>;
 }
 
 pub(crate) fn corrupt(id: &str, column: &'static str, problem: impl ToString) -> StoreError {
@@ -673,7 +727,7 @@ impl UploadEnd {
         match self {
             UploadEnd::Committed { capture_id } => ("committed", Some(capture_id), None, None),
             UploadEnd::Failed { code, message } => ("failed", None, Some(code), Some(message)),
-            UploadEnd::Reopened => ("open", None, None, None),
+            UploadEnd::Reopened | UploadEnd::PartsLost { .. } => ("open", None, None, None),
         }
     }
 }

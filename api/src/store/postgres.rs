@@ -14,8 +14,8 @@ use tokio_postgres::{NoTls, Row};
 
 use super::{
     abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, JobSpec,
-    NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Store, StoreError,
-    UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
+    NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Reserved, Store,
+    StoreError, UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
 };
 use crate::quotas::{AccountUsage, RunningLimits};
 
@@ -33,6 +33,10 @@ const MIGRATIONS: &[(i32, &str)] = &[
         3,
         include_str!("../../migrations/postgres/0003_operations.sql"),
     ),
+    (
+        4,
+        include_str!("../../migrations/postgres/0004_reservations.sql"),
+    ),
 ];
 
 /// Key of the advisory lock that serializes migrations ("phygap" in ASCII).
@@ -49,6 +53,31 @@ const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created
                            webhook_done, priority, max_runtime_s";
 /// Key of the advisory lock that claims under running limits take in turn (the migrations' + 1).
 const CLAIM_LOCK: i64 = MIGRATION_LOCK + 1;
+
+/// First key of the advisory locks that an account's storage reservations take in turn (the
+/// second is a hash of the account's name).
+const QUOTA_LOCK: i32 = 0x7068_7971;
+
+/// The bytes account `$1` stores at `$2` (unix ms): its captures, its open uploads, and its
+/// reservations still live whose capture or upload is not recorded yet.
+const STORED_BYTES: &str = "
+    ((SELECT COALESCE(SUM(size_bytes), 0) FROM captures WHERE account = $1)
+     + (SELECT COALESCE(SUM(size), 0) FROM uploads
+        WHERE account = $1 AND state IN ('open', 'committing'))
+     + (SELECT COALESCE(SUM(r.bytes), 0) FROM reservations r
+        WHERE r.account = $1 AND r.expires_at > $2
+          AND NOT EXISTS (SELECT 1 FROM captures c WHERE c.id = r.id)
+          AND NOT EXISTS (SELECT 1 FROM uploads u WHERE u.id = r.id)))::BIGINT";
+
+/// The jobs account `$1` has queued at `$2` (unix ms), with the live places reserved for jobs
+/// not yet in the queue (a place whose job is queued, running or ended counts no more; a
+/// failed or cancelled job's place is one for its restart).
+const QUEUED_OR_PLACED: &str = "
+    ((SELECT COUNT(*) FROM jobs WHERE account = $1 AND state = 'queued')
+     + (SELECT COUNT(*) FROM queue_places q
+        WHERE q.account = $1 AND q.expires_at > $2
+          AND NOT EXISTS (SELECT 1 FROM jobs j
+                          WHERE j.id = q.job_id AND j.state NOT IN ('failed', 'cancelled'))))";
 
 /// How many columns [`JOB_COLUMNS`] names.
 const JOB_COLUMN_COUNT: usize = 20;
@@ -140,7 +169,8 @@ async fn upload_with<C: tokio_postgres::GenericClient>(
     let raw = raw_upload(&row)?;
     let parts = client
         .query(
-            "SELECT idx, size, sha256 FROM upload_parts WHERE upload_id = $1 ORDER BY idx",
+            "SELECT idx, size, sha256, copy_id FROM upload_parts WHERE upload_id = $1
+             ORDER BY idx",
             &[&id],
         )
         .await?
@@ -155,6 +185,7 @@ fn part_of(row: &Row) -> Result<UploadPart, StoreError> {
         index: row.try_get::<_, i32>(0)?.max(0) as u32,
         size: row.try_get::<_, i64>(1)?.max(0) as u64,
         sha256: row.try_get(2)?,
+        copy: row.try_get(3)?,
     })
 }
 
@@ -563,13 +594,13 @@ impl Store for PostgresStore {
         let client = self.pool.get().await?;
         let row = client
             .query_one(
-                "SELECT
+                &format!(
+                    "SELECT
                     (SELECT COUNT(*) FROM jobs WHERE account = $1 AND state = 'running'),
                     (SELECT COUNT(*) FROM jobs WHERE account = $1 AND state = 'queued'),
-                    ((SELECT COALESCE(SUM(size_bytes), 0) FROM captures WHERE account = $1)
-                     + (SELECT COALESCE(SUM(size), 0) FROM uploads
-                        WHERE account = $1 AND state IN ('open', 'committing')))::BIGINT",
-                &[&account],
+                    {STORED_BYTES}"
+                ),
+                &[&account, &super::now_ms()],
             )
             .await?;
         let count = |i: usize| -> Result<u32, StoreError> {
@@ -872,16 +903,18 @@ impl Store for PostgresStore {
         let index = part.index as i32;
         let replaced = tx
             .query_opt(
-                "SELECT idx, size, sha256 FROM upload_parts WHERE upload_id = $1 AND idx = $2",
+                "SELECT idx, size, sha256, copy_id FROM upload_parts
+                 WHERE upload_id = $1 AND idx = $2",
                 &[&id, &index],
             )
             .await?
             .map(|row| part_of(&row))
             .transpose()?;
         tx.execute(
-            "INSERT INTO upload_parts (upload_id, idx, size, sha256) VALUES ($1, $2, $3, $4)
-             ON CONFLICT (upload_id, idx) DO UPDATE SET size = $3, sha256 = $4",
-            &[&id, &index, &(part.size as i64), &part.sha256],
+            "INSERT INTO upload_parts (upload_id, idx, size, sha256, copy_id)
+             VALUES ($1, $2, $3, $4, $5)
+             ON CONFLICT (upload_id, idx) DO UPDATE SET size = $3, sha256 = $4, copy_id = $5",
+            &[&id, &index, &(part.size as i64), &part.sha256, &part.copy],
         )
         .await?;
         tx.execute(
@@ -934,6 +967,14 @@ impl Store for PostgresStore {
             tx.execute("DELETE FROM upload_parts WHERE upload_id = $1", &[&id])
                 .await?;
         }
+        if let UploadEnd::PartsLost { indexes } = end {
+            let indexes: Vec<i32> = indexes.iter().map(|&i| i as i32).collect();
+            tx.execute(
+                "DELETE FROM upload_parts WHERE upload_id = $1 AND idx = ANY($2)",
+                &[&id, &indexes],
+            )
+            .await?;
+        }
         tx.commit().await?;
         Ok(())
     }
@@ -945,6 +986,119 @@ impl Store for PostgresStore {
             .execute("DELETE FROM uploads WHERE id = $1", &[&id])
             .await?;
         Ok(deleted > 0)
+    }
+
+    async fn reserve_bytes(
+        &self,
+        account: &str,
+        id: &str,
+        bytes: u64,
+        partial: bool,
+        limit: u64,
+        now: i64,
+        until: i64,
+    ) -> Result<Reserved, StoreError> {
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        // The account's reservations take turns (across every process on this database):
+        // none checks while another has checked and not yet written.
+        tx.execute(
+            "SELECT pg_advisory_xact_lock($1, hashtext($2))",
+            &[&QUOTA_LOCK, &account],
+        )
+        .await?;
+        tx.execute(
+            "DELETE FROM reservations WHERE account = $1 AND id <> $3
+             AND (expires_at <= $2 OR id IN (SELECT id FROM captures)
+                  OR id IN (SELECT id FROM uploads))",
+            &[&account, &now, &id],
+        )
+        .await?;
+        let stored: i64 = tx
+            .query_one(&format!("SELECT {STORED_BYTES}"), &[&account, &now])
+            .await?
+            .try_get(0)?;
+        let stored = stored.max(0) as u64;
+        let room = limit.saturating_sub(stored);
+        let granted = match (bytes <= room, partial) {
+            (true, _) => bytes,
+            (false, true) => room,
+            (false, false) => 0,
+        };
+        if granted > 0 {
+            tx.execute(
+                "INSERT INTO reservations (id, account, bytes, expires_at) VALUES ($1, $2, $3, $4)
+                 ON CONFLICT (id) DO UPDATE
+                 SET bytes = reservations.bytes + excluded.bytes, expires_at = excluded.expires_at",
+                &[
+                    &id,
+                    &account,
+                    &(granted.min(i64::MAX as u64) as i64),
+                    &until,
+                ],
+            )
+            .await?;
+        }
+        tx.commit().await?;
+        Ok(Reserved {
+            granted,
+            stored_bytes: stored,
+        })
+    }
+
+    async fn release_reservation(&self, id: &str) -> Result<(), StoreError> {
+        let client = self.pool.get().await?;
+        client
+            .execute("DELETE FROM reservations WHERE id = $1", &[&id])
+            .await?;
+        Ok(())
+    }
+
+    async fn reserve_queue_place(
+        &self,
+        account: &str,
+        job_id: &str,
+        max_queued: u32,
+        now: i64,
+        until: i64,
+    ) -> Result<Result<(), u32>, StoreError> {
+        let mut client = self.pool.get().await?;
+        let tx = client.transaction().await?;
+        // One account's places are checked and written in turn, across processes.
+        tx.execute(
+            "SELECT pg_advisory_xact_lock($1, hashtext($2))",
+            &[&(QUOTA_LOCK + 1), &account],
+        )
+        .await?;
+        tx.execute(
+            "DELETE FROM queue_places WHERE account = $1 AND expires_at <= $2",
+            &[&account, &now],
+        )
+        .await?;
+        let held: i64 = tx
+            .query_one(&format!("SELECT {QUEUED_OR_PLACED}"), &[&account, &now])
+            .await?
+            .try_get(0)?;
+        let held = held.clamp(0, u32::MAX as i64) as u32;
+        if held >= max_queued {
+            return Ok(Err(held));
+        }
+        tx.execute(
+            "INSERT INTO queue_places (job_id, account, expires_at) VALUES ($1, $2, $3)
+             ON CONFLICT (job_id) DO UPDATE SET expires_at = excluded.expires_at",
+            &[&job_id, &account, &until],
+        )
+        .await?;
+        tx.commit().await?;
+        Ok(Ok(()))
+    }
+
+    async fn release_queue_place(&self, job_id: &str) -> Result<(), StoreError> {
+        let client = self.pool.get().await?;
+        client
+            .execute("DELETE FROM queue_places WHERE job_id = $1", &[&job_id])
+            .await?;
+        Ok(())
     }
 
     async fn uploads_idle_before(&self, before: i64) -> Result<Vec<String>, StoreError> {

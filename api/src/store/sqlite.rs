@@ -4,12 +4,12 @@
 use std::path::Path;
 use std::sync::Mutex;
 
-use rusqlite::{params, Connection, OptionalExtension, Row};
+use rusqlite::{params, Connection, OptionalExtension, Row, TransactionBehavior};
 
 use super::{
     abandoned_message, corrupt, to_json, CaptureRecord, DeleteOutcome, Finish, JobRecord, JobSpec,
-    NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Store, StoreError,
-    UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
+    NewJob, PartOutcome, Progress, QueueCounts, RawCapture, RawJob, RawUpload, Reserved, Store,
+    StoreError, UploadEnd, UploadPart, UploadRecord, WebhookDelivery, ABANDONED, UPLOAD_COLUMNS,
 };
 use crate::quotas::{AccountUsage, RunningLimits};
 
@@ -75,7 +75,40 @@ CREATE TABLE IF NOT EXISTS upload_parts (
     sha256 TEXT NOT NULL,
     PRIMARY KEY (upload_id, idx)
 );
+CREATE TABLE IF NOT EXISTS reservations (
+    id TEXT PRIMARY KEY,
+    account TEXT NOT NULL,
+    bytes INTEGER NOT NULL,
+    expires_at INTEGER NOT NULL
+);
+CREATE INDEX IF NOT EXISTS reservations_by_account ON reservations(account);
+CREATE TABLE IF NOT EXISTS queue_places (
+    job_id TEXT PRIMARY KEY,
+    account TEXT NOT NULL,
+    expires_at INTEGER NOT NULL
+);
 ";
+
+/// The jobs account `?1` has queued at `?2` (unix ms), with the live places reserved for jobs
+/// not yet in the queue (a place whose job is queued, running or ended counts no more; a
+/// failed or cancelled job's place is one for its restart).
+const QUEUED_OR_PLACED: &str = "
+    (SELECT COUNT(*) FROM jobs WHERE account = ?1 AND state = 'queued')
+  + (SELECT COUNT(*) FROM queue_places q
+     WHERE q.account = ?1 AND q.expires_at > ?2
+       AND NOT EXISTS (SELECT 1 FROM jobs j
+                       WHERE j.id = q.job_id AND j.state NOT IN ('failed', 'cancelled')))";
+
+/// The bytes account `?1` stores at `?2` (unix ms): its captures, its open uploads, and its
+/// reservations still live whose capture or upload is not recorded yet.
+const STORED_BYTES: &str = "
+    (SELECT COALESCE(SUM(size_bytes), 0) FROM captures WHERE account = ?1)
+  + (SELECT COALESCE(SUM(size), 0) FROM uploads
+     WHERE account = ?1 AND state IN ('open', 'committing'))
+  + (SELECT COALESCE(SUM(r.bytes), 0) FROM reservations r
+     WHERE r.account = ?1 AND r.expires_at > ?2
+       AND NOT EXISTS (SELECT 1 FROM captures c WHERE c.id = r.id)
+       AND NOT EXISTS (SELECT 1 FROM uploads u WHERE u.id = r.id))";
 
 const JOB_COLUMNS: &str = "id, capture_id, spec, state, progress, error, created_at, started_at, \
                            finished_at, attempts, cancel_requested, account, error_code, \
@@ -101,6 +134,7 @@ const ADDED_COLUMNS: &[(&str, &str)] = &[
     ("jobs", "webhook_done INTEGER NOT NULL DEFAULT 0"),
     ("jobs", "priority INTEGER NOT NULL DEFAULT 0"),
     ("jobs", "max_runtime_s INTEGER"),
+    ("upload_parts", "copy_id TEXT"),
 ];
 
 /// Moves keys of files written by the first release into `request_key`, dropping the
@@ -154,6 +188,16 @@ fn raw_job(row: &Row<'_>) -> rusqlite::Result<RawJob> {
         webhook_done: row.get(17)?,
         priority: row.get(18)?,
         max_runtime_seconds: row.get(19)?,
+    })
+}
+
+/// A part as `SELECT idx, size, sha256, copy_id` reads it.
+fn part_row(row: &Row<'_>) -> rusqlite::Result<UploadPart> {
+    Ok(UploadPart {
+        index: row.get(0)?,
+        size: row.get::<_, i64>(1)?.max(0) as u64,
+        sha256: row.get(2)?,
+        copy: row.get(3)?,
     })
 }
 
@@ -211,16 +255,11 @@ impl SqliteStore {
             return Ok(None);
         };
         let mut stmt = conn.prepare(
-            "SELECT idx, size, sha256 FROM upload_parts WHERE upload_id = ?1 ORDER BY idx",
+            "SELECT idx, size, sha256, copy_id FROM upload_parts WHERE upload_id = ?1
+             ORDER BY idx",
         )?;
         let parts = stmt
-            .query_map(params![id], |r| {
-                Ok(UploadPart {
-                    index: r.get(0)?,
-                    size: r.get::<_, i64>(1)?.max(0) as u64,
-                    sha256: r.get(2)?,
-                })
-            })?
+            .query_map(params![id], part_row)?
             .collect::<Result<Vec<_>, _>>()?;
         raw.parse(parts).map(Some)
     }
@@ -517,13 +556,13 @@ impl Store for SqliteStore {
     async fn account_usage(&self, account: &str) -> Result<AccountUsage, StoreError> {
         self.with(|c| {
             Ok(c.query_row(
-                "SELECT
+                &format!(
+                    "SELECT
                     (SELECT COUNT(*) FROM jobs WHERE account = ?1 AND state = 'running'),
                     (SELECT COUNT(*) FROM jobs WHERE account = ?1 AND state = 'queued'),
-                    (SELECT COALESCE(SUM(size_bytes), 0) FROM captures WHERE account = ?1)
-                  + (SELECT COALESCE(SUM(size), 0) FROM uploads
-                     WHERE account = ?1 AND state IN ('open', 'committing'))",
-                params![account],
+                    {STORED_BYTES}"
+                ),
+                params![account, super::now_ms()],
                 |r| {
                     Ok(AccountUsage {
                         running: r.get(0)?,
@@ -818,21 +857,17 @@ impl Store for SqliteStore {
             }
             let replaced = tx
                 .query_row(
-                    "SELECT size, sha256 FROM upload_parts WHERE upload_id = ?1 AND idx = ?2",
+                    "SELECT idx, size, sha256, copy_id FROM upload_parts
+                     WHERE upload_id = ?1 AND idx = ?2",
                     params![id, part.index],
-                    |r| {
-                        Ok(UploadPart {
-                            index: part.index,
-                            size: r.get::<_, i64>(0)?.max(0) as u64,
-                            sha256: r.get(1)?,
-                        })
-                    },
+                    part_row,
                 )
                 .optional()?;
             tx.execute(
-                "INSERT INTO upload_parts (upload_id, idx, size, sha256) VALUES (?1, ?2, ?3, ?4)
-                 ON CONFLICT (upload_id, idx) DO UPDATE SET size = ?3, sha256 = ?4",
-                params![id, part.index, part.size as i64, part.sha256],
+                "INSERT INTO upload_parts (upload_id, idx, size, sha256, copy_id)
+                 VALUES (?1, ?2, ?3, ?4, ?5)
+                 ON CONFLICT (upload_id, idx) DO UPDATE SET size = ?3, sha256 = ?4, copy_id = ?5",
+                params![id, part.index, part.size as i64, part.sha256, part.copy],
             )?;
             tx.execute(
                 "UPDATE uploads SET updated_at = ?2 WHERE id = ?1",
@@ -875,6 +910,14 @@ impl Store for SqliteStore {
             if state != "open" {
                 tx.execute("DELETE FROM upload_parts WHERE upload_id = ?1", params![id])?;
             }
+            if let UploadEnd::PartsLost { indexes } = end {
+                for index in indexes {
+                    tx.execute(
+                        "DELETE FROM upload_parts WHERE upload_id = ?1 AND idx = ?2",
+                        params![id, index],
+                    )?;
+                }
+            }
             tx.commit()?;
             Ok(())
         })
@@ -897,6 +940,104 @@ impl Store for SqliteStore {
                 .query_map(params![before], |r| r.get(0))?
                 .collect::<Result<Vec<String>, _>>()?;
             Ok(ids)
+        })
+    }
+
+    async fn reserve_bytes(
+        &self,
+        account: &str,
+        id: &str,
+        bytes: u64,
+        partial: bool,
+        limit: u64,
+        now: i64,
+        until: i64,
+    ) -> Result<Reserved, StoreError> {
+        self.with(|c| {
+            // IMMEDIATE: the write lock is taken before the check, so another process on the
+            // same file cannot check between this check and this write.
+            let tx = c.transaction_with_behavior(TransactionBehavior::Immediate)?;
+            tx.execute(
+                "DELETE FROM reservations WHERE account = ?1 AND id <> ?3
+                 AND (expires_at <= ?2 OR id IN (SELECT id FROM captures)
+                      OR id IN (SELECT id FROM uploads))",
+                params![account, now, id],
+            )?;
+            let stored: i64 = tx.query_row(
+                &format!("SELECT {STORED_BYTES}"),
+                params![account, now],
+                |r| r.get(0),
+            )?;
+            let stored = stored.max(0) as u64;
+            let room = limit.saturating_sub(stored);
+            let granted = match (bytes <= room, partial) {
+                (true, _) => bytes,
+                (false, true) => room,
+                (false, false) => 0,
+            };
+            if granted > 0 {
+                tx.execute(
+                    "INSERT INTO reservations (id, account, bytes, expires_at) VALUES (?1, ?2, ?3, ?4)
+                     ON CONFLICT (id) DO UPDATE
+                     SET bytes = bytes + excluded.bytes, expires_at = excluded.expires_at",
+                    params![id, account, granted.min(i64::MAX as u64) as i64, until],
+                )?;
+            }
+            tx.commit()?;
+            Ok(Reserved {
+                granted,
+                stored_bytes: stored,
+            })
+        })
+    }
+
+    async fn release_reservation(&self, id: &str) -> Result<(), StoreError> {
+        self.with(|c| {
+            c.execute("DELETE FROM reservations WHERE id = ?1", params![id])?;
+            Ok(())
+        })
+    }
+
+    async fn reserve_queue_place(
+        &self,
+        account: &str,
+        job_id: &str,
+        max_queued: u32,
+        now: i64,
+        until: i64,
+    ) -> Result<Result<(), u32>, StoreError> {
+        self.with(|c| {
+            let tx = c.transaction_with_behavior(TransactionBehavior::Immediate)?;
+            tx.execute(
+                "DELETE FROM queue_places WHERE account = ?1 AND expires_at <= ?2",
+                params![account, now],
+            )?;
+            let held: i64 = tx.query_row(
+                &format!("SELECT {QUEUED_OR_PLACED}"),
+                params![account, now],
+                |r| r.get(0),
+            )?;
+            let held = held.clamp(0, u32::MAX as i64) as u32;
+            if held >= max_queued {
+                return Ok(Err(held));
+            }
+            tx.execute(
+                "INSERT INTO queue_places (job_id, account, expires_at) VALUES (?1, ?2, ?3)
+                 ON CONFLICT (job_id) DO UPDATE SET expires_at = excluded.expires_at",
+                params![job_id, account, until],
+            )?;
+            tx.commit()?;
+            Ok(Ok(()))
+        })
+    }
+
+    async fn release_queue_place(&self, job_id: &str) -> Result<(), StoreError> {
+        self.with(|c| {
+            c.execute(
+                "DELETE FROM queue_places WHERE job_id = ?1",
+                params![job_id],
+            )?;
+            Ok(())
         })
     }
 

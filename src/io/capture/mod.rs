@@ -5,7 +5,8 @@
 //! and either returns the complete [`Capture`] or a [`CaptureError`] listing every problem found:
 //! nothing is half-imported. All images come back as linear RGB in the image_y_up Stokes convention.
 //! Views may also come from raw polarization-mosaic frames (`raw.rs`, `mosaic.rs`), and a folder
-//! holding a COLMAP model instead of `transforms.json` is read by `colmap/`.
+//! holding a COLMAP model instead of `transforms.json` is read by `colmap/`, one in the IDR/NeuS
+//! or LLFF layout by `layouts/`.
 
 pub mod colmap;
 pub mod dolp;
@@ -14,9 +15,11 @@ mod frame;
 mod hull;
 mod images;
 mod json;
+pub mod layouts;
 mod lens;
 mod limits;
 pub mod mosaic;
+pub mod npy;
 mod raw;
 mod raw_frame;
 pub mod resample;
@@ -219,6 +222,9 @@ pub fn load_with(path: &Path, options: &LoadOptions) -> Result<Capture, CaptureE
     if let Some(model) = colmap::find_model(path) {
         return colmap::load(path, &model, options);
     }
+    if let Some(location) = layouts::find_layout(path) {
+        return layouts::load(path, &location, options);
+    }
     let json_path = transforms_path(path);
     let _span = tracing::info_span!("load_capture", path = %json_path.display()).entered();
     let document = read_document(&json_path)?;
@@ -376,6 +382,14 @@ pub(crate) fn load_document(
     })
 }
 
+/// Whether `dir` is the root of a capture folder: it holds `transforms.json`, a COLMAP model, or
+/// the camera file of a dataset layout ([`layouts::find_layout`]).
+pub fn is_capture_folder(dir: &Path) -> bool {
+    dir.join("transforms.json").is_file()
+        || colmap::find_model(dir).is_some()
+        || layouts::find_layout(dir).is_some()
+}
+
 /// The JSON file of a capture given as a folder (its `transforms.json`) or as the file itself.
 pub fn transforms_path(path: &Path) -> PathBuf {
     if path.is_dir() {
@@ -428,9 +442,10 @@ pub fn load_cameras_within(
     limits: &CaptureLimits,
 ) -> Result<Vec<(String, Camera)>, CaptureError> {
     let json_path = transforms_path(path);
-    let cameras = match colmap::find_model(path) {
-        Some(model) => colmap::load_cameras(&model)?,
-        None => {
+    let cameras = match (colmap::find_model(path), layouts::find_layout(path)) {
+        (Some(model), _) => colmap::load_cameras(&model)?,
+        (None, Some(location)) => layouts::load_cameras(path, &location)?,
+        (None, None) => {
             let document = read_document(&json_path)?;
             let (cameras, problems) = frame::parse_cameras(&document);
             if !problems.is_empty() {

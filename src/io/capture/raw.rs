@@ -10,7 +10,7 @@ use serde::Serialize;
 
 use super::error::Problem;
 use super::frame::{FrameSpec, Header, Source, StokesConvention};
-use super::images::{binarize, LoadedView};
+use super::images::{mask_from_file, LoadedView};
 use super::json::{KeyedPath, TOP_LEVEL};
 use super::mosaic::{self, Demosaic, Mosaic};
 use super::raw_frame::{RawFrame, RawSettings, WhiteBalance};
@@ -203,13 +203,7 @@ fn read_mask(
         )
     })
     .map_err(problem)?;
-    if !(1..=2).contains(&image.channels) {
-        return Err(problem(format!(
-            "{shown} has {} channel(s); expected a single-channel (grey) mask ([1, 2] channels)",
-            image.channels
-        )));
-    }
-    let mask = binarize(&image.channel(0));
+    let mask = mask_from_file(&image, &shown.to_string()).map_err(problem)?;
     if (mask.width, mask.height) == (out_w, out_h) {
         return Ok(mask);
     }

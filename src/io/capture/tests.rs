@@ -450,14 +450,21 @@ fn wrong_channel_counts_are_named() {
             "1 channel(s); expected an RGB image",
         ],
     );
+    // A 3-channel mask is read when its channels are equal (white = object), refused otherwise.
     let (fx, doc) = Fixture::stokes(3);
     fx.png("mask/002.png", &Image::filled(W, H, 3, 1.0));
+    let capture = fx.load(&doc).unwrap();
+    assert!(capture.views[2].mask.data.iter().all(|&v| v == 1.0));
+    let coloured = Image::from_fn(W, H, 3, |x, _, o| {
+        o.copy_from_slice(&[1.0, 0.0, (x % 2) as f32])
+    });
+    fx.png("mask/002.png", &coloured);
     assert_names(
         &fx.error(&doc),
         &[
             "frame 2 (s0/002.exr)",
             "`mask_path`",
-            "3 channel(s); expected a single-channel",
+            "3 colour channels that are not equal",
         ],
     );
 }

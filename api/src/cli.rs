@@ -11,9 +11,14 @@ use phygap::io::capture::CaptureLimits;
 use crate::auth::{read_tokens_file, TokensFileError, MIN_TOKEN_CHARS};
 use crate::connections::HttpLimits;
 use crate::job_process::JobLimits;
+use crate::outbound::AddressPolicy;
 use crate::quotas::AccountLimits;
 use crate::webhooks::WebhookSettings;
 use crate::{ServiceConfig, ServiceLimits};
+
+/// The longest `--max-runtime-minutes`: ten years (a longer one would overflow the clock's
+/// deadline arithmetic).
+const MAX_RUNTIME_MINUTES: u64 = 10 * 366 * 24 * 60;
 
 #[derive(Debug, Parser)]
 #[command(
@@ -106,6 +111,8 @@ pub enum ConfigError {
     WeakToken(usize),
     #[error("--webhook: {0}")]
     Webhook(String),
+    #[error("--webhook-allow-cidr: {0}")]
+    WebhookAllowCidr(String),
 }
 
 #[derive(Debug, Args)]
@@ -166,8 +173,9 @@ pub struct ServeArgs {
           value_parser = clap::value_parser!(u64).range(1..=4096))]
     pub job_threads: Option<u64>,
     /// Longest a job's stage (training, export, relighting) may run, in minutes; a job over it
-    /// fails `time_limit`; 0: no limit.
-    #[arg(long, default_value_t = 1440, env = "PHYGAP_MAX_RUNTIME_MINUTES")]
+    /// fails `time_limit`; 0: no limit (at most ten years).
+    #[arg(long, default_value_t = 1440, env = "PHYGAP_MAX_RUNTIME_MINUTES",
+          value_parser = clap::value_parser!(u64).range(0..=MAX_RUNTIME_MINUTES))]
     pub max_runtime_minutes: u64,
     /// Most views (frames) a capture may have.
     #[arg(long, default_value_t = CaptureLimits::DEFAULT.max_views, env = "PHYGAP_MAX_VIEWS",
@@ -234,10 +242,21 @@ pub struct ServeArgs {
     /// Key of the webhooks' HMAC-SHA256 signatures (header Phygap-Signature).
     #[arg(long, env = "PHYGAP_WEBHOOK_SECRET", hide_env_values = true)]
     pub webhook_secret: Option<String>,
-    /// Hosts webhooks may call, comma separated (default: any; the service calls out from
-    /// inside its network, so list them).
+    /// Hosts webhooks may call, comma separated (default: any public host; the service calls
+    /// out from inside its network, so list them).
     #[arg(long, env = "PHYGAP_WEBHOOK_HOSTS", value_delimiter = ',')]
     pub webhook_hosts: Vec<String>,
+    /// Internal address ranges webhooks may reach, comma separated CIDR (`127.0.0.0/8`,
+    /// `10.1.0.0/16`, `::1/128`). Default: none (loopback, private, link-local, unique-local,
+    /// CGNAT, multicast and unspecified addresses are refused, however a URL names them).
+    #[arg(long, env = "PHYGAP_WEBHOOK_ALLOW_CIDR", value_delimiter = ',')]
+    pub webhook_allow_cidr: Vec<String>,
+    /// Connections one client address may hold open at once (past it, its new connections are
+    /// closed at once), so one client cannot take every slot of --max-connections.
+    #[arg(long, default_value_t = HttpLimits::DEFAULT.max_connections_per_client,
+          env = "PHYGAP_MAX_CONNECTIONS_PER_CLIENT",
+          value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=1_000_000))]
+    pub max_connections_per_client: usize,
 }
 
 impl ServeArgs {
@@ -275,6 +294,7 @@ impl ServeArgs {
         config.lease = std::time::Duration::from_secs(self.lease_seconds);
         config.http = HttpLimits {
             max_connections: self.max_connections,
+            max_connections_per_client: self.max_connections_per_client,
             header_timeout: std::time::Duration::from_secs(self.header_timeout_seconds),
             body_window: std::time::Duration::from_secs(self.upload_window_seconds),
             ..HttpLimits::DEFAULT
@@ -288,11 +308,17 @@ impl ServeArgs {
                 .map(|h| h.trim().to_owned())
                 .filter(|h| !h.is_empty())
                 .collect(),
+            addresses: AddressPolicy::allowing(
+                self.webhook_allow_cidr
+                    .iter()
+                    .filter(|r| !r.trim().is_empty()),
+            )
+            .map_err(ConfigError::WebhookAllowCidr)?,
         };
         if let Some(url) = &config.webhooks.default_url {
             config
                 .webhooks
-                .target(Some(url))
+                .parse(url)
                 .map_err(|e| ConfigError::Webhook(e.message))?;
         }
         config.limits = ServiceLimits {

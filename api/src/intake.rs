@@ -91,7 +91,7 @@ pub async fn read_relight_form(
     let mut webhook = None;
     while let Some(field) = multipart.next_field().await.map_err(multipart_error)? {
         match field.name().unwrap_or("") {
-            "webhook" => webhook = Some(field.text().await.map_err(multipart_error)?),
+            "webhook" => webhook = Some(read_text_field(field, "webhook").await?),
             "envmap" => {
                 let upload = staging.join("envmap.upload");
                 let head = save_field(field, &upload).await?;
@@ -109,7 +109,7 @@ pub async fn read_relight_form(
             }
             "cameras" => {
                 let path = staging.join("cameras.json");
-                save_field(field, &path).await?;
+                save_field_within(field, &path, MAX_CAMERAS_BYTES, "cameras").await?;
                 let text = tokio::fs::read(&path)
                     .await
                     .map_err(|e| ApiError::internal("reading the cameras", e))?;
@@ -119,7 +119,7 @@ pub async fn read_relight_form(
                 cameras_file = Some("cameras.json".to_owned());
             }
             "rotate_deg" => {
-                let text = field.text().await.map_err(multipart_error)?;
+                let text = read_text_field(field, "rotate_deg").await?;
                 rotate_deg = text
                     .trim()
                     .parse::<f64>()
@@ -128,7 +128,10 @@ pub async fn read_relight_form(
                     .ok_or_else(|| {
                         ApiError::unprocessable(
                             "invalid_rotate_deg",
-                            format!("rotate_deg must be a finite number, got {text:?}"),
+                            format!(
+                                "rotate_deg must be a finite number, got {:?}",
+                                prefix_of(&text)
+                            ),
                         )
                     })?;
             }
@@ -164,13 +167,67 @@ pub(crate) fn multipart_error(e: MultipartError) -> ApiError {
     }
 }
 
+/// Most bytes of a form's text field (`rotate_deg`, `webhook`): a number or a URL.
+pub const MAX_TEXT_FIELD_BYTES: usize = 4 << 10;
+
+/// Most bytes of a relight form's `cameras` (JSON, read whole to be checked).
+pub const MAX_CAMERAS_BYTES: u64 = 16 << 20;
+
+/// Characters of an input quoted back in an error message.
+const QUOTED_CHARS: usize = 64;
+
+/// Reads a text field of a form, refusing it (413) as soon as it passes
+/// [`MAX_TEXT_FIELD_BYTES`], before the rest is read.
+async fn read_text_field(mut field: Field<'_>, name: &str) -> Result<String, ApiError> {
+    let mut bytes = Vec::new();
+    while let Some(chunk) = field.chunk().await.map_err(multipart_error)? {
+        if bytes.len() + chunk.len() > MAX_TEXT_FIELD_BYTES {
+            return Err(ApiError::too_large(format!(
+                "the form field `{name}` is over {MAX_TEXT_FIELD_BYTES} bytes"
+            )));
+        }
+        bytes.extend_from_slice(&chunk);
+    }
+    String::from_utf8(bytes).map_err(|_| {
+        ApiError::bad_request(
+            "invalid_multipart",
+            format!("the form field `{name}` is not UTF-8 text"),
+        )
+    })
+}
+
+/// The start of an input, for an error message (never echoed whole).
+fn prefix_of(text: &str) -> String {
+    match text.char_indices().nth(QUOTED_CHARS) {
+        Some((end, _)) => format!("{}…", &text[..end]),
+        None => text.to_owned(),
+    }
+}
+
 /// Streams one multipart field into `target`; returns its first bytes (for format sniffing).
-async fn save_field(mut field: Field<'_>, target: &std::path::Path) -> Result<Vec<u8>, ApiError> {
+async fn save_field(field: Field<'_>, target: &std::path::Path) -> Result<Vec<u8>, ApiError> {
+    save_field_within(field, target, u64::MAX, "").await
+}
+
+/// [`save_field`], refusing (413) a field `name` once it passes `max_bytes`.
+async fn save_field_within(
+    mut field: Field<'_>,
+    target: &std::path::Path,
+    max_bytes: u64,
+    name: &str,
+) -> Result<Vec<u8>, ApiError> {
     let mut file = tokio::fs::File::create(target)
         .await
         .map_err(|e| ApiError::internal("saving an upload", e))?;
     let mut head = Vec::new();
+    let mut written = 0u64;
     while let Some(chunk) = field.chunk().await.map_err(multipart_error)? {
+        written += chunk.len() as u64;
+        if written > max_bytes {
+            return Err(ApiError::too_large(format!(
+                "the form field `{name}` is over {max_bytes} bytes"
+            )));
+        }
         if head.len() < 16 {
             head.extend_from_slice(&chunk[..chunk.len().min(16 - head.len())]);
         }

@@ -27,6 +27,7 @@ pub mod job_process;
 pub mod metrics;
 pub mod object_keys;
 pub mod openapi;
+pub mod outbound;
 pub mod pipeline;
 pub mod purge;
 pub mod queue;

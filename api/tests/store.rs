@@ -371,7 +371,7 @@ async fn webhooks_are_taken_once_retried_and_recorded(s: &dyn Store) {
     s.submit(&hooked, None).await.unwrap();
     s.submit(&new_job("job_b", 2), None).await.unwrap();
     assert!(
-        s.take_webhook(5, 100).await.unwrap().is_none(),
+        s.take_webhook(5, 100, &[]).await.unwrap().is_none(),
         "not ended yet"
     );
     while let Some(job) = s.claim("w", 10, 100).await.unwrap() {
@@ -379,24 +379,27 @@ async fn webhooks_are_taken_once_retried_and_recorded(s: &dyn Store) {
             .await
             .unwrap();
     }
-    let taken = s.take_webhook(30, 60).await.unwrap().unwrap();
+    let taken = s.take_webhook(30, 60, &[]).await.unwrap().unwrap();
     assert_eq!((taken.job.id.as_str(), taken.attempts), ("job_a", 0));
     assert_eq!(taken.url, "http://127.0.0.1:9/hook");
-    assert!(s.take_webhook(31, 60).await.unwrap().is_none(), "leased");
+    assert!(
+        s.take_webhook(31, 60, &[]).await.unwrap().is_none(),
+        "leased"
+    );
     s.record_webhook("job_a", 1, "not delivered: cannot connect", Some(80))
         .await
         .unwrap();
     assert!(
-        s.take_webhook(79, 200).await.unwrap().is_none(),
+        s.take_webhook(79, 200, &[]).await.unwrap().is_none(),
         "not due yet"
     );
-    let retry = s.take_webhook(80, 200).await.unwrap().unwrap();
+    let retry = s.take_webhook(80, 200, &[]).await.unwrap().unwrap();
     assert_eq!(retry.attempts, 1);
     s.record_webhook("job_a", 2, "delivered: 200", None)
         .await
         .unwrap();
     assert!(
-        s.take_webhook(10_000, 20_000).await.unwrap().is_none(),
+        s.take_webhook(10_000, 20_000, &[]).await.unwrap().is_none(),
         "delivered"
     );
     let webhook = s.job("job_a").await.unwrap().unwrap().webhook.unwrap();
@@ -409,6 +412,39 @@ async fn webhooks_are_taken_once_retried_and_recorded(s: &dyn Store) {
         (2, Some("delivered: 200"), true)
     );
     assert_eq!(s.job("job_b").await.unwrap().unwrap().webhook, None);
+}
+
+/// A sender passes over the accounts whose deliveries it already has in flight: their jobs stay
+/// due for later, and another account's delivery is taken first.
+async fn webhooks_of_busy_accounts_wait(s: &dyn Store) {
+    let hooked = |id: &str, at: i64, account: Option<&str>| NewJob {
+        webhook_url: Some("http://127.0.0.1:9/hook".into()),
+        account: account.map(str::to_owned),
+        ..new_job(id, at)
+    };
+    s.submit(&hooked("job_a", 1, Some("alice")), None)
+        .await
+        .unwrap();
+    s.submit(&hooked("job_b", 2, None), None).await.unwrap();
+    s.submit(&hooked("job_c", 3, Some("bob")), None)
+        .await
+        .unwrap();
+    let mut finished_at = 10;
+    while let Some(job) = s.claim("w", 10, 100).await.unwrap() {
+        finished_at += 1;
+        s.finish(&job.id, "w", &Finish::Succeeded, finished_at)
+            .await
+            .unwrap();
+    }
+    let busy = ["alice".to_owned(), String::new()];
+    let taken = s.take_webhook(50, 60, &busy).await.unwrap().unwrap();
+    assert_eq!(
+        taken.job.id, "job_c",
+        "alice's and the account-less job wait"
+    );
+    assert!(s.take_webhook(50, 60, &busy).await.unwrap().is_none());
+    let next = s.take_webhook(50, 60, &[]).await.unwrap().unwrap();
+    assert_eq!(next.job.id, "job_a", "the oldest once nobody is busy");
 }
 
 async fn progress_events_are_kept_in_order_and_go_with_their_job(s: &dyn Store) {
@@ -968,6 +1004,7 @@ where
     idempotency_keys_are_per_account(fresh().await.as_ref()).await;
     restarted_jobs_run_again_resuming_or_afresh(fresh().await.as_ref()).await;
     webhooks_are_taken_once_retried_and_recorded(fresh().await.as_ref()).await;
+    webhooks_of_busy_accounts_wait(fresh().await.as_ref()).await;
     progress_events_are_kept_in_order_and_go_with_their_job(fresh().await.as_ref()).await;
     concurrent_submits_with_one_key_create_one_job(fresh().await).await;
     cancel_and_capture_deletion_respect_job_states(fresh().await.as_ref()).await;

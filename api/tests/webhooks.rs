@@ -11,6 +11,7 @@ use axum::body::Bytes;
 use axum::http::HeaderMap;
 use common::*;
 use hmac::{Hmac, KeyInit, Mac};
+use phygap_api::outbound::AddressPolicy;
 use serde_json::{json, Value};
 use sha2::Sha256;
 
@@ -80,6 +81,8 @@ async fn server() -> (tempfile::TempDir, TestServer) {
     TestServer::start_fresh_with(|c| {
         c.webhooks.secret = SECRET.into();
         c.webhooks.allowed_hosts = vec!["127.0.0.1".into()];
+        // The receiver is on loopback, which webhooks may reach only when allowed.
+        c.webhooks.addresses = AddressPolicy::allowing(["127.0.0.0/8"]).unwrap();
     })
     .await
 }

@@ -326,7 +326,11 @@ pub async fn submit(
         ))
     }
     .map_err(|e| ApiError::internal("hashing the request", e))?;
-    let webhook_url = state.config.webhooks.target(request.webhook.as_deref())?;
+    let webhook_url = state
+        .config
+        .webhooks
+        .target(request.webhook.as_deref())
+        .await?;
     let asks = JobRequestLimits {
         priority: request.priority,
         max_runtime_seconds: request.max_runtime_seconds,
@@ -677,7 +681,7 @@ pub async fn relight(
         rotate_deg,
         webhook,
     } = crate::intake::read_relight_form(multipart, staging.path()).await?;
-    let webhook_url = state.config.webhooks.target(webhook.as_deref())?;
+    let webhook_url = state.config.webhooks.target(webhook.as_deref()).await?;
     let (envmap_path, cameras_path, limits) = (
         staging.path().join(&envmap_file),
         cameras_file.as_ref().map(|name| staging.path().join(name)),
@@ -724,6 +728,10 @@ pub async fn relight(
     state.runtime.wake_workers();
     Ok((StatusCode::CREATED, Json(record.into())))
 }
+
+/// The largest event number the stores can hold (a signed 64-bit column): a larger `from` is
+/// refused rather than wrapped.
+const MAX_EVENT_NUMBER: u64 = i64::MAX as u64;
 
 /// Most events `GET /v1/jobs/{id}/progress` answers at once.
 const MAX_PROGRESS_EVENTS: usize = 1000;
@@ -788,6 +796,12 @@ pub async fn progress(
     let Query(query) = query.map_err(|e| ApiError::bad_request("invalid_query", e.body_text()))?;
     load_job(&state, &caller, &id).await?;
     let from = query.from.unwrap_or(0);
+    if from > MAX_EVENT_NUMBER {
+        return Err(ApiError::bad_request(
+            "invalid_query",
+            format!("`from` is at most {MAX_EVENT_NUMBER}"),
+        ));
+    }
     let limit = query
         .limit
         .unwrap_or(MAX_PROGRESS_EVENTS)

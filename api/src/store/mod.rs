@@ -483,11 +483,13 @@ pub trait Store: Send + Sync + 'static {
     /// The number the job's next progress event gets (one past the last recorded).
     async fn next_event_seq(&self, id: &str) -> Result<u64, StoreError>;
     /// Takes the oldest webhook delivery due at `now` (a job that ended, with a webhook not yet
-    /// delivered or given up, whose next attempt is due) for the caller until `lease_until`.
+    /// delivered or given up, whose next attempt is due) for the caller until `lease_until`,
+    /// passing over the jobs of `busy_accounts` (`""`: jobs without an account).
     async fn take_webhook(
         &self,
         now: i64,
         lease_until: i64,
+        busy_accounts: &[String],
     ) -> Result<Option<WebhookDelivery>, StoreError>;
     /// Records attempt number `attempts` of a job's webhook: its status, and when the next is
     /// due (`None`: no more, it was delivered or given up).

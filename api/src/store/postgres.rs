@@ -817,7 +817,9 @@ impl Store for PostgresStore {
         &self,
         now: i64,
         lease_until: i64,
+        busy_accounts: &[String],
     ) -> Result<Option<WebhookDelivery>, StoreError> {
+        let busy = busy_accounts.to_vec();
         let job = self
             .query_job(
                 &format!(
@@ -827,11 +829,12 @@ impl Store for PostgresStore {
                          WHERE webhook_url IS NOT NULL AND NOT webhook_done
                            AND state IN ('succeeded', 'failed', 'cancelled')
                            AND COALESCE(webhook_next_at, 0) <= $1
+                           AND NOT (COALESCE(account, '') = ANY($3))
                          ORDER BY COALESCE(webhook_next_at, 0), finished_at
                          LIMIT 1 FOR UPDATE SKIP LOCKED)
                      RETURNING {JOB_COLUMNS}"
                 ),
-                &[&now, &lease_until],
+                &[&now, &lease_until, &busy],
             )
             .await?;
         Ok(job.and_then(WebhookDelivery::of))

@@ -773,7 +773,9 @@ impl Store for SqliteStore {
         &self,
         now: i64,
         lease_until: i64,
+        busy_accounts: &[String],
     ) -> Result<Option<WebhookDelivery>, StoreError> {
+        let busy = serde_json::to_string(busy_accounts).unwrap_or_else(|_| "[]".into());
         self.with(|c| {
             let sql = format!(
                 "UPDATE jobs SET webhook_next_at = ?2
@@ -782,11 +784,12 @@ impl Store for SqliteStore {
                      WHERE webhook_url IS NOT NULL AND webhook_done = 0
                        AND state IN ('succeeded', 'failed', 'cancelled')
                        AND COALESCE(webhook_next_at, 0) <= ?1
+                       AND COALESCE(account, '') NOT IN (SELECT value FROM json_each(?3))
                      ORDER BY COALESCE(webhook_next_at, 0), finished_at LIMIT 1)
                  RETURNING {JOB_COLUMNS}"
             );
             let job = c
-                .query_row(&sql, params![now, lease_until], raw_job)
+                .query_row(&sql, params![now, lease_until, busy], raw_job)
                 .optional()?
                 .map(RawJob::parse)
                 .transpose()?;

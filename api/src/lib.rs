@@ -108,7 +108,7 @@ pub struct ServiceConfig {
     pub webhooks: webhooks::WebhookSettings,
 }
 
-/// The bounds every input and every job is held to (README: "Limits").
+/// The bounds every input and every job is held to (docs/service.md, "Limits").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ServiceLimits {
     /// Views, pixels per view and decoded bytes of a capture (also a relight's cameras' views

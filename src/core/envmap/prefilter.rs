@@ -111,7 +111,7 @@ impl MipChainSpec {
     /// coarsest, the base keeps only the sharpest of its levels and filters the others at half
     /// its size: their lobes span several base texels, so half the size resolves them, at a
     /// sixteenth of the texel pairs (D = 64, two levels per size: a rebuild of 74–79 ms against
-    /// 200–217 ms with both at 64², and the same agreement with Mitsuba; README, *A finer
+    /// 200–217 ms with both at 64², and the same agreement with Mitsuba; docs/design/experiments.md, *A finer
     /// roughness chain*).
     pub fn level_sizes(&self) -> Vec<usize> {
         let per_size = self.levels_per_size.max(1);

@@ -244,7 +244,7 @@ fn a_synthetic_capture_round_trips_through_simulated_sensors() {
         let colour = sensor.is_colour();
         let (h, b) = compare_modes(&reference, &half, &bilinear, sensor, full_scale);
         eprintln!("synth {sensor:?} {bit_depth}-bit {file:?}: half {h:?}\n    bilinear {b:?}");
-        // About 1.5 × what was measured (README): interpolation error, plus quantization.
+        // About 1.5 × what was measured (docs/results.md, "Raw frames"): interpolation error, plus quantization.
         let (half_bound, bilinear_bound) = if colour {
             ([0.0075, 0.004, 0.004], [0.009, 0.0055, 0.005])
         } else {
@@ -604,7 +604,7 @@ fn shared_captures_round_trip_through_simulated_sensors() {
                 eprintln!(
                     "{scene} {sensor:?} {bit_depth}-bit (full scale {full_scale:.3}):\n    half {h:?}\n    bilinear {b:?}"
                 );
-                // About 1.5 × what was measured (README).
+                // About 1.5 × what was measured (docs/results.md, "Raw frames").
                 let (half_bound, bilinear_bound) = match (scene, colour) {
                     ("sphere", false) => ([0.010, 0.014, 0.014], [0.02, 0.016, 0.016]),
                     ("sphere", true) => ([0.020, 0.021, 0.021], [0.029, 0.022, 0.022]),

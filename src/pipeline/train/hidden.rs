@@ -3,7 +3,7 @@
 //! leaves surfels deep inside the object; while the surface in front of them is opaque they
 //! receive almost no gradient, but an opacity reset makes every surfel nearly transparent, and
 //! they come back into view, regain opacity where they fit the image and show through the surface
-//! as holes (README, *Surfaces seen through a hole*). Pruning them just before the reset removes
+//! as holes (docs/design/experiments.md, *Pruning hidden surfels*). Pruning them just before the reset removes
 //! nothing any view shows.
 //!
 //! The test, per view and surfel: project the centre; outside the image or before the near plane,

@@ -1,5 +1,7 @@
 //! `phygap inspect CAPTURE [--json]`: load and validate a capture, then print what it holds:
-//! views, kinds, size, bounds, DoLP statistics, raw-frame and COLMAP details, warnings.
+//! views, kinds, size, bounds, DoLP statistics, raw-frame and COLMAP details, the conventions
+//! found from the data (Stokes angle direction, colour space of 8/16-bit polarizer images) with
+//! their evidence, warnings.
 
 use std::path::PathBuf;
 
@@ -7,6 +9,7 @@ use anyhow::Result;
 use clap::Args;
 
 use phygap::core::resolution::Resolution;
+use phygap::io::capture::conventions::{self, ConventionsReport};
 use phygap::io::capture::{self, CaptureSummary};
 
 /// Arguments of `phygap inspect`.
@@ -24,10 +27,14 @@ pub struct InspectArgs {
 pub fn run(args: &InspectArgs) -> Result<()> {
     let capture = capture::load(&args.capture)?;
     let summary = capture.summary();
+    let report = conventions::check_capture(&args.capture, &capture);
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&summary)?);
+        let mut value = serde_json::to_value(&summary)?;
+        value["conventions"] = serde_json::to_value(&report)?;
+        println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
         print!("{}", describe(&capture.root, &summary));
+        print!("{}", describe_conventions(&report));
     }
     Ok(())
 }
@@ -103,6 +110,26 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
     }
     for warning in &s.warnings {
         text.push_str(&format!("warning     {warning}\n"));
+    }
+    text
+}
+
+/// The conventions found from the data, each with its evidence.
+fn describe_conventions(report: &ConventionsReport) -> String {
+    let mut text = String::new();
+    if let Some(s) = &report.stokes {
+        let verdict = format!("{:?}", s.verdict).to_lowercase();
+        text.push_str(&format!(
+            "stokes      {verdict} (stated {}): {}\n",
+            s.stated, s.explanation
+        ));
+    }
+    if let Some(c) = &report.color {
+        let fits = c.fits.map_or("inconclusive", |e| e.label());
+        text.push_str(&format!(
+            "colour      {fits} (stated {}): {}\n",
+            c.stated, c.explanation
+        ));
     }
     text
 }

@@ -2,6 +2,7 @@
 
 mod bench;
 mod check_shading;
+mod degrade;
 mod diagnose;
 mod eval;
 mod export;
@@ -50,6 +51,10 @@ enum Command {
     Export(export::ExportArgs),
     /// Render a small synthetic full-Stokes capture (sample data for a fresh machine).
     Synth(synth::SynthArgs),
+    /// Make a realistic capture from a clean one: sensor bit depth and noise, JPEG, per-view
+    /// exposure and white balance, vignetting, pose noise, mask erosion/dilation, polarizer
+    /// offset (`--preset machine-vision`); true poses and settings go to degrade.json.
+    Degrade(degrade::DegradeArgs),
     /// Check PolarDR against a capture's ground truth (GT G-buffers and light, no rasterizer).
     CheckShading(check_shading::CheckShadingArgs),
     /// Time the compute backends on synthetic scenes.
@@ -111,6 +116,7 @@ fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {
         }
         Command::Render(args) => render::run(&args),
         Command::Eval(args) => eval::run(&args),
+        Command::Degrade(args) => degrade::run(&args),
         Command::Diagnose(args) => diagnose::run(&args),
         Command::Relight(args) => relight::run(&args),
         Command::Mesh(args) => mesh::run(&args),

@@ -9,6 +9,8 @@
 //! or LLFF layout by `layouts/`.
 
 pub mod colmap;
+pub mod conventions;
+pub mod degrade;
 pub mod dolp;
 mod error;
 mod frame;
@@ -350,7 +352,7 @@ pub(crate) fn load_document(
             problems: vec![problem],
         }
     })?;
-    let mut warnings = Vec::new();
+    let mut warnings = conventions::check(&frames, &header, &views).warnings();
     if !unmasked.is_empty() {
         warnings.push(format!(
             "{} view(s) have no mask_path and no alpha channel; the whole image is treated as object (frames {})",

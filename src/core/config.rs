@@ -81,6 +81,11 @@ pub const MAX_LOWPASS_SIGMA_PX: f64 = 4.0;
 /// Mitsuba than 2 (README, *A finer roughness chain*).
 pub const MAX_MIP_LEVELS_PER_SIZE: u8 = 4;
 
+/// Default triangle budget of the exported mesh (`mesh_triangles`): a glTF of about 3.5 MB at
+/// most (positions, normals, colour, roughness coordinate and IoR: about 35 bytes a triangle),
+/// which a web viewer or a game engine loads at once. Smooth objects end well below it.
+pub const DEFAULT_MESH_TRIANGLES: u32 = 100_000;
+
 /// Every setting of a training run; also the training flags of the command line (each field a
 /// `--long-name` flag with the default as its default), so the CLI, the config file and the
 /// service's job `config` are one type.
@@ -276,6 +281,12 @@ pub struct TrainConfig {
     #[arg(long, default_value_t = TrainConfig::default().opacity_recovery_steps)]
     pub opacity_recovery_steps: u32,
 
+    /// Most triangles of the exported mesh (`model.glb`): the dense mesh is simplified by quadric
+    /// error collapses to this budget, or further where the surface is smooth enough (an error of
+    /// a quarter TSDF voxel); 0 keeps the dense mesh. `mesh.ply` stays dense.
+    #[arg(long, default_value_t = TrainConfig::default().mesh_triangles)]
+    pub mesh_triangles: u32,
+
     /// Whether the export fails when no mesh can be extracted (the TSDF of the model's depth
     /// has no zero crossing, as after a run too short to form a surface). Off: the export goes
     /// on without `mesh.ply` and `model.glb` and says why in `metrics.json`'s `warnings` (a
@@ -343,6 +354,7 @@ impl Default for TrainConfig {
             mesh_interval: 1_000,
             gridmap_interval: 300,
             opacity_recovery_steps: 300,
+            mesh_triangles: DEFAULT_MESH_TRIANGLES,
             require_mesh: false,
         }
     }

@@ -3,9 +3,11 @@
 //! ([`TsdfParams::automatic`]: 5-voxel truncation, depth limited to the far side of the bounds;
 //! a deliverable leaves out the pixels whose depths spread beyond the truncation and a few
 //! footprints, [`DepthPixels::Coherent`]),
-//! run marching cubes and keep the largest component (a model's deliverable mesh also has its holes
-//! closed). Used by `phygap mesh`, the export, the evaluation's Chamfer distance and GridMap
-//! (training and rendering).
+//! run marching cubes and keep the largest component. A model's deliverable mesh also has its holes
+//! closed and is smoothed by bilateral normal filtering ([`extract_deliverable`]); the export's glTF
+//! gets it simplified to a triangle budget ([`simplify_deliverable`]). Used by `phygap mesh`, the
+//! export, the evaluation's Chamfer distance and GridMap (training and rendering; its tracing mesh
+//! is the raw one).
 //!
 //! On a backend with its own fusion ([`Backend::fuse_depth`]: the gpu one) the depth maps are
 //! rendered and fused on the device and only the grid comes back; marching cubes runs on the host.
@@ -22,7 +24,8 @@ use crate::core::camera::Camera;
 use crate::core::engine::Backend;
 use crate::core::mesh::{
     cameras_around_point, fuse_tsdf, fusion_depth, mesh_from_grid, rendered_depth_views,
-    DepthPixels, GridLayout, MeshError, TriangleMesh, TsdfParams,
+    DepthPixels, GridLayout, MeshError, Simplification, SimplifyTarget, SmoothParams, TriangleMesh,
+    TsdfParams,
 };
 use crate::core::raster::{RasterError, RasterSettings};
 use crate::core::surfels::{sigmoid, Surfels};
@@ -169,10 +172,31 @@ pub fn model_cameras(model: &Model) -> Vec<Camera> {
     }
 }
 
+/// A model's deliverable mesh and what it took to make it.
+#[derive(Clone, Debug)]
+pub struct Deliverable {
+    /// Closed and smoothed, as dense as the TSDF grid.
+    pub mesh: TriangleMesh,
+    /// Edge of the TSDF voxel the mesh was extracted at (scene units).
+    pub voxel: f64,
+    /// Fraction of the closed surface's area that the cameras observed (the rest are the caps
+    /// over the holes, [`TriangleMesh::close_holes`]).
+    pub observed_fraction: f64,
+    /// Holes closed.
+    pub holes: usize,
+}
+
+/// Largest deviation the simplification may introduce, in TSDF voxels: a quarter voxel is well
+/// under the extraction's own error (the dense mesh lies about half a voxel from the true surface
+/// on the shared captures).
+pub const SIMPLIFY_ERROR_VOXELS: f64 = 0.25;
+
 /// The mesh of a trained model (its own backend, the training cameras) at `resolution`, its
 /// holes closed: the surface where no camera looked is the smoothest one spanning the hole
-/// ([`TriangleMesh::close_holes`]), so the deliverable is watertight.
-pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMesh, MeshingError> {
+/// ([`TriangleMesh::close_holes`]), so the deliverable is watertight; then smoothed by bilateral
+/// normal filtering ([`TriangleMesh::smooth`]), which removes the lumps a few surfels wide and
+/// keeps creases.
+pub fn extract_deliverable(model: &Model, resolution: usize) -> Result<Deliverable, MeshingError> {
     let backend = backend::select(model.config.backend)?;
     let mut mesh = mesh_from_surfels(
         &model.surfels,
@@ -182,6 +206,9 @@ pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMe
         resolution,
         DepthPixels::Coherent,
     )?;
+    let (lo, hi) = surfel_bounds(&model.surfels).ok_or(MeshingError::NoSurfels)?;
+    let voxel = (hi - lo).max_element() / resolution as f64;
+    let observed = mesh.area();
     let closed = mesh.close_holes();
     if closed.holes > 0 {
         tracing::info!(
@@ -190,7 +217,31 @@ pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMe
             "closed the mesh's holes"
         );
     }
-    Ok(mesh)
+    let total = mesh.area();
+    mesh.smooth(SmoothParams::default());
+    Ok(Deliverable {
+        mesh,
+        voxel,
+        observed_fraction: if total > 0.0 { observed / total } else { 0.0 },
+        holes: closed.holes,
+    })
+}
+
+/// [`extract_deliverable`]'s mesh.
+pub fn extract_from_model(model: &Model, resolution: usize) -> Result<TriangleMesh, MeshingError> {
+    Ok(extract_deliverable(model, resolution)?.mesh)
+}
+
+/// A deliverable mesh simplified to at most `max_triangles`, and further where its detail allows
+/// (quadric error up to [`SIMPLIFY_ERROR_VOXELS`] voxels, [`TriangleMesh::simplified`]).
+pub fn simplify_deliverable(
+    deliverable: &Deliverable,
+    max_triangles: usize,
+) -> (TriangleMesh, Simplification) {
+    deliverable.mesh.simplified(SimplifyTarget {
+        max_triangles,
+        max_error: SIMPLIFY_ERROR_VOXELS * deliverable.voxel,
+    })
 }
 
 /// Writes a mesh as PLY or OBJ, chosen by the file extension (case-insensitive).

@@ -13,10 +13,15 @@ pub struct ExportArgs {
     /// Folder to write.
     #[arg(long)]
     pub out: PathBuf,
+    /// Most triangles of model.glb's mesh (simplified by quadric error, further where the surface
+    /// is smooth enough; 0: the dense mesh); default: the model's config's `mesh_triangles`
+    /// (100,000 unless trained with another). mesh.ply stays dense.
+    #[arg(long)]
+    pub mesh_triangles: Option<u32>,
 }
 
 pub fn run(args: &ExportArgs) -> Result<()> {
-    let files = phygap::pipeline::export::export(&args.model, &args.out)?;
+    let files = phygap::pipeline::export::export_with(&args.model, &args.out, args.mesh_triangles)?;
     for f in &files {
         println!("{}", f.display());
     }

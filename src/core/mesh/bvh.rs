@@ -370,10 +370,17 @@ impl Bvh {
 
     /// The closest point on the mesh to `p` and its distance (`(p, ∞)` for an empty mesh).
     pub fn closest_point(&self, p: DVec3) -> (DVec3, f64) {
-        let mut best = (p, f64::INFINITY);
+        self.closest_triangle(p)
+            .map_or((p, f64::INFINITY), |(q, d, _)| (q, d))
+    }
+
+    /// The closest point on the mesh to `p`, its distance and the index of the mesh triangle it
+    /// lies on (`None` for an empty mesh).
+    pub fn closest_triangle(&self, p: DVec3) -> Option<(DVec3, f64, u32)> {
         if self.nodes.is_empty() {
-            return best;
+            return None;
         }
+        let mut best = (p, 0usize);
         let mut best_sq = f64::INFINITY;
         let mut stack = [0u32; STACK];
         let mut top = 0usize;
@@ -387,7 +394,7 @@ impl Bvh {
                     let d = q.distance_squared(p);
                     if d < best_sq {
                         best_sq = d;
-                        best.0 = q;
+                        best = (q, s);
                     }
                 }
             } else {
@@ -410,8 +417,7 @@ impl Bvh {
             }
             loop {
                 if top == 0 {
-                    best.1 = best_sq.sqrt();
-                    return best;
+                    return Some((best.0, best_sq.sqrt(), self.original[best.1]));
                 }
                 top -= 1;
                 node = stack[top] as usize;

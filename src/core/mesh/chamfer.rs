@@ -19,6 +19,21 @@ pub const CHAMFER_SAMPLES: usize = 100_000;
 /// `count` points distributed uniformly by area over the mesh surface (empty for a mesh without
 /// area).
 pub fn sample_surface(mesh: &TriangleMesh, count: usize, rng: &mut impl Rng) -> Vec<DVec3> {
+    sample_barycentric(mesh, count, rng)
+        .into_iter()
+        .map(|(t, weights)| {
+            let [a, b, c] = mesh.triangle_corners(t);
+            a * weights[0] + b * weights[1] + c * weights[2]
+        })
+        .collect()
+}
+
+/// `count` area-uniform samples as (triangle, barycentric weights of its three corners).
+fn sample_barycentric(
+    mesh: &TriangleMesh,
+    count: usize,
+    rng: &mut impl Rng,
+) -> Vec<(usize, [f64; 3])> {
     let mut cumulative = Vec::with_capacity(mesh.triangles.len());
     let mut total = 0.0;
     for t in 0..mesh.triangles.len() {
@@ -35,12 +50,91 @@ pub fn sample_surface(mesh: &TriangleMesh, count: usize, rng: &mut impl Rng) -> 
             let t = cumulative
                 .partition_point(|&c| c <= r)
                 .min(cumulative.len() - 1);
-            let [a, b, c] = mesh.triangle_corners(t);
             let s = rng.random::<f64>().sqrt();
             let w = rng.random::<f64>();
-            a * (1.0 - s) + b * (s * (1.0 - w)) + c * (s * w)
+            (t, [1.0 - s, s * (1.0 - w), s * w])
         })
         .collect()
+}
+
+/// The shading normal of `mesh` at barycentric `weights` of triangle `t`: its vertex normals
+/// interpolated (what a viewer shades with) when it has them, else the face normal.
+fn shading_normal(mesh: &TriangleMesh, t: usize, weights: [f64; 3]) -> DVec3 {
+    let [a, b, c] = mesh.triangle_corners(t);
+    let face = (b - a).cross(c - a).normalize_or_zero();
+    if !mesh.has_normals() {
+        return face;
+    }
+    let n: DVec3 = (0..3)
+        .map(|k| weights[k] * DVec3::from_array(mesh.normals[mesh.triangles[t][k] as usize]))
+        .sum();
+    n.try_normalize().unwrap_or(face)
+}
+
+/// Barycentric weights of point `p` (on the triangle's plane) in triangle `[a, b, c]`.
+fn barycentric(p: DVec3, [a, b, c]: [DVec3; 3]) -> [f64; 3] {
+    let (e1, e2, d) = (b - a, c - a, p - a);
+    let (d11, d12, d22) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+    let (dp1, dp2) = (d.dot(e1), d.dot(e2));
+    let det = d11 * d22 - d12 * d12;
+    if det <= 0.0 {
+        return [1.0 / 3.0; 3];
+    }
+    let v = (d22 * dp1 - d12 * dp2) / det;
+    let w = (d11 * dp2 - d12 * dp1) / det;
+    [1.0 - v - w, v, w]
+}
+
+/// Normal MAE from `pred` to `gt` with [`CHAMFER_SAMPLES`] samples and a fixed seed.
+pub fn normal_mae_deg(pred: &TriangleMesh, gt: &TriangleMesh) -> Result<f64, MeshError> {
+    normal_mae_deg_with(pred, gt, CHAMFER_SAMPLES, 0)
+}
+
+/// Mean angle (degrees) between the shading normal of `pred` at `samples` area-uniform points
+/// that lie inside the GT bounding box and the GT's shading normal at the closest point of the
+/// GT surface (vertex normals interpolated where a mesh has them, else face normals; both
+/// oriented by their winding, so an inside-out surface counts as 180°).
+pub fn normal_mae_deg_with(
+    pred: &TriangleMesh,
+    gt: &TriangleMesh,
+    samples: usize,
+    seed: u64,
+) -> Result<f64, MeshError> {
+    let _span = tracing::info_span!("normal_mae", samples).entered();
+    let (lo, hi) = gt
+        .bounds()
+        .filter(|_| gt.area() > 0.0)
+        .ok_or(MeshError::EmptyMesh {
+            name: "ground truth",
+        })?;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let picks = sample_barycentric(pred, samples, &mut rng);
+    if picks.is_empty() {
+        return Err(MeshError::EmptyMesh { name: "prediction" });
+    }
+    let inside: Vec<(DVec3, DVec3)> = picks
+        .into_iter()
+        .map(|(t, weights)| {
+            let [a, b, c] = pred.triangle_corners(t);
+            let p = a * weights[0] + b * weights[1] + c * weights[2];
+            (p, shading_normal(pred, t, weights))
+        })
+        .filter(|(p, _)| p.cmpge(lo).all() && p.cmple(hi).all())
+        .collect();
+    if inside.is_empty() {
+        return Err(MeshError::NoSamplesInsideBox { samples });
+    }
+    let bvh = Bvh::build(gt);
+    let total: f64 = inside
+        .par_iter()
+        .map(|&(p, n)| {
+            let (q, _, t) = bvh.closest_triangle(p).expect("the GT mesh has triangles");
+            let t = t as usize;
+            let truth = shading_normal(gt, t, barycentric(q, gt.triangle_corners(t)));
+            n.dot(truth).clamp(-1.0, 1.0).acos().to_degrees()
+        })
+        .sum();
+    Ok(total / inside.len() as f64)
 }
 
 /// Chamfer-L1 from `pred` to `gt` with [`CHAMFER_SAMPLES`] samples and a fixed seed.
@@ -128,6 +222,30 @@ mod tests {
             chamfer_l1(&TriangleMesh::default(), &gt),
             Err(MeshError::EmptyMesh { name: "prediction" })
         ));
+    }
+
+    /// A coarse icosphere's interpolated normals against a fine one's: small and shrinking with
+    /// the subdivision; its flat faces (no normals) err by about the angle a face spans; turned
+    /// inside out it errs by 180°.
+    #[test]
+    fn normal_error_of_spheres() {
+        let gt = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 6);
+        let coarse = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 2);
+        let finer = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 4);
+        let (e2, e4) = (
+            normal_mae_deg_with(&coarse, &gt, 20_000, 1).unwrap(),
+            normal_mae_deg_with(&finer, &gt, 20_000, 1).unwrap(),
+        );
+        assert!(e2 < 3.0 && e4 < e2 / 3.0, "{e2}° {e4}°");
+        let mut flat = coarse.clone();
+        flat.normals.clear();
+        let faceted = normal_mae_deg_with(&flat, &gt, 20_000, 1).unwrap();
+        assert!(faceted > e2 && faceted < 10.0, "{faceted}°");
+        let mut inverted = finer.clone();
+        inverted.triangles.iter_mut().for_each(|t| t.swap(1, 2));
+        inverted.normals.iter_mut().for_each(|n| *n = n.map(|x| -x));
+        let e = normal_mae_deg_with(&inverted, &gt, 5_000, 1).unwrap();
+        assert!(e > 179.0, "{e}°");
     }
 
     #[test]

@@ -29,6 +29,20 @@ pub struct ClosedHoles {
 }
 
 impl TriangleMesh {
+    /// Edges that only one triangle uses: directed edges whose reverse no triangle uses (0 for a
+    /// closed, consistently oriented mesh).
+    pub fn boundary_edges(&self) -> usize {
+        let directed: HashSet<(u32, u32)> = self
+            .triangles
+            .iter()
+            .flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3])))
+            .collect();
+        directed
+            .iter()
+            .filter(|&&(a, b)| !directed.contains(&(b, a)))
+            .count()
+    }
+
     /// Closes every hole of the mesh with a relaxed cap (module doc) and recomputes the normals
     /// when the mesh has them. Boundary chains that do not close into a loop (a non-manifold
     /// boundary) are left open.

@@ -4,7 +4,9 @@
 //! The submodules split the work: `ply` maps meshes to and from documents of the crate's one PLY
 //! parser ([`crate::formats::ply`]), `tsdf` fuses depth maps into a truncated signed distance grid,
 //! `marching_cubes` turns that grid into a welded mesh, `holes` closes the holes left where no
-//! camera looked, and `chamfer` measures the distance from one mesh to another. Long stages run
+//! camera looked, `smooth` filters its normals (bilateral) and fits the surface to them,
+//! `simplify` reduces it by quadric-error edge collapses, and `chamfer` measures the distance
+//! (and the normal error) from one mesh to another. Long stages run
 //! inside `tracing` spans and use rayon over independent voxel slabs or sample chunks.
 
 use std::path::{Path, PathBuf};
@@ -18,11 +20,18 @@ mod chamfer;
 mod holes;
 mod marching_cubes;
 mod ply;
+mod simplify;
+mod smooth;
 mod tsdf;
 
-pub use chamfer::{chamfer_l1, chamfer_l1_with, sample_surface, CHAMFER_SAMPLES};
+pub use chamfer::{
+    chamfer_l1, chamfer_l1_with, normal_mae_deg, normal_mae_deg_with, sample_surface,
+    CHAMFER_SAMPLES,
+};
 pub use holes::ClosedHoles;
 pub use marching_cubes::{marching_cubes, ScalarGrid};
+pub use simplify::{Simplification, SimplifyTarget};
+pub use smooth::{SmoothParams, NORMAL_SIGMA};
 #[cfg(test)]
 pub(crate) use tsdf::reference as tsdf_reference;
 pub use tsdf::{

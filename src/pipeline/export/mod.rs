@@ -1,7 +1,8 @@
 //! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
-//! EXR, Radiance HDR and a tone-mapped PNG preview, [`envmap_files`]), the extracted mesh
-//! (`mesh.ply`), the mesh with its learned materials as glTF 2.0 binary (`model.glb`, [`gltf`],
-//! materials sampled from the surfels by [`materials`]), configuration, metrics, and
+//! EXR, Radiance HDR and a tone-mapped PNG preview, [`envmap_files`]), the extracted mesh, closed
+//! and smoothed (`mesh.ply`, dense), the mesh simplified to the model's triangle budget with its
+//! learned materials as glTF 2.0 binary (`model.glb`, [`gltf`], materials sampled from the surfels
+//! by [`materials`]), configuration, metrics, and
 //! S0/normal/albedo/DoLP/AoLP renders of the capture's test views. This is what the service
 //! publishes as a job's artifacts and what `phygap export` writes.
 
@@ -141,8 +142,19 @@ pub fn write_model_glb(
     Ok(summary)
 }
 
-/// Writes the deliverables of `model_dir` into `out_dir` (created if needed); returns the files.
+/// Writes the deliverables of `model_dir` into `out_dir` (created if needed), the glTF's mesh
+/// simplified to the model's `mesh_triangles`; returns the files.
 pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportError> {
+    export_with(model_dir, out_dir, None)
+}
+
+/// [`export`] with the glTF's triangle budget given (`Some(0)`: the dense mesh), instead of the
+/// model's config's `mesh_triangles`.
+pub fn export_with(
+    model_dir: &Path,
+    out_dir: &Path,
+    mesh_triangles: Option<u32>,
+) -> Result<Vec<PathBuf>, ExportError> {
     let _span = tracing::info_span!("export", model = %model_dir.display()).entered();
     let io = |path: &Path| {
         let path = path.to_owned();
@@ -159,8 +171,8 @@ pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportEr
             written.push(to);
         }
     }
-    let mesh = match mesh_extraction::extract_from_model(&model, DEFAULT_MESH_RESOLUTION) {
-        Ok(mesh) => Some(mesh),
+    let deliverable = match mesh_extraction::extract_deliverable(&model, DEFAULT_MESH_RESOLUTION) {
+        Ok(deliverable) => Some(deliverable),
         // A run too short to form a surface still has its light, materials and renders.
         Err(MeshingError::Mesh(MeshError::NoSurface)) if !model.config.require_mesh => {
             let warning = format!("no {MESH_FILE} or {GLB_FILE}: {}", MeshError::NoSurface);
@@ -174,12 +186,18 @@ pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportEr
         }
         Err(e) => return Err(e.into()),
     };
-    if let Some(mesh) = mesh {
+    if let Some(deliverable) = deliverable {
         let mesh_path = out_dir.join(MESH_FILE);
-        mesh_extraction::write_mesh(&mesh, &mesh_path)?;
+        mesh_extraction::write_mesh(&deliverable.mesh, &mesh_path)?;
         written.push(mesh_path);
         let glb_path = out_dir.join(GLB_FILE);
-        write_model_glb(&model, &mesh, &glb_path)?;
+        let budget = mesh_triangles.unwrap_or(model.config.mesh_triangles);
+        if budget == 0 {
+            write_model_glb(&model, &deliverable.mesh, &glb_path)?;
+        } else {
+            let (light, _) = mesh_extraction::simplify_deliverable(&deliverable, budget as usize);
+            write_model_glb(&model, &light, &glb_path)?;
+        }
         written.push(glb_path);
     }
     let up = model.world_up()?;

@@ -151,14 +151,25 @@ fn export_writes_a_glb_that_the_khronos_validator_accepts() {
         .unwrap();
     assert!((ior - 1.5).abs() < 1e-6, "{ior}");
     let mesh = phygap::core::mesh::TriangleMesh::read_ply(&out.join("mesh.ply")).unwrap();
-    assert_eq!(json["accessors"][1]["count"], mesh.vertices.len());
+    // The glTF's mesh is the dense one simplified: a smooth sphere to a few thousand triangles,
+    // far below the default budget, closed like the dense one.
+    let glb_vertices = json["accessors"][1]["count"].as_u64().unwrap() as usize;
+    let glb_indices = json["accessors"][0]["count"].as_u64().unwrap() as usize;
+    assert!(
+        glb_vertices > 100 && glb_vertices < mesh.vertices.len() / 10,
+        "{glb_vertices} of {} vertices",
+        mesh.vertices.len()
+    );
+    assert!(glb_indices <= 3 * phygap::core::config::DEFAULT_MESH_TRIANGLES as usize);
+    // Closed (Euler: V − E + F = 2 with E = 3F/2 for a sphere): F = 2V − 4.
+    assert_eq!(glb_indices / 3, 2 * glb_vertices - 4);
     let radius = json["accessors"][1]["max"][0].as_f64().unwrap();
     assert!(
         (radius - 1.0).abs() < 0.05,
         "the unit sphere's extent: {radius}"
     );
     println!(
-        "model.glb: {} bytes, {} vertices, IoR {ior}",
+        "model.glb: {} bytes, {glb_vertices} vertices (mesh.ply: {}), IoR {ior}",
         glb.len(),
         mesh.vertices.len()
     );

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job in one command: build everything, render a sample capture with the project's own
 # renderer, start the reconstruction service (embedded SQLite store under ./phygap-data), upload the
-# capture, train it, and list the results. The service keeps running afterwards (Ctrl-C stops it),
-# and its web page (the jobs, the reconstructed object in 3D, relighting) is at the address printed last.
+# capture, train it, and print a summary (state, test PSNR, time, the artifacts, the page's
+# address). The service keeps running afterwards (Ctrl-C stops it), and its web page (the jobs, the
+# reconstructed object in 3D, relighting) is at the address printed last.
 #
 # Settings (environment): PHYGAP_PORT (8080), PHYGAP_DATA_DIR (./phygap-data),
 # PHYGAP_QUICKSTART_ITERATIONS (default: the default training schedule's).
@@ -13,6 +14,7 @@ data=${PHYGAP_DATA_DIR:-./phygap-data}
 iterations=${PHYGAP_QUICKSTART_ITERATIONS:-}
 base="http://127.0.0.1:$port"
 
+started=$SECONDS
 cargo build --release --workspace --bins
 bin=${CARGO_TARGET_DIR:-target}/release
 
@@ -59,14 +61,20 @@ while true; do
   case "$state" in succeeded|failed|cancelled) echo; break ;; esac
   sleep 2
 done
-echo "$status"
-echo "artifacts:"
-curl -fsS "$base/v1/jobs/$job/artifacts"
-echo
-echo "service running at $base (data in $data); fetch e.g.:"
-echo "  curl -o mesh.ply $base/v1/jobs/$job/artifacts/mesh.ply"
-echo "  curl -o envmap.exr $base/v1/jobs/$job/artifacts/envmap.exr"
-echo "Ctrl-C stops it."
+# A short summary; the job and its artifacts as JSON are one curl away (printed below).
+psnr=$(echo "$status" | sed -n 's/.*"test_psnr":\([0-9.]*\).*/\1/p')
+elapsed=$((SECONDS - started))
+echo "job $job $state in $((elapsed / 60)) min $((elapsed % 60)) s; test PSNR ${psnr:-?} dB"
+listing=$(curl -fsS "$base/v1/jobs/$job/artifacts")
+echo "artifacts (bytes):"
+{ echo "$listing" | grep -o '"name":"[^"]*","size":[0-9]*' | grep -v '"name":"renders/' || true; } |
+  sed 's/"name":"\([^"]*\)","size":\([0-9]*\)/  \1  \2/'
+renders=$({ echo "$listing" | grep -o '"name":"renders/' || true; } | wc -l)
+[ "$renders" -gt 0 ] && echo "  renders/  $renders images"
+echo "the job as JSON:        curl $base/v1/jobs/$job"
+echo "its artifacts as JSON:  curl $base/v1/jobs/$job/artifacts"
+echo "download one, e.g.:     curl -o model.glb $base/v1/jobs/$job/artifacts/model.glb"
 echo
 echo "Open the web page to see the reconstructed object: $base/#/jobs/$job"
+echo "The service keeps running (data in $data); Ctrl-C stops it."
 wait "$server"

@@ -6,6 +6,7 @@ mod degrade;
 mod diagnose;
 mod eval;
 mod export;
+mod import;
 mod info;
 mod inspect;
 mod mesh;
@@ -31,6 +32,9 @@ struct Cli {
 enum Command {
     /// Load and validate a capture; print its views, kinds, resolution, split, bounds and warnings.
     Inspect(inspect::InspectArgs),
+    /// Read a dataset in the IDR/NeuS or LLFF layout (per-angle image folders, Stokes .npy,
+    /// masks by number): write its transforms.json and print what was decided.
+    Import(import::ImportArgs),
     /// Train a reconstruction of a capture into a model folder.
     // Boxed: every training setting makes it several times the other commands' size.
     Train(Box<train::TrainArgs>),
@@ -108,6 +112,7 @@ fn working_resolution(
 fn run(command: Command, matches: &clap::ArgMatches) -> anyhow::Result<()> {
     match command {
         Command::Inspect(args) => inspect::run(&args),
+        Command::Import(args) => import::run(&args),
         Command::Train(args) => {
             let train_matches = matches
                 .subcommand_matches("train")

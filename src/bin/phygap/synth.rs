@@ -1,13 +1,15 @@
 //! `phygap synth --out DIR [--shape sphere|torus|creature] [--texture plain|checker] [--views N]
-//! [--size PX] [--raw IMX250MZR|IMX250MYR [--bit-depth B]]`: render a small full-Stokes sample
-//! capture with the project's own renderer, or (with `--raw`) the raw mosaic frames a polarization
-//! camera would record of it.
+//! [--size PX] [--raw IMX250MZR|IMX250MYR [--bit-depth B]] [--layout idr|llff]`: render a small
+//! full-Stokes sample capture with the project's own renderer, or (with `--raw`) the raw mosaic
+//! frames a polarization camera would record of it, or (with `--layout`) the capture as a dataset
+//! in the IDR/NeuS or LLFF layout ships.
 
 use std::path::PathBuf;
 
 use anyhow::Result;
 use clap::Args;
 
+use phygap::io::capture::layouts::LayoutKind;
 use phygap::io::capture::mosaic::Sensor;
 use phygap::io::capture::simulate::{self, SimulateOptions};
 use phygap::io::capture::{self, Measurement};
@@ -37,6 +39,19 @@ pub struct SynthArgs {
     /// Bits per sample of the raw frames.
     #[arg(long, default_value_t = 12, value_parser = clap::value_parser!(u32).range(8..=16))]
     pub bit_depth: u32,
+    /// Write the capture in a dataset layout instead of `transforms.json` (its transforms form
+    /// goes to `OUT/reference`): `idr` (per-angle 8-bit JPEG folders I-00 … I-135,
+    /// `masks/NNN_pseudo.png`, `cameras_sphere.npz`) or `llff` (16-bit PNG folders pol000 …
+    /// pol135, `masks/img_NNN.png`, `poses_bounds.npy`).
+    #[arg(long, value_enum, conflicts_with = "raw")]
+    pub layout: Option<Layout>,
+}
+
+/// A dataset layout `--layout` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Layout {
+    Idr,
+    Llff,
 }
 
 /// `N` or `WxH`.
@@ -97,6 +112,26 @@ pub fn run(args: &SynthArgs) -> Result<()> {
             args.shape,
             args.out.display(),
             reference.display()
+        );
+        return Ok(());
+    }
+    if let Some(layout) = args.layout {
+        let kind = match layout {
+            Layout::Idr => LayoutKind::Idr,
+            Layout::Llff => LayoutKind::Llff,
+        };
+        let written = synth::synth_layout(&args.out, &options, kind)?;
+        println!(
+            "wrote a {}-view {}×{} capture of a {:?} in the {} layout to {} (exposure ×{:.4}: \
+             the brightest polarizer sample is 1; the transforms.json form is in {})",
+            written.views,
+            width,
+            height,
+            args.shape,
+            kind.name(),
+            args.out.display(),
+            written.exposure,
+            args.out.join("reference").display()
         );
         return Ok(());
     }

@@ -163,6 +163,9 @@ fn read_preamble(
     Ok((preamble, total))
 }
 
+/// An array stream whose preamble was read (and checked) before npyz parses the header.
+type Reopened<R> = NpyFile<std::io::Chain<Cursor<Vec<u8>>, R>>;
+
 /// Parses the header of an array stream holding `available` bytes in all; also returns the
 /// bytes before the data (preamble and header).
 fn open_array<R: Read>(
@@ -170,7 +173,7 @@ fn open_array<R: Read>(
     available: u64,
     name: &str,
     limits: &NpyLimits,
-) -> Result<(NpyFile<std::io::Chain<Cursor<Vec<u8>>, R>>, u64), NpyError> {
+) -> Result<(Reopened<R>, u64), NpyError> {
     let (preamble, header_total) = read_preamble(&mut reader, name, limits)?;
     if header_total > available {
         return Err(NpyError::Format {

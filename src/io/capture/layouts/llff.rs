@@ -71,7 +71,7 @@ impl LlffPose {
 
     /// The pose of `camera` (square pixels: its `fx`), with the given bounds.
     pub fn of_camera(camera: &Camera, near: f64, far: f64) -> LlffPose {
-        let axis = |c: usize| DVec3::from(camera.c2w.col(c).truncate());
+        let axis = |c: usize| camera.c2w.col(c).truncate();
         LlffPose {
             down: -axis(1),
             right: axis(0),

@@ -244,12 +244,16 @@ fn sub_folders(root: &Path) -> Vec<String> {
     names
 }
 
-/// Reads `capture.json` (optional): the settings copied into the document, and the manifest of
-/// polarizer folders.
-fn read_settings(
-    root: &Path,
-    problems: &mut Vec<Problem>,
-) -> Result<(Map<String, Value>, BTreeMap<u32, String>), CaptureError> {
+/// The settings `capture.json` gives: keys copied into the document, and the polarizer folders
+/// it names by angle.
+#[derive(Default)]
+struct Settings {
+    document_keys: Map<String, Value>,
+    polarizer_folders: BTreeMap<u32, String>,
+}
+
+/// Reads `capture.json` (optional).
+fn read_settings(root: &Path, problems: &mut Vec<Problem>) -> Result<Settings, CaptureError> {
     let path = root.join(SETTINGS_FILE);
     if !path.is_file() {
         return Ok(Default::default());
@@ -313,7 +317,10 @@ fn read_settings(
             )),
         }
     }
-    Ok((settings, polarizer_folders))
+    Ok(Settings {
+        document_keys: settings,
+        polarizer_folders,
+    })
 }
 
 /// The measurement folders of `root`, in priority order, and the roles given to every folder.
@@ -668,7 +675,10 @@ pub fn import(root: &Path, location: &LayoutLocation) -> Result<Imported, Captur
     let root = root.canonicalize().unwrap_or_else(|_| root.to_owned());
     let mut problems = Vec::new();
     let mut notes = Vec::new();
-    let (settings, manifest) = read_settings(&root, &mut problems)?;
+    let Settings {
+        document_keys: settings,
+        polarizer_folders: manifest,
+    } = read_settings(&root, &mut problems)?;
     let mut roles = Vec::new();
     let measurement = choose_measurement(&root, &manifest, &mut roles, &mut problems);
     let invalid = |problems: Vec<Problem>| CaptureError::Invalid {

@@ -573,6 +573,19 @@ fn the_real_llff_sample_reads_with_its_stokes_masks_and_cameras() {
         DVec3::new(2.32094, 2.34010, -0.53581).extend(1.0),
     );
     assert_mat_close(&camera.c2w, &expected_c2w, 1e-5);
+    // Both cameras look at one place: their optical axes pass within 0.16 of each other, 3.5 and
+    // 4.1 in front of them (a camera looking backward, as a misread column order gives, fails).
+    let (p0, d0) = (capture.views[0].camera.origin(), camera.forward());
+    let (p1, d1) = (
+        capture.views[1].camera.origin(),
+        capture.views[1].camera.forward(),
+    );
+    let w = p0 - p1;
+    let (b, d, e) = (d0.dot(d1), d0.dot(w), d1.dot(w));
+    let denominator = 1.0 - b * b;
+    let (s, t) = ((b * e - d) / denominator, (e - b * d) / denominator);
+    let gap = ((p0 + s * d0) - (p1 + t * d1)).length();
+    assert!(s > 3.0 && t > 3.0 && gap < 0.2, "s {s}, t {t}, gap {gap}");
     for view in &capture.views {
         let covered = view.mask.data.iter().sum::<f32>() / view.mask.data.len() as f32;
         assert!(

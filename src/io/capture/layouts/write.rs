@@ -167,7 +167,7 @@ pub fn write_layout(
         .flatten()
         .flat_map(|i| i.data.iter().copied())
         .fold(0.0f32, f32::max);
-    if !(peak > 0.0) {
+    if peak.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Err(LayoutWriteError::Invalid(
             "the capture's views are black".into(),
         ));

@@ -98,6 +98,9 @@ impl JobState {
 /// What a job does.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
+// A spec lives one per job record, read from and written to the store as JSON: a boxed training
+// config would save a few hundred bytes per record in memory at the cost of every match on it.
+#[allow(clippy::large_enum_variant)]
 pub enum JobSpec {
     /// Train a model of `capture_id`, then export its artifacts.
     Train { config: TrainConfig },

@@ -263,7 +263,7 @@ pub async fn admit_job(
 
 /// `bytes` in MiB as a person reads them: whole MiB bare, else with two decimals (`0.55`).
 pub fn mib(bytes: u64) -> String {
-    if bytes % MIB == 0 {
+    if bytes.is_multiple_of(MIB) {
         (bytes / MIB).to_string()
     } else {
         format!("{:.2}", bytes as f64 / MIB as f64)

@@ -9,7 +9,7 @@ use std::fs::{File, OpenOptions};
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
-use phygap::io::capture::colmap;
+use phygap::io::capture;
 use thiserror::Error;
 
 /// Bounds on what an archive may expand to.
@@ -338,9 +338,10 @@ fn extract_tar(file: File, target: &Path, budget: &mut Budget) -> Result<(), Arc
     Ok(())
 }
 
-/// Whether `dir` is the root of a capture: it holds `transforms.json` or a COLMAP model.
+/// Whether `dir` is the root of a capture: it holds `transforms.json`, a COLMAP model, or the
+/// camera file of a dataset layout (IDR/NeuS `cameras*.npz`, LLFF `poses_bounds.npy`).
 fn is_capture_root(dir: &Path) -> bool {
-    dir.join("transforms.json").is_file() || colmap::find_model(dir).is_some()
+    capture::is_capture_folder(dir)
 }
 
 fn capture_root(target: &Path) -> PathBuf {
@@ -420,6 +421,16 @@ mod tests {
         let bytes = zip_bytes(&[("scan/sparse/0/notes.txt", b"-"), ("scan/raw/a.png", b"x")]);
         let (dir, root) = extract_bytes(&bytes, ExtractLimits::default());
         assert_eq!(root.unwrap(), dir.path().join("out"));
+    }
+
+    #[test]
+    fn an_idr_or_llff_dataset_folder_is_a_capture_root() {
+        for camera_file in ["cameras_sphere.npz", "cameras_new.npz", "poses_bounds.npy"] {
+            let entry = format!("scan/{camera_file}");
+            let bytes = zip_bytes(&[(entry.as_str(), b"-"), ("scan/I-00/000.jpg", b"x")]);
+            let (dir, root) = extract_bytes(&bytes, ExtractLimits::default());
+            assert_eq!(root.unwrap(), dir.path().join("out/scan"), "{camera_file}");
+        }
     }
 
     #[test]

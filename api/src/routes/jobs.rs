@@ -286,8 +286,8 @@ pub async fn submit(
     })?;
     let value: serde_json::Value = serde_json::from_slice(&body)
         .map_err(|e| ApiError::bad_request("invalid_json", format!("request body: {e}")))?;
-    let request: SubmitRequest = serde_json::from_value(value)
-        .map_err(|e| ApiError::unprocessable("invalid_request", e.to_string()))?;
+    let request: SubmitRequest = super::from_json_value(value)
+        .map_err(|message| ApiError::unprocessable("invalid_request", message))?;
     request
         .config
         .validate()
@@ -964,7 +964,7 @@ fn changed_config(
     if let Some(object) = merged.as_object_mut() {
         object.extend(changes.clone());
     }
-    let changed: TrainConfig = serde_json::from_value(merged).map_err(|e| invalid(&e))?;
+    let changed: TrainConfig = super::from_json_value(merged).map_err(|e| invalid(&e))?;
     changed.validate().map_err(|e| invalid(&e))?;
     Ok(changed)
 }

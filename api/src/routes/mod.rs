@@ -37,8 +37,21 @@ pub(crate) fn json_request<T: serde::de::DeserializeOwned>(
     })?;
     let value: serde_json::Value = serde_json::from_slice(&body)
         .map_err(|e| ApiError::bad_request("invalid_json", format!("request body: {e}")))?;
-    serde_json::from_value(value)
-        .map_err(|e| ApiError::unprocessable("invalid_request", e.to_string()))
+    from_json_value(value).map_err(|message| ApiError::unprocessable("invalid_request", message))
+}
+
+/// `value` as a `T`; an error names the field it is about by its path (`config.iterations:
+/// invalid value: integer `-5`, expected u32`), so a client knows which key to fix.
+pub(crate) fn from_json_value<T: serde::de::DeserializeOwned>(
+    value: serde_json::Value,
+) -> Result<T, String> {
+    serde_path_to_error::deserialize(value).map_err(|e| {
+        let path = e.path().to_string();
+        match path.as_str() {
+            "" | "." => e.inner().to_string(),
+            _ => format!("`{path}`: {}", e.inner()),
+        }
+    })
 }
 
 /// One route: method, path template (axum syntax), and whether the bearer token guards it.
@@ -215,4 +228,31 @@ pub fn router(state: AppState) -> Router {
         oversized_requests(limits, request, next)
     })))
     .layer(CatchPanicLayer::custom(panic_response))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::from_json_value;
+    use phygap::core::config::TrainConfig;
+    use serde_json::json;
+
+    #[test]
+    fn a_value_that_is_not_its_type_is_named_by_its_path() {
+        let message =
+            from_json_value::<TrainConfig>(json!({"checkpoint_interval": -5})).unwrap_err();
+        assert!(
+            message.starts_with("`checkpoint_interval`: invalid value: integer `-5`"),
+            "{message}"
+        );
+        #[derive(Debug, serde::Deserialize)]
+        #[allow(dead_code)]
+        struct Request {
+            config: TrainConfig,
+        }
+        let nested =
+            from_json_value::<Request>(json!({"config": {"max_surfels": "many"}})).unwrap_err();
+        assert!(nested.starts_with("`config.max_surfels`: "), "{nested}");
+        let config = from_json_value::<TrainConfig>(json!({"checkpoint_interval": 50})).unwrap();
+        assert_eq!(config.checkpoint_interval, 50);
+    }
 }

@@ -620,4 +620,29 @@ mod tests {
         // 16-bit PNG: quantization only.
         round_trip(LayoutKind::Llff, 1e-4);
     }
+
+    /// The conventions check reads what a layout folder states where the loader does (its
+    /// `capture.json`), not the defaults of a transforms document it does not have.
+    #[test]
+    fn the_conventions_check_reads_what_a_layout_folder_states() {
+        let dir = tempfile::tempdir().unwrap();
+        let options = SynthOptions {
+            views: 6,
+            size: 40,
+            ..SynthOptions::default()
+        };
+        synth_layout(dir.path(), &options, LayoutKind::Llff).unwrap();
+        let stated = |dir: &Path| {
+            let capture = capture::load(dir).unwrap();
+            let report = capture::conventions::check_capture(dir, &capture);
+            report.stokes.map(|s| s.stated)
+        };
+        assert_eq!(stated(dir.path()).as_deref(), Some("image_y_up"));
+        std::fs::write(
+            dir.path().join("capture.json"),
+            r#"{"stokes_convention": "image_y_down"}"#,
+        )
+        .unwrap();
+        assert_eq!(stated(dir.path()).as_deref(), Some("image_y_down"));
+    }
 }

@@ -612,10 +612,18 @@ fn color_evidence(frames: &[FrameSpec], header: &Header) -> Option<ColorEvidence
 /// document read again for what it states (a COLMAP capture states nothing: image_y_up, and it
 /// has no polarizer files).
 pub fn check_capture(path: &Path, capture: &super::Capture) -> ConventionsReport {
-    let json_path = super::transforms_path(path);
-    let parsed = super::read_document(&json_path)
-        .ok()
-        .map(|document| super::frame::parse(&capture.root, &document));
+    // A dataset layout states its conventions through the document it is read as (its
+    // `capture.json`), as the loader reads it; a COLMAP folder states none.
+    let document = if super::colmap::find_model(path).is_some() {
+        None
+    } else if let Some(location) = super::layouts::find_layout(path) {
+        super::layouts::import(path, &location)
+            .ok()
+            .map(|imported| imported.document)
+    } else {
+        super::read_document(&super::transforms_path(path)).ok()
+    };
+    let parsed = document.map(|document| super::frame::parse(&capture.root, &document));
     match parsed {
         Some(parsed) => check(&parsed.frames, &parsed.header, &capture.views),
         None => ConventionsReport {

@@ -39,8 +39,10 @@ QUICK = {
 
 
 def binary(name: str) -> Path:
-    """A binary of the workspace's release build."""
-    folder = Path(os.environ.get("PHYGAP_BIN_DIR", REPO_ROOT / "target" / "release"))
+    """A binary of the workspace's release build (in PHYGAP_BIN_DIR, else cargo's target folder:
+    CARGO_TARGET_DIR when set, as cargo itself reads it)."""
+    target = Path(os.environ.get("CARGO_TARGET_DIR", REPO_ROOT / "target"))
+    folder = Path(os.environ.get("PHYGAP_BIN_DIR", target / "release"))
     path = folder / name
     if not path.is_file():
         pytest.fail(f"{path} is missing: run `cargo build --release --workspace` first")

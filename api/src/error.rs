@@ -116,6 +116,15 @@ impl std::fmt::Display for ApiError {
 
 impl std::error::Error for ApiError {}
 
+/// The first `chars` characters of an input, with `…` where it was cut: what an error message
+/// quotes of an input, which it never echoes whole.
+pub fn quoted_prefix(text: &str, chars: usize) -> String {
+    match text.char_indices().nth(chars) {
+        Some((end, _)) => format!("{}…", &text[..end]),
+        None => text.to_owned(),
+    }
+}
+
 /// The JSON error body as bytes (also used by the panic handler and the auth layer).
 pub fn error_body(code: &str, message: &str) -> String {
     detailed_error_body(code, message, &[])

@@ -130,7 +130,7 @@ pub async fn read_relight_form(
                             "invalid_rotate_deg",
                             format!(
                                 "rotate_deg must be a finite number, got {:?}",
-                                prefix_of(&text)
+                                crate::error::quoted_prefix(&text, QUOTED_CHARS)
                             ),
                         )
                     })?;
@@ -194,14 +194,6 @@ async fn read_text_field(mut field: Field<'_>, name: &str) -> Result<String, Api
             format!("the form field `{name}` is not UTF-8 text"),
         )
     })
-}
-
-/// The start of an input, for an error message (never echoed whole).
-fn prefix_of(text: &str) -> String {
-    match text.char_indices().nth(QUOTED_CHARS) {
-        Some((end, _)) => format!("{}…", &text[..end]),
-        None => text.to_owned(),
-    }
 }
 
 /// Streams one multipart field into `target`; returns its first bytes (for format sniffing).

@@ -297,11 +297,18 @@ pub struct Reservation {
 }
 
 impl Reservation {
-    /// The account `caller` stores for and its storage limit, when it has one.
-    fn limited(state: &AppState, caller: &Caller) -> Option<(String, u64)> {
+    /// An empty reservation for `id` in the account `caller` stores for, when that account has
+    /// a storage limit.
+    fn unreserved(state: &AppState, caller: &Caller, id: &str) -> Option<Reservation> {
         let account = caller.account()?;
         let limit = state.config.quotas().of(account).max_storage_bytes?;
-        Some((account.to_owned(), limit))
+        Some(Reservation {
+            state: state.clone(),
+            id: id.to_owned(),
+            account: account.to_owned(),
+            limit,
+            granted: 0,
+        })
     }
 
     /// Reserves `bytes` for `id`, or refuses (403 `storage_quota_exceeded`) when they do not
@@ -312,22 +319,15 @@ impl Reservation {
         id: &str,
         bytes: u64,
     ) -> Result<Option<Reservation>, ApiError> {
-        let Some((account, limit)) = Self::limited(state, caller) else {
+        let Some(mut reservation) = Self::unreserved(state, caller, id) else {
             return Ok(None);
-        };
-        let mut reservation = Reservation {
-            state: state.clone(),
-            id: id.to_owned(),
-            account,
-            limit,
-            granted: 0,
         };
         let reserved = reservation.reserve(bytes, false).await?;
         if reserved.granted < bytes {
             return Err(over_quota(
                 &reservation.account,
                 reserved.stored_bytes,
-                limit,
+                reservation.limit,
                 &format!("{} MiB more do not fit", mib(bytes)),
             ));
         }
@@ -342,22 +342,15 @@ impl Reservation {
         caller: &Caller,
         id: &str,
     ) -> Result<Option<Reservation>, ApiError> {
-        let Some((account, limit)) = Self::limited(state, caller) else {
+        let Some(mut reservation) = Self::unreserved(state, caller, id) else {
             return Ok(None);
-        };
-        let mut reservation = Reservation {
-            state: state.clone(),
-            id: id.to_owned(),
-            account,
-            limit,
-            granted: 0,
         };
         let reserved = reservation.reserve(RESERVATION_STEP, true).await?;
         if reserved.granted == 0 {
             return Err(over_quota(
                 &reservation.account,
                 reserved.stored_bytes,
-                limit,
+                reservation.limit,
                 "nothing more fits",
             ));
         }

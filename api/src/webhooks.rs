@@ -146,10 +146,7 @@ fn invalid_webhook(why: String) -> ApiError {
 
 /// The start of `text`, for an error message (an input is never echoed whole).
 fn quoted(text: &str) -> String {
-    match text.char_indices().nth(QUOTED_CHARS) {
-        Some((end, _)) => format!("{}…", &text[..end]),
-        None => text.to_owned(),
-    }
+    crate::error::quoted_prefix(text, QUOTED_CHARS)
 }
 
 /// `url` with its credentials removed (never shown back).

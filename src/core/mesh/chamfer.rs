@@ -101,12 +101,7 @@ pub fn normal_mae_deg_with(
     seed: u64,
 ) -> Result<f64, MeshError> {
     let _span = tracing::info_span!("normal_mae", samples).entered();
-    let (lo, hi) = gt
-        .bounds()
-        .filter(|_| gt.area() > 0.0)
-        .ok_or(MeshError::EmptyMesh {
-            name: "ground truth",
-        })?;
+    let (lo, hi) = ground_truth_box(gt)?;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let picks = sample_barycentric(pred, samples, &mut rng);
     if picks.is_empty() {
@@ -119,7 +114,7 @@ pub fn normal_mae_deg_with(
             let p = a * weights[0] + b * weights[1] + c * weights[2];
             (p, shading_normal(pred, t, weights))
         })
-        .filter(|(p, _)| p.cmpge(lo).all() && p.cmple(hi).all())
+        .filter(|(p, _)| within(*p, lo, hi))
         .collect();
     if inside.is_empty() {
         return Err(MeshError::NoSamplesInsideBox { samples });
@@ -137,6 +132,21 @@ pub fn normal_mae_deg_with(
     Ok(total / inside.len() as f64)
 }
 
+/// The bounding box of `gt`, within which the metrics sample `pred`; an error when `gt` has no
+/// surface.
+fn ground_truth_box(gt: &TriangleMesh) -> Result<(DVec3, DVec3), MeshError> {
+    gt.bounds()
+        .filter(|_| gt.area() > 0.0)
+        .ok_or(MeshError::EmptyMesh {
+            name: "ground truth",
+        })
+}
+
+/// Whether `p` lies in the box `lo`..=`hi`.
+fn within(p: DVec3, lo: DVec3, hi: DVec3) -> bool {
+    p.cmpge(lo).all() && p.cmple(hi).all()
+}
+
 /// Chamfer-L1 from `pred` to `gt` with [`CHAMFER_SAMPLES`] samples and a fixed seed.
 pub fn chamfer_l1(pred: &TriangleMesh, gt: &TriangleMesh) -> Result<f64, MeshError> {
     chamfer_l1_with(pred, gt, CHAMFER_SAMPLES, 0)
@@ -151,21 +161,13 @@ pub fn chamfer_l1_with(
     seed: u64,
 ) -> Result<f64, MeshError> {
     let _span = tracing::info_span!("chamfer_l1", samples).entered();
-    let (lo, hi) = gt
-        .bounds()
-        .filter(|_| gt.area() > 0.0)
-        .ok_or(MeshError::EmptyMesh {
-            name: "ground truth",
-        })?;
+    let (lo, hi) = ground_truth_box(gt)?;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let points = sample_surface(pred, samples, &mut rng);
     if points.is_empty() {
         return Err(MeshError::EmptyMesh { name: "prediction" });
     }
-    let inside: Vec<DVec3> = points
-        .into_iter()
-        .filter(|p| p.cmpge(lo).all() && p.cmple(hi).all())
-        .collect();
+    let inside: Vec<DVec3> = points.into_iter().filter(|&p| within(p, lo, hi)).collect();
     if inside.is_empty() {
         return Err(MeshError::NoSamplesInsideBox { samples });
     }

@@ -9,7 +9,7 @@ use std::path::{Component, Path, PathBuf};
 use glam::DMat4;
 use serde_json::{Map, Value};
 
-use super::error::Problem;
+use super::error::{CaptureError, Problem};
 
 /// The frame label of problems with top-level keys.
 pub(crate) const TOP_LEVEL: &str = "top level";
@@ -24,6 +24,37 @@ pub(crate) struct KeyedPath {
 
 /// Bare non-finite tokens accepted by [`parse_lenient`] and reported by [`Fields::number`].
 const NON_FINITE_TOKENS: [&str; 3] = ["-Infinity", "Infinity", "NaN"];
+
+/// The top-level object of the optional JSON file `name` in `root` (a folder's `capture.json`):
+/// `None` when there is no such file, or when it holds something else than an object (recorded in
+/// `problems`); an error when it cannot be read or parsed.
+pub(crate) fn read_optional_object(
+    root: &Path,
+    name: &str,
+    problems: &mut Vec<Problem>,
+) -> Result<Option<Map<String, Value>>, CaptureError> {
+    let path = root.join(name);
+    if !path.is_file() {
+        return Ok(None);
+    }
+    let text = std::fs::read_to_string(&path).map_err(|e| CaptureError::Read {
+        path: path.clone(),
+        message: e.to_string(),
+    })?;
+    let value = parse_lenient(&text).map_err(|e| CaptureError::Json {
+        path: path.clone(),
+        line: e.line(),
+        column: e.column(),
+        message: e.to_string(),
+    })?;
+    match value {
+        Value::Object(object) => Ok(Some(object)),
+        _ => {
+            problems.push(Problem::new(name, "(document)", "expected a JSON object"));
+            Ok(None)
+        }
+    }
+}
 
 /// Parses JSON, first quoting bare `NaN`, `Infinity` and `-Infinity` outside strings
 /// (line numbers of errors are unchanged).

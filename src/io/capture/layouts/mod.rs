@@ -254,26 +254,7 @@ struct Settings {
 
 /// Reads `capture.json` (optional).
 fn read_settings(root: &Path, problems: &mut Vec<Problem>) -> Result<Settings, CaptureError> {
-    let path = root.join(SETTINGS_FILE);
-    if !path.is_file() {
-        return Ok(Default::default());
-    }
-    let text = std::fs::read_to_string(&path).map_err(|e| CaptureError::Read {
-        path: path.clone(),
-        message: e.to_string(),
-    })?;
-    let value = super::json::parse_lenient(&text).map_err(|e| CaptureError::Json {
-        path: path.clone(),
-        line: e.line(),
-        column: e.column(),
-        message: e.to_string(),
-    })?;
-    let Value::Object(object) = value else {
-        problems.push(Problem::new(
-            SETTINGS_FILE,
-            "(document)",
-            "expected a JSON object",
-        ));
+    let Some(object) = super::json::read_optional_object(root, SETTINGS_FILE, problems)? else {
         return Ok(Default::default());
     };
     let mut settings = Map::new();

@@ -8,12 +8,12 @@ use clap::{Args, Parser, Subcommand};
 
 use phygap::io::capture::CaptureLimits;
 
-use crate::auth::{read_tokens_file, TokensFileError, MIN_TOKEN_CHARS};
-use crate::connections::HttpLimits;
-use crate::job_process::JobLimits;
-use crate::outbound::AddressPolicy;
-use crate::quotas::AccountLimits;
-use crate::webhooks::WebhookSettings;
+use crate::accounts::auth::{read_tokens_file, TokensFileError, MIN_TOKEN_CHARS};
+use crate::accounts::limits::AccountLimits;
+use crate::jobs::outbound::AddressPolicy;
+use crate::jobs::settings::HttpLimits;
+use crate::jobs::settings::JobLimits;
+use crate::jobs::webhook_targets::WebhookSettings;
 use crate::{ServiceConfig, ServiceLimits};
 
 /// The longest `--max-runtime-minutes`: ten years (a longer one would overflow the clock's
@@ -83,7 +83,7 @@ impl OpenapiArgs {
     /// Writes the document where the flags say.
     pub fn run(&self) -> anyhow::Result<()> {
         use anyhow::Context;
-        let yaml = crate::openapi::spec_yaml().context("rendering the OpenAPI document")?;
+        let yaml = crate::http::openapi::spec_yaml().context("rendering the OpenAPI document")?;
         match &self.out {
             Some(path) => {
                 std::fs::write(path, yaml).with_context(|| format!("writing {}", path.display()))?
@@ -331,7 +331,7 @@ impl ServeArgs {
             job: JobLimits {
                 memory_bytes: Some(match self.job_memory_mb {
                     Some(mb) => mb << 20,
-                    None => crate::job_process::default_job_memory(self.workers),
+                    None => crate::jobs::settings::default_job_memory(self.workers),
                 }),
                 threads: self.job_threads.map(|t| t as usize),
                 max_runtime: (self.max_runtime_minutes > 0)

@@ -1,10 +1,29 @@
 //! The phygap reconstruction service: a JSON HTTP API (axum) over a durable job queue (SQLite, or
 //! PostgreSQL shared by several processes), artifact storage (the data dir, or an object store
-//! shared by processes on other machines: [`bucket`]) and a pool of workers that run the
-//! reconstruction core through the [`pipeline::Pipeline`] trait. HTTP handlers only validate,
-//! store and enqueue; all heavy work (archive extraction, capture loading, training, export,
-//! relighting) runs on tokio's blocking pool, one blocking thread per running job. A process
-//! serves the API, runs jobs, or both ([`ServiceConfig::api`], [`ServiceConfig::workers`]).
+//! shared by processes on other machines: [`storage::bucket`]) and a pool of workers that run the
+//! reconstruction core through the [`jobs::pipeline_seam::Pipeline`] trait. HTTP handlers only
+//! validate, store and enqueue; all heavy work (archive extraction, capture loading, training,
+//! export, relighting) runs on tokio's blocking pool, one blocking thread per running job. A
+//! process serves the API, runs jobs, or both ([`ServiceConfig::api`], [`ServiceConfig::workers`]).
+//!
+//! The crate is in layers, each module using only its own layer and those below it (lowest
+//! first; `api/tests/module_layers.rs` checks it):
+//!
+//! - [`domain`]: plain values every layer shares (identifiers, quoting inputs in messages);
+//! - [`storage`]: the job store (SQLite, PostgreSQL), the object store, artifacts, the keys of
+//!   objects, the parts of resumable uploads, archive extraction;
+//! - [`accounts`]: who a token belongs to, accounts' limits and quotas, admission of a job's
+//!   capture against the job memory limit;
+//! - [`jobs`]: the service's settings and shared state, the queue and its workers, the pipeline
+//!   seam and its two runners (in this process, in a child process per job), webhooks, purges
+//!   and the retention sweeper, metrics;
+//! - [`http`]: the router and its routes, the listener's limits and middleware, the one error
+//!   type that becomes a JSON error answer, the OpenAPI document, the embedded web page;
+//! - this root ([`Server`]) and [`cli`]: the binary's edge, which opens everything and starts
+//!   the listener and the workers.
+//!
+//! Lower layers answer their own errors (`thiserror`); only [`http`] turns them into status codes
+//! and JSON error bodies.
 //!
 //! Layout of `--data-dir`: `phygap.sqlite3` (captures, jobs, queue, progress; unless a PostgreSQL
 //! `--database-url` holds them), `captures/ID/` (extracted captures), `jobs/ID/model/`
@@ -13,32 +32,15 @@
 //! store holds them), `tmp/` (uploads in progress; leftovers removed at start). With an object
 //! store, the folders other than `tmp/` are working copies of its objects.
 
-pub mod admission;
-pub mod archive;
-pub mod artifacts;
-pub mod auth;
-pub mod bucket;
+pub mod accounts;
 pub mod cli;
-pub mod connections;
-pub mod core_pipeline;
-pub mod error;
-pub mod intake;
-pub mod job_process;
-pub mod metrics;
-pub mod object_keys;
-pub mod openapi;
-pub mod outbound;
-pub mod pipeline;
-pub mod purge;
-pub mod queue;
-pub mod quotas;
-pub mod routes;
-pub mod security_headers;
-pub mod slow_body;
-pub mod store;
-pub mod uploads;
-pub mod web;
-pub mod webhooks;
+pub mod domain;
+pub mod http;
+pub mod jobs;
+pub mod storage;
+
+pub use jobs::settings::{Paths, ServiceConfig, ServiceLimits};
+pub use jobs::state::AppState;
 
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};
@@ -49,195 +51,13 @@ use thiserror::Error;
 use tokio::task::JoinHandle;
 use tokio_util::sync::CancellationToken;
 
-use crate::archive::ExtractLimits;
-use crate::artifacts::{ArtifactError, ArtifactStore, BucketArtifacts, FsArtifacts};
-use crate::bucket::{Bucket, BucketError};
-use crate::metrics::Metrics;
-use crate::pipeline::Pipeline;
-use crate::queue::{CancelReason, Runtime};
-use crate::store::{PostgresStore, SqliteStore, Store, StoreError};
-
-/// Settings of one service instance.
-#[derive(Clone, Debug)]
-pub struct ServiceConfig {
-    pub bind: SocketAddr,
-    pub data_dir: PathBuf,
-    /// Worker tasks running jobs (0: accept and queue jobs but run none).
-    pub workers: usize,
-    /// The admin token: when set (or with account tokens), every `/v1` route and `/metrics`
-    /// require `Authorization: Bearer <token>`; this one sees every record.
-    pub token: Option<String>,
-    /// Account tokens: each sees only its own account's captures and jobs ([`auth`]).
-    pub account_tokens: Vec<auth::AccountToken>,
-    /// Limits of accounts whose tokens set none of their own ([`quotas`]).
-    pub account_defaults: quotas::AccountLimits,
-    /// Jobs that ended, and unused captures uploaded, longer ago than this are removed.
-    pub retention: Option<Duration>,
-    /// How often the sweeper runs (retention, idle uploads).
-    pub retention_sweep: Duration,
-    /// Resumable uploads untouched for this long are removed with their parts.
-    pub upload_expiry: Duration,
-    /// Largest accepted request body (capture archive, environment map), bytes.
-    pub max_upload_bytes: u64,
-    pub extract_limits: ExtractLimits,
-    /// How long a claimed job stays owned without a heartbeat; a job whose worker died is
-    /// requeued this long after its last heartbeat.
-    pub lease: Duration,
-    /// Claims after which a job whose worker keeps dying is failed instead of requeued.
-    pub max_attempts: u32,
-    /// How often idle workers look for jobs queued by other processes.
-    pub poll_interval: Duration,
-    /// A PostgreSQL database shared with other processes (`postgres://…`); without one, the
-    /// embedded SQLite file in the data dir.
-    pub database_url: Option<String>,
-    /// The object store shared with other processes (`s3://bucket/prefix`, `file:///folder`) for
-    /// captures, relight inputs, checkpoints and artifacts; without one, the data dir alone.
-    pub artifact_url: Option<String>,
-    /// Settings of that store that win over the AWS environment variables (`aws_endpoint`, …).
-    pub artifact_options: Vec<(String, String)>,
-    /// Serve the `/v1` API (a worker process serves only `/healthz` and `/metrics`).
-    pub api: bool,
-    /// What inputs may declare and what a job's process may use.
-    pub limits: ServiceLimits,
-    /// Connections, timeouts and request sizes of the HTTP listener.
-    pub http: connections::HttpLimits,
-    /// Artifact downloads answer 307 to a bucket URL presigned for this long (an S3
-    /// `--artifact-url` only); `None`: every byte streams through the API.
-    pub presigned_downloads: Option<Duration>,
-    /// Where jobs' ends are reported, how they are signed, which hosts may be called.
-    pub webhooks: webhooks::WebhookSettings,
-}
-
-/// The bounds every input and every job is held to (docs/service.md, "Limits").
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ServiceLimits {
-    /// Views, pixels per view and decoded bytes of a capture (also a relight's cameras' views
-    /// and pixels).
-    pub capture: phygap::io::capture::CaptureLimits,
-    /// Most pixels of an uploaded environment map.
-    pub max_envmap_pixels: u64,
-    /// Memory, threads and run time of each job's process.
-    pub job: job_process::JobLimits,
-}
-
-impl ServiceLimits {
-    /// 64 megapixels: a 16384 × 4096 map (an 8K HDRI is 33.5).
-    pub const DEFAULT_ENVMAP_PIXELS: u64 = 64_000_000;
-}
-
-impl Default for ServiceLimits {
-    /// The core's capture limits, 64-megapixel maps, and jobs without memory or time caps (the
-    /// command line sets those from the machine: [`cli::ServeArgs::to_config`]).
-    fn default() -> Self {
-        ServiceLimits {
-            capture: phygap::io::capture::CaptureLimits::DEFAULT,
-            max_envmap_pixels: Self::DEFAULT_ENVMAP_PIXELS,
-            job: job_process::JobLimits::NONE,
-        }
-    }
-}
-
-impl ServiceConfig {
-    /// Defaults: loopback port 8080, one worker, no token, 1 GiB uploads, 30 s leases.
-    pub fn new(data_dir: impl Into<PathBuf>) -> Self {
-        ServiceConfig {
-            bind: SocketAddr::from(([127, 0, 0, 1], 8080)),
-            data_dir: data_dir.into(),
-            workers: 1,
-            token: None,
-            account_tokens: Vec::new(),
-            account_defaults: quotas::AccountLimits::default(),
-            retention: None,
-            retention_sweep: Duration::from_secs(3600),
-            upload_expiry: Duration::from_secs(24 * 3600),
-            max_upload_bytes: 1024 << 20,
-            extract_limits: ExtractLimits::default(),
-            lease: Duration::from_secs(30),
-            max_attempts: 5,
-            poll_interval: Duration::from_secs(1),
-            database_url: None,
-            artifact_url: None,
-            artifact_options: Vec::new(),
-            api: true,
-            limits: ServiceLimits::default(),
-            http: connections::HttpLimits::DEFAULT,
-            webhooks: webhooks::WebhookSettings::default(),
-            presigned_downloads: None,
-        }
-    }
-}
-
-impl ServiceConfig {
-    /// Every account's limits: the tokens file's over the defaults.
-    pub fn quotas(&self) -> quotas::Quotas {
-        quotas::Quotas {
-            defaults: self.account_defaults,
-            accounts: self
-                .account_tokens
-                .iter()
-                .map(|t| (t.account.clone(), t.limits))
-                .collect(),
-        }
-    }
-}
-
-/// Folders under the data dir.
-#[derive(Clone, Debug)]
-pub struct Paths {
-    pub root: PathBuf,
-    pub database: PathBuf,
-    pub tmp: PathBuf,
-    pub captures: PathBuf,
-    pub jobs: PathBuf,
-    pub artifacts: PathBuf,
-}
-
-impl Paths {
-    pub fn new(root: &Path) -> Self {
-        Paths {
-            root: root.to_owned(),
-            database: root.join("phygap.sqlite3"),
-            tmp: root.join("tmp"),
-            captures: root.join("captures"),
-            jobs: root.join("jobs"),
-            artifacts: root.join("artifacts"),
-        }
-    }
-
-    pub fn capture_dir(&self, capture_id: &str) -> PathBuf {
-        self.captures.join(capture_id)
-    }
-
-    pub fn model_dir(&self, job_id: &str) -> PathBuf {
-        self.jobs.join(job_id).join("model")
-    }
-
-    pub fn input_dir(&self, job_id: &str) -> PathBuf {
-        self.jobs.join(job_id).join("input")
-    }
-
-    pub fn staging_dir(&self, job_id: &str) -> PathBuf {
-        self.jobs.join(job_id).join("staging")
-    }
-}
-
-/// Everything a handler or worker needs; cheap to clone.
-#[derive(Clone)]
-pub struct AppState {
-    pub config: Arc<ServiceConfig>,
-    pub paths: Arc<Paths>,
-    pub store: Arc<dyn Store>,
-    pub artifacts: Arc<dyn ArtifactStore>,
-    /// The shared object store, where the deployment has one ([`bucket`]).
-    pub bucket: Option<Arc<Bucket>>,
-    pub pipeline: Arc<dyn Pipeline>,
-    pub metrics: Arc<Metrics>,
-    pub runtime: Arc<Runtime>,
-    /// This machine's engines, probed once in a job's process on the first `GET /v1/info`.
-    pub engines: Arc<tokio::sync::OnceCell<pipeline::Engines>>,
-    /// Cancelled when the server shuts down (stops workers claiming and ends event streams).
-    pub shutdown: CancellationToken,
-}
+use crate::jobs::metrics::Metrics;
+use crate::jobs::pipeline_seam::Pipeline;
+use crate::jobs::queue::{CancelReason, Runtime};
+use crate::jobs::{purge, webhooks, worker};
+use crate::storage::artifacts::{ArtifactError, ArtifactStore, BucketArtifacts, FsArtifacts};
+use crate::storage::bucket::{Bucket, BucketError};
+use crate::storage::store::{PostgresStore, SqliteStore, Store, StoreError};
 
 /// Why the service could not start.
 #[derive(Debug, Error)]
@@ -372,13 +192,21 @@ impl Server {
             engines: Arc::default(),
             shutdown: CancellationToken::new(),
         };
-        let router = routes::router(state.clone());
+        let router = http::router(state.clone());
         let stop = state.shutdown.clone();
         let http_limits = state.config.http;
-        let http = tokio::spawn(connections::serve(listener, router, http_limits, stop));
-        let mut tasks = queue::worker::spawn(&state);
+        let http = tokio::spawn(http::connections::serve(
+            listener,
+            router,
+            http_limits,
+            stop,
+        ));
+        let mut tasks = worker::spawn(&state);
         tasks.extend(purge::spawn_sweeper(&state));
-        tasks.push(webhooks::spawn_sender(&state));
+        tasks.push(webhooks::spawn_sender(
+            &state,
+            http::routes::jobs::webhook_body,
+        ));
         tracing::info!(%addr, owner = state.runtime.owner(), "phygap-api listening");
         Ok(Server {
             addr,

@@ -30,7 +30,7 @@ fn colour_log() -> bool {
 /// One stage of a job, in its own process: the memory cap comes first, before anything is read.
 fn stage(args: &phygap_api::cli::StageArgs) -> anyhow::Result<()> {
     if let Some(bytes) = args.memory_bytes {
-        phygap_api::job_process::child::limit_memory(bytes)?;
+        phygap_api::jobs::child_process_runner::child::limit_memory(bytes)?;
     }
     tracing_subscriber::fmt()
         .with_env_filter(
@@ -41,10 +41,12 @@ fn stage(args: &phygap_api::cli::StageArgs) -> anyhow::Result<()> {
         .with_writer(std::io::stderr)
         .init();
     phygap::pipeline::allocator::keep_large_buffers();
-    let pipeline = phygap_api::core_pipeline::CorePipeline {
+    let pipeline = phygap_api::jobs::in_process_runner::CorePipeline {
         capture_limits: args.capture_limits(),
     };
-    Ok(phygap_api::job_process::child::run(&pipeline)?)
+    Ok(phygap_api::jobs::child_process_runner::child::run(
+        &pipeline,
+    )?)
 }
 
 async fn serve(config: phygap_api::ServiceConfig) -> anyhow::Result<()> {
@@ -57,10 +59,12 @@ async fn serve(config: phygap_api::ServiceConfig) -> anyhow::Result<()> {
         .with_writer(std::io::stderr)
         .init();
     let executable = std::env::current_exe().context("finding the service's own executable")?;
-    let pipeline = std::sync::Arc::new(phygap_api::job_process::ProcessPipeline::for_service(
-        executable,
-        &config.limits,
-    ));
+    let pipeline = std::sync::Arc::new(
+        phygap_api::jobs::child_process_runner::ProcessPipeline::for_service(
+            executable,
+            &config.limits,
+        ),
+    );
     let server = phygap_api::Server::start(config, pipeline)
         .await
         .context("starting the service")?;

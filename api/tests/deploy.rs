@@ -181,7 +181,7 @@ fn dockerfile_command_line_volume_and_healthcheck_are_real() {
         "{health}"
     );
     assert!(instruction(&all, "EXPOSE").contains(&port.to_string().as_str()));
-    let healthz = phygap_api::routes::route_table(1)
+    let healthz = phygap_api::http::route_table(1)
         .into_iter()
         .find(|r| r.path == "/healthz")
         .expect("a /healthz route");
@@ -366,7 +366,7 @@ fn kubernetes_manifests_use_real_commands_probes_and_secrets() {
     };
     let secrets = of_kind("Secret");
     let config_maps = of_kind("ConfigMap");
-    let healthz = phygap_api::routes::route_table(1)
+    let healthz = phygap_api::http::route_table(1)
         .into_iter()
         .find(|r| r.path == "/healthz")
         .expect("a /healthz route");

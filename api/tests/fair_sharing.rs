@@ -6,8 +6,8 @@
 mod common;
 
 use common::*;
-use phygap_api::auth::AccountToken;
-use phygap_api::quotas::AccountLimits;
+use phygap_api::accounts::auth::AccountToken;
+use phygap_api::accounts::limits::AccountLimits;
 use serde_json::json;
 
 const ADMIN: &str = "admin-token-0123456789";

@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 
 use common::*;
 use phygap::testing::fuzz::{self, Mutation};
-use phygap_api::archive::{extract, ExtractLimits};
+use phygap_api::storage::archive::{extract, ExtractLimits};
 use phygap_api::ServiceLimits;
 
 fn corpus_dir(target: &str) -> PathBuf {
@@ -89,9 +89,9 @@ fn fuzz_relight_inputs() {
             std::fs::write(&path, input.bytes).unwrap();
             let _ = match Path::new(input.name).extension().and_then(|e| e.to_str()) {
                 Some("json") => {
-                    phygap_api::intake::check_relight_inputs(&map, Some(&path), &limits)
+                    phygap_api::http::intake::check_relight_inputs(&map, Some(&path), &limits)
                 }
-                _ => phygap_api::intake::check_relight_inputs(&path, None, &limits),
+                _ => phygap_api::http::intake::check_relight_inputs(&path, None, &limits),
             };
         },
     );

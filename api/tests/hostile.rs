@@ -407,7 +407,7 @@ async fn every_error_is_json_and_every_answer_carries_security_headers() {
     for path in ["/", "/v1/jobs", "/nowhere"] {
         let response = api.send(reqwest::Method::GET, path).await;
         let headers = response.headers();
-        for (name, value) in phygap_api::security_headers::HEADERS {
+        for (name, value) in phygap_api::http::security_headers::HEADERS {
             if name == "cache-control" && path == "/" {
                 continue; // The page revalidates (no-cache) instead.
             }

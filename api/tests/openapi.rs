@@ -8,8 +8,8 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use base64::Engine as _;
 use common::*;
-use phygap_api::auth::AccountToken;
-use phygap_api::openapi::REGENERATE;
+use phygap_api::accounts::auth::AccountToken;
+use phygap_api::http::openapi::REGENERATE;
 use reqwest::Method;
 use serde_json::{json, Value};
 use sha2::Digest as _;
@@ -43,7 +43,7 @@ fn committed_openapi_yaml_is_the_generated_document() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/openapi.yaml");
     let text = std::fs::read_to_string(path).unwrap();
     let committed: Value = serde_yaml::from_str(&text).unwrap();
-    let generated = phygap_api::openapi::spec_json().unwrap();
+    let generated = phygap_api::http::openapi::spec_json().unwrap();
     if let Some(at) = first_difference(&committed, &generated, "") {
         panic!(
             "api/openapi.yaml is not the document the code generates (first difference at \
@@ -73,7 +73,7 @@ fn openapi_subcommand_writes_the_generated_document() {
         .unwrap();
     assert!(status.success());
     let written = std::fs::read_to_string(&out).unwrap();
-    assert_eq!(written, phygap_api::openapi::spec_yaml().unwrap());
+    assert_eq!(written, phygap_api::http::openapi::spec_yaml().unwrap());
     assert!(written.starts_with(&format!("# Generated from the code by `{REGENERATE}`")));
     let printed = std::process::Command::new(env!("CARGO_BIN_EXE_phygap-api"))
         .arg("openapi")
@@ -303,7 +303,7 @@ async fn live_answers_match_the_declared_schemas() {
 
     let served = admin.get_json("/v1/openapi.json").await;
     assert_eq!(served.0, 200);
-    assert_eq!(served.1, phygap_api::openapi::spec_json().unwrap());
+    assert_eq!(served.1, phygap_api::http::openapi::spec_json().unwrap());
     let mut spec = Spec::new(served.1);
     let response = admin.send(Method::GET, "/v1/openapi.json").await;
     spec.check(Method::GET, "/v1/openapi.json", response).await;
@@ -1059,9 +1059,10 @@ async fn live_answers_match_the_declared_schemas() {
     assert_eq!(answer.status, 404);
 
     // Every operation the document declares was answered and checked.
-    let documented: BTreeSet<(String, String)> = phygap_api::openapi::spec_operations(&spec.doc)
-        .into_iter()
-        .collect();
+    let documented: BTreeSet<(String, String)> =
+        phygap_api::http::openapi::spec_operations(&spec.doc)
+            .into_iter()
+            .collect();
     let checked: BTreeSet<(String, String)> = spec.seen.keys().cloned().collect();
     assert_eq!(checked, documented);
     for ((method, path), statuses) in &spec.seen {

@@ -9,7 +9,7 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 
 use common::*;
-use phygap_api::store::{JobState, SqliteStore, Store};
+use phygap_api::storage::store::{JobState, SqliteStore, Store};
 
 const CHILD_DIR_VAR: &str = "PHYGAP_API_TEST_CHILD_DATA_DIR";
 

@@ -656,20 +656,20 @@ async fn openapi_document_and_router_list_the_same_routes() {
     let (_dir, t) = TestServer::start_fresh().await;
     let (status, served) = t.get_json("/v1/openapi.json").await;
     assert_eq!(status, 200);
-    let spec = phygap_api::openapi::spec_json().unwrap();
+    let spec = phygap_api::http::openapi::spec_json().unwrap();
     assert_eq!(served, spec);
     assert_eq!(spec["openapi"], "3.1.0");
-    let mut routes: Vec<(String, String)> = phygap_api::routes::route_table(1)
+    let mut routes: Vec<(String, String)> = phygap_api::http::route_table(1)
         .iter()
         .map(|r| {
             (
                 r.method.to_string(),
-                phygap_api::openapi::openapi_path(r.path),
+                phygap_api::http::openapi::openapi_path(r.path),
             )
         })
         .collect();
     routes.sort();
-    assert_eq!(routes, phygap_api::openapi::spec_operations(&spec));
+    assert_eq!(routes, phygap_api::http::openapi::spec_operations(&spec));
     // Every route answers (no 404 from the router for any documented path).
     for (method, path) in &routes {
         let concrete = path.replace("{id}", "job_none").replace("{name}", "x.json");

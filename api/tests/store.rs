@@ -9,8 +9,8 @@ use std::sync::Arc;
 
 use common::postgres::TempPostgres;
 use phygap::core::config::TrainConfig;
-use phygap_api::quotas::RunningLimits;
-use phygap_api::store::{
+use phygap_api::storage::store::RunningLimits;
+use phygap_api::storage::store::{
     CaptureRecord, DeleteOutcome, Finish, JobSpec, JobState, NewJob, PartOutcome, PostgresStore,
     Progress, QueueCounts, SqliteStore, Store, StoreError, UploadEnd, UploadPart, UploadRecord,
     UploadState,
@@ -851,7 +851,7 @@ async fn storage_is_reserved_in_the_transaction_that_checks_it(s: Arc<dyn Store>
     };
     s.insert_capture(&capture).await.unwrap();
     // Usage is read at the clock's time: reservations are made around it.
-    let now = phygap_api::store::now_ms();
+    let now = phygap_api::storage::store::now_ms();
     let until = now + 3_600_000;
     let tasks: Vec<_> = (0..20)
         .map(|i| {

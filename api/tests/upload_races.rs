@@ -17,8 +17,8 @@ use common::postgres::TempPostgres;
 use common::process::ServerProcess;
 use common::*;
 use futures_util::StreamExt;
-use phygap_api::auth::AccountToken;
-use phygap_api::quotas::AccountLimits;
+use phygap_api::accounts::auth::AccountToken;
+use phygap_api::accounts::limits::AccountLimits;
 use serde_json::{json, Value};
 use sha2::{Digest, Sha256};
 

@@ -326,8 +326,8 @@ async fn idle_uploads_expire_with_their_parts() {
 async fn accounts_see_only_their_uploads() {
     let (_dir, t) = TestServer::start_fresh_with(|c| {
         c.account_tokens = vec![
-            phygap_api::auth::AccountToken::new("alice", "alice-token-0123456789"),
-            phygap_api::auth::AccountToken::new("bob", "bob-token-0123456789ab"),
+            phygap_api::accounts::auth::AccountToken::new("alice", "alice-token-0123456789"),
+            phygap_api::accounts::auth::AccountToken::new("bob", "bob-token-0123456789ab"),
         ];
     })
     .await;
@@ -352,7 +352,7 @@ async fn parts_go_to_the_object_store() {
         c.artifact_options = bucket.options();
     })
     .await;
-    let store = phygap_api::bucket::Bucket::open(&bucket.url, &bucket.options()).unwrap();
+    let store = phygap_api::storage::bucket::Bucket::open(&bucket.url, &bucket.options()).unwrap();
     let (_, upload) = create(&t, json!({"size": 200_000, "part_size": PART})).await;
     let id = upload["id"].as_str().unwrap().to_owned();
     assert_eq!(put_part(&t, &id, 0, &[1u8; PART]).await.status(), 200);

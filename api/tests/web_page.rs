@@ -34,7 +34,7 @@ async fn the_page_is_served_from_the_binary() {
     let (status, _) = t.get_json("/v1/jobs").await;
     assert_eq!(status, 401);
     // Every embedded file is one build.sh makes.
-    let files = phygap_api::web::files();
+    let files = phygap_api::http::web_page::files();
     for expected in [
         "index.html",
         "assets/app.js",

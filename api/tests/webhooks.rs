@@ -11,7 +11,7 @@ use axum::body::Bytes;
 use axum::http::HeaderMap;
 use common::*;
 use hmac::{Hmac, KeyInit, Mac};
-use phygap_api::outbound::AddressPolicy;
+use phygap_api::jobs::outbound::AddressPolicy;
 use serde_json::{json, Value};
 use sha2::Sha256;
 

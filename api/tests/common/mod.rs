@@ -15,8 +15,8 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use phygap::pipeline::synth::{synth, SynthOptions};
-use phygap_api::job_process::ProcessPipeline;
-use phygap_api::pipeline::Pipeline;
+use phygap_api::jobs::child_process_runner::ProcessPipeline;
+use phygap_api::jobs::pipeline_seam::Pipeline;
 use phygap_api::{Server, ServiceConfig};
 use serde_json::{json, Value};
 use tempfile::TempDir;

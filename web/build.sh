@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the web page into web/dist, which is committed and embedded in phygap-api by
-# api/src/web.rs (cargo builds need no Node.js). Run after changing anything under web/src:
+# api/src/http/web_page.rs (cargo builds need no Node.js). Run after changing anything under web/src:
 #   web/build.sh          (needs Node.js ≥ 18 and npm; installs the pinned packages from package-lock.json)
 # Output: dist/index.html, dist/assets/app.js (the page and three.js, bundled by esbuild),
 # dist/assets/app.css, dist/assets/envmaps/*.hdr (bundled environment maps for relighting).

@@ -1,9 +1,10 @@
-//! Whether a capture fits a job's process at the working resolution a training job asks for,
-//! judged when the job is submitted rather than found out hours later: the memory its views take
-//! in a training run against the job memory limit. A job whose capture cannot fit is refused
-//! ([`Refusal`]) with `capture_too_large`, naming a resolution that would make it fit. The surfels are not
-//! counted: their budget follows the object's pixels in the views (`surfels_per_mask_pixel`),
-//! and a run that outgrows its memory anyway fails `out_of_memory`, never the service.
+//! Whether a capture fits a job's process at the working resolution a training job asks for, judged
+//! when the job is submitted rather than found out hours later: the memory its views take in a
+//! training run against the job memory limit. A job whose capture cannot fit is refused
+//! ([`Refusal`]) with `capture_too_large`, naming a resolution that would make it fit. The surfels
+//! are not counted: their budget follows the object's pixels in the views
+//! (`surfels_per_mask_pixel`), and a run that outgrows its memory anyway fails `out_of_memory`,
+//! never the service.
 
 use phygap::core::config::TrainConfig;
 use phygap::core::resolution::{Resolution, MAX_DOWNSCALE};

@@ -50,7 +50,8 @@ impl Caller {
 pub struct AccountToken {
     pub account: String,
     pub token: String,
-    /// Its own limits; those it does not set are the server's defaults ([`crate::accounts::quotas`]).
+    /// Its own limits; those it does not set are the server's defaults
+    /// ([`crate::accounts::limits`]).
     pub limits: AccountLimits,
 }
 

@@ -1,7 +1,8 @@
-//! Fair sharing between accounts: what each may hold and ask for (jobs running at once, jobs
-//! queued, bytes stored, the priority of its jobs, a job's time limit), where the limits come
-//! from (the tokens file's `key=value` words over the server's defaults) and the checks the
-//! routes make before they accept work. The admin is held only to the server's bounds.
+//! Fair sharing between accounts: the checks the routes make before they accept work, against
+//! what each account may hold and ask for ([`crate::accounts::limits`]: jobs running at once,
+//! jobs queued, bytes stored, the priority of its jobs) and the server's longest job run time,
+//! read through a [`Ledger`]. A check refuses with a [`Refusal`] ([`QuotaError`]). The admin is
+//! held only to the server's bounds.
 //!
 //! Running jobs are limited where a worker claims (the store skips an account's queued jobs
 //! while it runs its limit); queued jobs and storage where a request would add to them. Storage

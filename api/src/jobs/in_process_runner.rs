@@ -1,7 +1,8 @@
-//! The reconstruction core behind [`Pipeline`]: the phygap core's capture loader, trainer,
-//! exporter and relighter, called in the current process. The service never calls it itself: a
-//! job's child process does ([`crate::jobs::child_process_runner`]), so what a hostile capture costs is that
-//! process's alone. Each call is blocking; the capture is loaded from disk per call.
+//! The in-process runner: the reconstruction core behind [`Pipeline`] ([`CorePipeline`]), the
+//! phygap core's capture loader, trainer, exporter and relighter, called in the current process.
+//! The service never calls it itself: a job's child process does
+//! ([`crate::jobs::child_process_runner`]), so what a hostile capture costs is that process's
+//! alone. Each call is blocking; the capture is loaded from disk per call.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;

@@ -1,10 +1,11 @@
-//! The seam between the service and the reconstruction core. Everything in this crate (HTTP, queue,
-//! workers, storage) is written against [`Pipeline`]. The service runs each call in a child
-//! process of its own ([`crate::jobs::child_process_runner::ProcessPipeline`]), which calls
-//! `phygap::{capture, train, export, relight}` ([`crate::jobs::in_process_runner::CorePipeline`]) under the
-//! job's memory, thread and time limits, so no input can take the service down. Every method is
-//! blocking and may run for hours: the service calls them on tokio's blocking pool, never on an
-//! async thread.
+//! The pipeline seam: the [`Pipeline`] trait between the service and the reconstruction core,
+//! and what crosses it. Everything in this crate (HTTP, queue, workers, storage) is written
+//! against [`Pipeline`]. It has two runners: the service runs each call in a child process of
+//! its own ([`crate::jobs::child_process_runner::ProcessPipeline`]), which calls
+//! `phygap::{capture, train, export, relight}` in that process
+//! ([`crate::jobs::in_process_runner::CorePipeline`]) under the job's memory, thread and time
+//! limits, so no input can take the service down. Every method is blocking and may run for
+//! hours: the service calls them on tokio's blocking pool, never on an async thread.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;

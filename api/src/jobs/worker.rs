@@ -4,11 +4,12 @@
 //! third of the lease), and turns a cancel requested in the store into the job's cancel flag. One
 //! reaper task requeues jobs whose lease expired (their process died).
 //!
-//! With a shared object store ([`crate::storage::bucket`]) a job's files travel through it: before running,
-//! a worker fetches the capture (or a relight's inputs and its parent's model) that its own data
-//! dir lacks, and, when it resumes a job, the job's model folder with the latest checkpoint; every
-//! checkpoint it writes is uploaded, so a worker on another machine continues where this one
-//! stopped. A store that cannot be reached puts the job back in the queue instead of failing it.
+//! With a shared object store ([`crate::storage::bucket`]) a job's files travel through it: before
+//! running, a worker fetches the capture (or a relight's inputs and its parent's model) that its
+//! own data dir lacks, and, when it resumes a job, the job's model folder with the latest
+//! checkpoint; every checkpoint it writes is uploaded, so a worker on another machine continues
+//! where this one stopped. A store that cannot be reached puts the job back in the queue instead of
+//! failing it.
 
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};

@@ -1,8 +1,8 @@
 //! Every key the service gives an object in the deployment's bucket (`--artifact-url`), in one
-//! place. They mirror the data dir's folders ([`crate::jobs::settings::Paths`]), under the URL's prefix:
-//! `captures/ID/…` (extracted captures), `jobs/ID/input/…` (relight inputs), `jobs/ID/model/…`
-//! (checkpoints), `artifacts/ID/…` (downloadable results), `uploads/ID/…` (parts of resumable
-//! uploads).
+//! place. They mirror the data dir's folders ([`crate::jobs::settings::Paths`]), under the URL's
+//! prefix: `captures/ID/…` (extracted captures), `jobs/ID/input/…` (relight inputs),
+//! `jobs/ID/model/…` (checkpoints), `artifacts/ID/…` (downloadable results), `uploads/ID/…` (parts
+//! of resumable uploads).
 
 /// An extracted capture's folder.
 pub fn capture(capture_id: &str) -> String {

@@ -1,8 +1,8 @@
 //! Capture upload (streamed to disk, extracted safely, validated by the pipeline), lookup and
-//! deletion. A rejected upload leaves nothing behind: its temporary folder is removed and no
-//! record is written. An account's storage quota is reserved before a byte is kept
-//! ([`crate::accounts::quotas::Reservation`]): the declared length at once, a body without one as it
-//! arrives, cut off where it crosses the quota.
+//! deletion. A rejected upload leaves nothing behind: its temporary folder is removed and no record
+//! is written. An account's storage quota is reserved before a byte is kept
+//! ([`crate::accounts::quotas::Reservation`]): the declared length at once, a body without one as
+//! it arrives, cut off where it crosses the quota.
 
 use std::path::{Path as FsPath, PathBuf};
 

@@ -1,5 +1,5 @@
-//! Resumable capture uploads ([`crate::http::upload_sessions`]): create one, send its parts in any order, ask
-//! which arrived, commit it into a capture, or abandon it.
+//! Resumable capture uploads ([`crate::http::upload_sessions`]): create one, send its parts in any
+//! order, ask which arrived, commit it into a capture, or abandon it.
 
 use axum::body::{Body, Bytes};
 use axum::extract::rejection::BytesRejection;

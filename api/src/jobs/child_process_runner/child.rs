@@ -1,9 +1,9 @@
-//! The job's side of [`crate::jobs::child_process_runner`]: `phygap-api stage` (hidden), the process the
-//! service starts for each stage of a job. It caps its own memory first (`RLIMIT_DATA`, before
-//! it reads anything), reads its [`Request`] from standard input, runs the stage on the core
+//! The job's side of [`crate::jobs::child_process_runner`]: `phygap-api stage` (hidden), the
+//! process the service starts for each stage of a job. It caps its own memory first (`RLIMIT_DATA`,
+//! before it reads anything), reads its [`Request`] from standard input, runs the stage on the core
 //! ([`CorePipeline`]) and writes [`Message`]s to standard output. A `cancel` line raises the
-//! training's cancel flag (it checkpoints and answers); the end of its input (the service is
-//! gone) ends it at once.
+//! training's cancel flag (it checkpoints and answers); the end of its input (the service is gone)
+//! ends it at once.
 //!
 //! An allocation over the limit aborts this process, not the service; the service reads the
 //! abort from the exit status and the message Rust prints (`memory allocation of N bytes

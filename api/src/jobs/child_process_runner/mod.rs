@@ -1,10 +1,11 @@
-//! Jobs in processes of their own. [`ProcessPipeline`] is the [`Pipeline`] the service runs on:
-//! each call (validating an upload, training, exporting, relighting) starts `phygap-api stage`
-//! ([`child`]) with the job's limits, sends it the request ([`protocol`]) and relays what it
-//! says. The child caps its own memory before reading anything; the service holds the wall-clock
-//! limit and the thread count. Whatever an input makes the core do (allocate 96 GB, abort,
-//! crash), only that process dies: the service reads why from its exit status and answers with a
-//! [`PipelineError::Died`] naming the reason, and every other job and request carries on.
+//! The child-process runner: jobs in processes of their own. [`ProcessPipeline`] is the
+//! [`Pipeline`] the service runs on: each call (validating an upload, training, exporting,
+//! relighting) starts `phygap-api stage` ([`child`]) with the job's limits, sends it the request
+//! ([`protocol`]) and relays what it says. The child caps its own memory before reading anything;
+//! the service holds the wall-clock limit and the thread count. Whatever an input makes the core do
+//! (allocate 96 GB, abort, crash), only that process dies: the service reads why from its exit
+//! status and answers with a [`PipelineError::Died`] naming the reason, and every other job and
+//! request carries on.
 //!
 //! Threading: the calling (blocking) thread waits on a channel fed by one thread reading the
 //! child's standard output; a second thread passes its standard error on to the service's own

@@ -269,8 +269,8 @@ pub enum Finish {
     },
 }
 
-/// A resumable upload as stored ([`crate::http::upload_sessions`]): what it declared, where it stands, and
-/// the parts received (ascending by number).
+/// A resumable upload as stored ([`crate::http::upload_sessions`]): what it declared, where it
+/// stands, and the parts received (ascending by number).
 #[derive(Clone, Debug, PartialEq)]
 pub struct UploadRecord {
     /// `upl_…`.

@@ -60,7 +60,7 @@ fn no_files_of_a_folder_use_each_other_in_a_circle() {
     assert!(circles.is_empty(), "circles between files: {circles:#?}");
 }
 
-/// The checks fail on what this crate once had: a lower layer using a higher one (a store using
+/// The checks fail on what the layers forbid: a lower layer using a higher one (the store using
 /// the accounts' types, a job answering with the HTTP error), a use of the root's state from
 /// below, and two files of a folder using each other (`http/intake.rs` ↔ `http/routes`).
 #[test]

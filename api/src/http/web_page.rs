@@ -1,7 +1,8 @@
 //! The web page, served by the service itself: `web/dist` (built by `web/build.sh`, committed)
 //! is embedded in the binary at compile time, so no separate server or Node.js is needed at run
 //! time. `/` answers `index.html`; `/assets/…` the rest of `dist` (scripts, styles, the bundled
-//! environment maps). The page only calls the public `/v1` API.
+//! environment maps). The page only calls the public `/v1` API (its viewer's data included:
+//! [`crate::http::routes::viewer_data`]).
 
 use axum::extract::Path;
 use axum::http::{header, HeaderValue};

@@ -1,7 +1,8 @@
-//! What a viewer needs beyond the artifacts as stored: the extracted mesh with the learned
-//! materials on its vertices ([`crate::material_mesh`]), and the captured images of the test
-//! views in the same 8-bit form as the job's renders (`renders/{kind}/NNN.png`), so the two can be
-//! shown side by side (the training job's process writes them as `captured/{kind}/NNN.png`).
+//! The viewer's data routes: what the web page's viewer needs beyond the artifacts as stored, the
+//! extracted mesh with the learned materials on its vertices ([`material_mesh`]), and the
+//! captured images of the test views in the same 8-bit form as the job's renders
+//! (`renders/{kind}/NNN.png`), so the two can be shown side by side (the training job's process
+//! writes them as `captured/{kind}/NNN.png`). The page itself is [`crate::http::web_page`].
 
 use axum::body::Body;
 use axum::extract::{Path, State};

@@ -132,6 +132,7 @@ fn main() -> anyhow::Result<()> {
                 &angles,
                 camera,
                 target,
+                [1.0; 3],
                 Stage::Polar,
             )?;
         }

@@ -174,6 +174,7 @@ fn compare(
         &angles,
         &scene.camera,
         target,
+        [1.0; 3],
         stage,
     )
     .unwrap();

@@ -13,6 +13,7 @@
 use glam::{DMat3, DQuat, DVec3};
 use phygap::core::camera::Camera;
 use phygap::core::gradcheck::{numerical_gradient, worst_mismatch};
+use phygap::core::pose::PoseCorrection;
 use phygap::core::raster::cpu::CpuBackend;
 use phygap::core::raster::{GBufferGrads, GBuffers, RasterError, RasterSettings};
 use phygap::core::surfels::{sigmoid, Surfels};
@@ -606,4 +607,46 @@ fn output_is_independent_of_tile_size_and_deterministic() {
         .unwrap();
     assert_eq!(g1, g2, "gradients are bitwise reproducible");
     assert!(g1.surfels.is_finite());
+}
+
+/// The gradient on a view's pose correction (rotation, then translation, in the camera's axes)
+/// against central differences of the rendered G-buffers under the corrected camera. The depth
+/// normals follow the camera through their pixel rays too, outside the projection that the pose
+/// gradient covers, so their upstream is left out.
+#[test]
+fn pose_gradient_matches_finite_differences() {
+    for seed in 0..6u64 {
+        let mut rng = ChaCha8Rng::seed_from_u64(100 + seed);
+        let cam = camera(&mut rng);
+        let s = scene(&mut rng, &cam, &SMOOTH);
+        let settings = smooth_settings();
+        let fwd = CpuBackend.forward(&s, &cam, &settings).unwrap();
+        let mut up = random_upstream(&mut rng, W as usize, H as usize);
+        mask_thin_coverage(&mut up, &fwd.gbuffers);
+        up.depth_normal.iter_mut().for_each(|v| *v = [0.0; 3]);
+        let analytic = CpuBackend
+            .backward(&s, &cam, &settings, &fwd, &up)
+            .unwrap()
+            .pose
+            .expect("the cpu engine computes the pose gradient");
+        let mut f = |x: &[f64]| {
+            let correction = PoseCorrection::from_array(x.try_into().expect("six values"));
+            loss(&s, &correction.apply(&cam), &settings, &up)
+        };
+        let numerical = numerical_gradient(&mut f, &[0.0; 6], 1e-6);
+        let scale = numerical.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        assert!(
+            scale > 1e-6,
+            "seed {seed}: loss does not depend on the pose"
+        );
+        let worst = worst_mismatch(&analytic, &numerical, 1e-3 * scale);
+        assert!(
+            worst.relative_error < 1e-3,
+            "seed {seed}: pose component {} analytic {:e} numerical {:e} (rel {:e})",
+            worst.index,
+            worst.analytic,
+            worst.numerical,
+            worst.relative_error
+        );
+    }
 }

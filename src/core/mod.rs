@@ -20,6 +20,7 @@ pub mod loss;
 pub mod mesh;
 pub mod metrics;
 pub mod optim;
+pub mod pose;
 pub mod raster;
 pub mod render;
 pub mod resolution;

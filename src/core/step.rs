@@ -47,9 +47,22 @@ pub struct ViewTarget<'a> {
 impl ViewTarget<'_> {
     /// The photometric or Stokes `samples` as the run fits them: times [`Self::gain`], in f64.
     pub fn fitted(&self, samples: &[f32]) -> Vec<f64> {
+        self.fitted_in(samples, [self.gain; 3])
+    }
+
+    /// The factor each colour channel's samples are multiplied by when the view's own exposure
+    /// and white balance are `colour` (the view's channel values over the run's): the gain over
+    /// the colour.
+    pub fn channel_gains(&self, colour: [f64; 3]) -> [f32; 3] {
+        colour.map(|c| (f64::from(self.gain) / c) as f32)
+    }
+
+    /// Interleaved RGB `samples` times their channel's `gains`, in f64.
+    pub fn fitted_in(&self, samples: &[f32], gains: [f32; 3]) -> Vec<f64> {
         samples
             .par_iter()
-            .map(|&v| f64::from(v * self.gain))
+            .enumerate()
+            .map(|(i, &v)| f64::from(v * gains[i % 3]))
             .collect()
     }
 }

@@ -656,6 +656,8 @@ impl Rasterizer<'_> {
         Ok(RasterGrads {
             surfels: grads,
             mean2d_grad_norm: mean2d,
+            // The kernels do not reduce the pose gradient (pose refinement is host-only).
+            pose: None,
         })
     }
 }

@@ -10,7 +10,9 @@ use glam::DVec3;
 use serde::Serialize;
 use thiserror::Error;
 
+use crate::core::camera::Camera;
 use crate::core::metrics::{self, MetricsError};
+use crate::core::pose::pose_error;
 use crate::core::render::{RenderError, RenderedView, Scene};
 use crate::formats::image_io::{self, Image, ImageError};
 use crate::io::capture::{resample, Capture, Measurement, PolarizerAngle, View};
@@ -35,6 +37,11 @@ pub struct EvalReport {
     pub relight_ssim: Option<f64>,
     /// Chamfer-L1 from the model's extracted mesh to a ground-truth mesh (`--gt-mesh`).
     pub chamfer: Option<f64>,
+    /// The model's (refined) training cameras against the capture's ([`pose_errors`]): the mean
+    /// angle between their rotations in degrees, and the mean distance between their centres as a
+    /// fraction of the object's radius.
+    pub pose_error_deg: Option<f64>,
+    pub pose_error_radius: Option<f64>,
     pub num_surfels: usize,
     pub train_seconds: Option<f64>,
     /// Learned angle per `polarizer_group`, degrees in [0, 180).
@@ -54,6 +61,34 @@ pub enum EvalError {
     Metrics { view: String, source: MetricsError },
     #[error("Chamfer distance: {0}")]
     Mesh(#[from] crate::core::mesh::MeshError),
+}
+
+/// The mean rotation error (degrees) and centre distance (fraction of the object's radius) of a
+/// model's training cameras against the training views of `capture`, paired by name, or in order
+/// where the names differ but the counts agree (a copy of the capture written by `phygap
+/// degrade`, evaluated against the clean one); `None` when they cannot be paired.
+pub fn pose_errors(cameras: &[(String, Camera)], capture: &Capture) -> Option<(f64, f64)> {
+    let train: Vec<&View> = capture.train_views().collect();
+    let by_name: Option<Vec<&View>> = cameras
+        .iter()
+        .map(|(name, _)| train.iter().copied().find(|v| &v.name == name))
+        .collect();
+    let pairs = match by_name {
+        Some(views) => views,
+        None if train.len() == cameras.len() => train,
+        None => return None,
+    };
+    if pairs.is_empty() {
+        return None;
+    }
+    let radius = capture.object_bounds().radius;
+    let (angle, distance) = cameras
+        .iter()
+        .zip(&pairs)
+        .map(|((_, camera), view)| pose_error(camera, &view.camera))
+        .fold((0.0, 0.0), |(a, d), (da, dd)| (a + da, d + dd));
+    let n = pairs.len() as f64;
+    Some((angle / n, distance / n / radius))
 }
 
 /// Mean S0 PSNR and SSIM (sRGB 8-bit, inside the mask) of `relit` — a scene lit by the capture's
@@ -424,6 +459,8 @@ pub fn evaluate_scaled(
         roughness_mae: means.get("roughness_mae"),
         ior_mae: means.get("ior_mae"),
         relight_psnr: None,
+        pose_error_deg: None,
+        pose_error_radius: None,
         relight_ssim: None,
         chamfer: None,
         num_surfels: scene.surfels.len(),

@@ -74,6 +74,10 @@ pub fn score(
     let reconstruction = Reconstruction::new(model.clone())?;
     let mut report = reconstruction.evaluate(capture)?;
     report.train_seconds = Some(model.info.train_seconds);
+    if let Some((angle, distance)) = evaluate::pose_errors(&model.train_cameras, capture) {
+        report.pose_error_deg = Some(angle);
+        report.pose_error_radius = Some(distance);
+    }
     if let Some(envmap) = &truth.relight_envmap {
         // GridMap's mesh depends on the surfels alone: the relit copy reuses it.
         let relit = reconstruction.relit(relight::relight_cube(model, envmap, 0.0)?)?;

@@ -205,6 +205,20 @@ pub fn assert_backward_parity_with_zero_groups(
             c[i]
         );
     }
+    // The pose gradient, where the engine computes it (the gpu kernels do not).
+    if let (Some(g), Some(c)) = (got.pose, cpu.pose) {
+        let norm = c.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let diff = g
+            .iter()
+            .zip(&c)
+            .map(|(a, b)| (a - b) * (a - b))
+            .sum::<f64>()
+            .sqrt();
+        assert!(
+            diff <= tol * norm,
+            "{what}: pose gradient differs: {g:?} vs cpu {c:?}"
+        );
+    }
 }
 
 /// Settings whose discontinuous thresholds sit far below f32 resolution of the result (a surfel

@@ -90,5 +90,7 @@ pub fn print_table(report: &EvalReport) {
     println!("relit PSNR (dB) {}", fmt(report.relight_psnr));
     println!("relit SSIM      {}", fmt(report.relight_ssim));
     println!("Chamfer-L1      {}", fmt(report.chamfer));
+    println!("pose error (°)  {}", fmt(report.pose_error_deg));
+    println!("pose error (r)  {}", fmt(report.pose_error_radius));
     println!("surfels         {}", report.num_surfels);
 }

@@ -256,9 +256,10 @@ pub fn stokes_l1(
 }
 
 /// [`stokes_l1`] of the α-premultiplied prediction (`α · S1`, `α · S2`: one RGB value per pixel
-/// times the pixel's `alpha`) against targets held as the capture's f32 samples, each times
-/// `gain` and widened to f64 (as [`crate::core::step::ViewTarget::fitted`] does): the same value
-/// and gradients bit for bit, in one parallel pass without the premultiplied and widened copies.
+/// times the pixel's `alpha`) against targets held as the capture's f32 samples, each times its
+/// channel's `gains` and widened to f64 (as [`crate::core::step::ViewTarget::fitted_in`] does):
+/// the same value and gradients bit for bit, in one parallel pass without the premultiplied and
+/// widened copies.
 ///
 /// # Panics
 /// If the lengths differ (three targets per pixel, one `alpha` per pixel).
@@ -266,7 +267,7 @@ pub fn stokes_l1_premultiplied(
     (s1, s2): (&[DVec3], &[DVec3]),
     alpha: &[f64],
     (t1, t2): (&[f32], &[f32]),
-    gain: f32,
+    gains: [f32; 3],
 ) -> StokesLossValue {
     let pixels = alpha.len();
     assert!(
@@ -280,7 +281,7 @@ pub fn stokes_l1_premultiplied(
     let inv_n = 1.0 / n.max(1) as f64;
     // |p − t| and the subgradient of element i, exactly as `l1` computes them.
     let term = |pred: &[DVec3], target: &[f32], i: usize, g: &mut f64| {
-        let d = pred[i / 3][i % 3] * alpha[i / 3] - f64::from(target[i] * gain);
+        let d = pred[i / 3][i % 3] * alpha[i / 3] - f64::from(target[i] * gains[i % 3]);
         *g = abs_subgradient(d) * inv_n;
         d.abs()
     };

@@ -400,18 +400,23 @@ fn the_premultiplied_stokes_loss_equals_stokes_l1_of_the_premultiplied_images() 
                 .collect()
         };
         let (mut t1, t2) = (samples(&mut rng), samples(&mut rng));
-        let gain = 1.25f32;
+        let gains = [1.25f32, 0.75, 1.5];
         t1[3] = 0.0; // pixel 1 (α = 1): prediction equal to the target below
-        s1[1].x = f64::from(t1[3] * gain);
+        s1[1].x = f64::from(t1[3] * gains[0]);
         let premul = |v: &[DVec3]| -> Vec<f64> {
             v.iter()
                 .zip(&alpha)
                 .flat_map(|(x, &a)| (*x * a).to_array())
                 .collect()
         };
-        let fitted = |t: &[f32]| -> Vec<f64> { t.iter().map(|&v| f64::from(v * gain)).collect() };
+        let fitted = |t: &[f32]| -> Vec<f64> {
+            t.iter()
+                .enumerate()
+                .map(|(i, &v)| f64::from(v * gains[i % 3]))
+                .collect()
+        };
         let reference = stokes_l1(&premul(&s1), &fitted(&t1), &premul(&s2), &fitted(&t2), None);
-        let fused = stokes_l1_premultiplied((&s1, &s2), &alpha, (&t1, &t2), gain);
+        let fused = stokes_l1_premultiplied((&s1, &s2), &alpha, (&t1, &t2), gains);
         assert_eq!(fused.value.to_bits(), reference.value.to_bits());
         assert_eq!(bits(&fused.grad_s1), bits(&reference.grad_s1));
         assert_eq!(bits(&fused.grad_s2), bits(&reference.grad_s2));

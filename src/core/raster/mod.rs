@@ -251,6 +251,9 @@ pub struct RasterGrads {
     /// `|dL/dμ|` per surfel, in 1/pixels: the gradient with respect to a screen-space translation
     /// of the projected surfel (3DGS measures the same in NDC units, i.e. this × width / 2 along x).
     pub mean2d_grad_norm: Vec<f64>,
+    /// The gradient on the view's pose correction at zero ([`crate::core::pose`]), summed over
+    /// the surfels in index order; `None` from an engine that does not compute it.
+    pub pose: Option<crate::core::pose::PoseGrad>,
 }
 
 /// Device time spent in one kind of compute pass
@@ -574,6 +577,7 @@ pub fn chain_to_raw<P: Sync>(
     let cam = project::ProjectionCamera::new(camera);
     let mut grads = SurfelGrads::zeros(surfels.len());
     let mut mean2d = vec![0.0; surfels.len()];
+    let mut pose = vec![[0.0; 6]; surfels.len()];
     (
         grads.position.par_iter_mut(),
         grads.log_scale.par_iter_mut(),
@@ -583,11 +587,12 @@ pub fn chain_to_raw<P: Sync>(
         grads.roughness.par_iter_mut(),
         grads.ior.par_iter_mut(),
         mean2d.par_iter_mut(),
+        pose.par_iter_mut(),
         projected.par_iter(),
     )
         .into_par_iter()
         .enumerate()
-        .for_each(|(i, (pos, ls, rot, op, alb, rough, ior, m2d, p))| {
+        .for_each(|(i, (pos, ls, rot, op, alb, rough, ior, m2d, pose, p))| {
             let Some(p) = p else {
                 return;
             };
@@ -605,10 +610,19 @@ pub fn chain_to_raw<P: Sync>(
             *rough = r.roughness;
             *ior = r.ior;
             *m2d = r.mean2d_norm;
+            *pose = r.pose;
         });
+    // Summed in index order, so that the sum does not depend on the thread count.
+    let pose = pose.iter().fold([0.0; 6], |mut sum, g| {
+        for (s, v) in sum.iter_mut().zip(g) {
+            *s += v;
+        }
+        sum
+    });
     RasterGrads {
         surfels: grads,
         mean2d_grad_norm: mean2d,
+        pose: Some(pose),
     }
 }
 

@@ -26,6 +26,7 @@ use glam::{DMat3, DVec3};
 
 use super::RasterSettings;
 use crate::core::camera::Camera;
+use crate::core::pose::PoseGrad;
 use crate::core::surfels::{sigmoid, Surfels, IOR_MIN};
 
 /// Number of per-surfel features composited besides depth: normal (3), albedo (3), roughness, IoR.
@@ -361,6 +362,9 @@ pub struct RawGrad {
     /// `|dL/dμ|`: the loss gradient with respect to a screen-space translation of the whole
     /// projected surfel (its footprint and its low-pass centre together), in 1/pixels.
     pub mean2d_norm: f64,
+    /// This surfel's share of the gradient on the view's pose correction at zero
+    /// ([`crate::core::pose`]): rotation, then translation, in the camera's OpenCV axes.
+    pub pose: PoseGrad,
 }
 
 /// Chains the gradient on the projected values of surfel `index` back to its raw parameters
@@ -407,6 +411,17 @@ pub fn project_backward(
     gc.z -= (cam.fx * c.x * grad.mean[0] + cam.fy * c.y * grad.mean[1]) / (c.z * c.z);
     gc.z += grad.view_depth;
 
+    // A correction (ω, τ) moves a, b, c by ω × a, ω × b, ω × c + τ.
+    let pose_rotation = geo.a.cross(ga) + geo.b.cross(gb) + c.cross(gc);
+    let pose = [
+        pose_rotation.x,
+        pose_rotation.y,
+        pose_rotation.z,
+        gc.x,
+        gc.y,
+        gc.z,
+    ];
+
     let wt = cam.rotation.transpose();
     let position = (wt * gc).to_array();
     let log_scale = [ga.dot(geo.a), gb.dot(geo.b)];
@@ -435,6 +450,7 @@ pub fn project_backward(
         roughness: f[6] * dsig(act.roughness),
         ior: f[7] * dsig(act.ior - IOR_MIN),
         mean2d_norm: (mean2d[0] * mean2d[0] + mean2d[1] * mean2d[1]).sqrt(),
+        pose,
     }
 }
 

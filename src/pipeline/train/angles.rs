@@ -34,10 +34,11 @@ pub(super) fn estimate(
         let views = run
             .targets
             .iter()
-            .filter(|t| matches!(&t.polarizer, Some(Polarizer::Learned(g)) if g == group))
+            .enumerate()
+            .filter(|(_, t)| matches!(&t.polarizer, Some(Polarizer::Learned(g)) if g == group))
             .take(VIEWS_PER_GROUP);
-        for target in views {
-            let rendered = scene.render(&run.capture.views[target.view].camera)?;
+        for (index, target) in views {
+            let rendered = scene.render(&run.poses.camera(&state.poses, index))?;
             let s = &rendered.shaded;
             for (p, &a) in rendered.gbuffers().alpha.iter().enumerate() {
                 if a < MIN_ALPHA || target.mask[p] < 0.5 {

@@ -14,7 +14,7 @@ use std::collections::BTreeMap;
 
 use super::host_step::{self, StepInputs};
 use super::state::TrainState;
-use super::{Run, TrainError};
+use super::{colour, Run, TrainError};
 use crate::core::step::StepPlan;
 use std::sync::Arc;
 
@@ -58,11 +58,7 @@ impl<'r> StepEngine<'r> {
         let Some(gpu) = run.backend.gpu() else {
             return Ok(StepEngine::Host);
         };
-        let cameras: Vec<_> = run
-            .targets
-            .iter()
-            .map(|t| run.capture.views[t.view].camera)
-            .collect();
+        let cameras = run.poses.capture_cameras().to_vec();
         let trainer = DeviceTrainer::new(
             gpu,
             run.settings,
@@ -193,7 +189,7 @@ impl<'r> StepEngine<'r> {
     ) -> Result<StepOutcome, TrainError> {
         let it = state.iteration;
         let view = &run.targets[target];
-        let camera = &run.capture.views[view.view].camera;
+        let camera = &run.poses.camera(&state.poses, target);
         let weights = run.loss_weights;
         let rates = run.surfel_rates(stage, it);
         let outcome = match self {
@@ -211,6 +207,7 @@ impl<'r> StepEngine<'r> {
                     &state.polarizer_angles,
                     camera,
                     view,
+                    state.colours[target],
                     stage,
                 )?;
                 let grads = result.surfels.groups();
@@ -231,6 +228,13 @@ impl<'r> StepEngine<'r> {
                 state
                     .densify
                     .add_view(&result.mean2d_grad_norm, result.width, result.height);
+                if let (Some(grad), Some(rate)) = (result.pose, run.poses.rate(it)) {
+                    run.poses
+                        .update(&mut state.adam, &mut state.poses, target, &grad, rate)?;
+                }
+                if run.refines_colours(it) {
+                    colour::update(&mut state.colours, target, result.colour_ratio);
+                }
                 StepOutcome {
                     losses: result.losses,
                     total: result.total,

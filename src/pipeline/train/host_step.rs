@@ -26,7 +26,7 @@ use crate::core::shading::{SavedShading, StokesImage, StokesImageGrad};
 use crate::core::step::{widen, StepPlan, ViewTarget};
 use crate::core::surfels::{SurfelGrads, Surfels};
 
-use super::TrainError;
+use super::{colour, TrainError};
 
 /// Gradients and loss values of one step.
 pub struct StepResult {
@@ -36,6 +36,11 @@ pub struct StepResult {
     pub surfels: SurfelGrads,
     /// Per-surfel screen-space gradient norm (pixels) for densification.
     pub mean2d_grad_norm: Vec<f64>,
+    /// Gradient on the view's pose correction, where the engine computes it.
+    pub pose: Option<crate::core::pose::PoseGrad>,
+    /// How much brighter the view's fitted samples are than the prediction, per channel
+    /// ([`colour::ratio`]).
+    pub colour_ratio: [Option<f64>; 3],
     /// Gradient of the environment light (shading stages only).
     pub env: Option<EnvGrad>,
     /// Gradient of each learned polarizer angle.
@@ -59,8 +64,9 @@ fn add_into(dst: &mut [f64], src: &[f64], scale: f64) {
         .for_each(|(d, s)| *d += scale * s);
 }
 
-/// Runs forward and backward for `target` seen by `camera`, shading with `light` (the global
-/// environment, or GridMap over it; the light gradient is shaped like the global environment).
+/// Runs forward and backward for `target` seen by `camera`, its samples divided by the view's
+/// `colour` ([`colour`]), shading with `light` (the global environment, or GridMap over it; the
+/// light gradient is shaped like the global environment).
 #[allow(clippy::too_many_arguments)]
 pub fn run(
     inputs: &StepInputs,
@@ -69,6 +75,7 @@ pub fn run(
     angles: &BTreeMap<String, f64>,
     camera: &crate::core::camera::Camera,
     target: &ViewTarget,
+    colour: [f64; 3],
     stage: Stage,
 ) -> Result<StepResult, TrainError> {
     let _span = tracing::debug_span!("step", ?stage).entered();
@@ -95,7 +102,8 @@ pub fn run(
         })
     };
     // The view's photometric target in f64, which both groups of losses read.
-    let photometric = target.fitted(&target.photometric);
+    let gains = target.channel_gains(colour);
+    let photometric = target.fitted_in(&target.photometric, gains);
     let image_grads = {
         let _span = tracing::debug_span!("image_losses").entered();
         image_losses(
@@ -104,6 +112,7 @@ pub fn run(
             &plan,
             target,
             &photometric,
+            gains,
             inputs,
             &mut losses,
         )
@@ -157,6 +166,8 @@ pub fn run(
         total,
         surfels: grads.surfels,
         mean2d_grad_norm: grads.mean2d_grad_norm,
+        pose: grads.pose,
+        colour_ratio: image_grads.colour_ratio,
         env: env_grad,
         angles: angle_grads,
         width: g.width,
@@ -176,6 +187,8 @@ struct Shaded {
 struct ImageGrads {
     pred: Vec<f64>,
     s12: Option<(Vec<f64>, Vec<f64>)>,
+    /// The fitted target over the prediction, per channel ([`colour::ratio`]).
+    colour_ratio: [Option<f64>; 3],
 }
 
 /// The photometric prediction, α-premultiplied like the capture: the albedo (geometry stage),
@@ -200,18 +213,21 @@ fn predict(g: &GBuffers, shaded: Option<&Shaded>, plan: &StepPlan) -> Vec<f64> {
 /// The photometric loss against `photometric_target` (the view's, widened; SSIM in the backend's
 /// loss precision), and in the PolarDR stage the Stokes loss on S1/S2 (full views) or the extra
 /// L1 on I(θ) (partial views).
+#[allow(clippy::too_many_arguments)]
 fn image_losses(
     g: &GBuffers,
     shaded: Option<&Shaded>,
     plan: &StepPlan,
     target: &ViewTarget,
     photometric_target: &[f64],
+    gains: [f32; 3],
     inputs: &StepInputs,
     losses: &mut BTreeMap<String, f64>,
 ) -> ImageGrads {
     let weights = &inputs.weights;
     let (w, h) = (g.width, g.height);
     let pred = predict(g, shaded, plan);
+    let colour_ratio = colour::ratio(&pred, photometric_target, &g.alpha, &target.mask);
     let photometric = loss::photometric(
         &pred,
         photometric_target,
@@ -227,7 +243,7 @@ fn image_losses(
     if plan.stokes_loss || plan.extra_l1 {
         if let (Some((t1, t2)), Some(Shaded { image: s, .. })) = (&target.stokes, shaded) {
             let mut stokes =
-                loss::stokes_l1_premultiplied((&s.s1, &s.s2), &g.alpha, (t1, t2), target.gain);
+                loss::stokes_l1_premultiplied((&s.s1, &s.s2), &g.alpha, (t1, t2), gains);
             losses.insert("stokes".to_owned(), weights.lambda_stokes * stokes.value);
             for grad in [&mut stokes.grad_s1, &mut stokes.grad_s2] {
                 grad.par_iter_mut()
@@ -243,6 +259,7 @@ fn image_losses(
     ImageGrads {
         pred: grad_pred,
         s12: grad_s12,
+        colour_ratio,
     }
 }
 

@@ -18,12 +18,14 @@
 //! and, in the uninterrupted run, right after each checkpoint, so both runs see the same probes.
 
 mod angles;
+pub mod colour;
 mod engine;
 mod eta;
 pub mod exposure;
 pub mod hidden;
 pub mod host_step;
 pub mod init;
+pub mod poses;
 pub mod schedule;
 pub mod sparse;
 pub mod state;
@@ -64,6 +66,7 @@ use crate::pipeline::evaluate::{self, EvalError};
 use crate::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
 use crate::pipeline::peak_memory::peak_resident_bytes;
 use crate::pipeline::reconstruction::run_prefilter_plan;
+use poses::PoseRefinement;
 use sparse::init_for_capture;
 
 use crate::core::step::ViewTarget;
@@ -114,6 +117,14 @@ pub enum TrainError {
         "cannot resume: the checkpoint in {path} holds its light in units of {saved} of the capture's, but the capture's exposure now gives {now} (a checkpoint from before exposure normalization, or views that changed since): train again without resuming"
     )]
     ExposureChanged { path: PathBuf, saved: f64, now: f64 },
+    #[error(
+        "cannot resume: the checkpoint in {path} holds the poses of {saved} training views, but the capture has {now}: train again without resuming"
+    )]
+    ViewsChanged {
+        path: PathBuf,
+        saved: usize,
+        now: usize,
+    },
     #[error(
         "training diverged at iteration {0} (non-finite parameters); try a lower learning rate"
     )]
@@ -278,6 +289,8 @@ struct Run<'a> {
     /// The loss weights, the depth distortion measured in the object's radius.
     loss_weights: LossWeights,
     densify_rules: DensifyRules,
+    /// The training views' cameras and how their pose corrections are learned.
+    poses: PoseRefinement,
     model_dir: &'a Path,
 }
 
@@ -371,6 +384,14 @@ pub fn train_on(
     let _span = tracing::info_span!("train", iterations = config.steps()).entered();
     let bounds = capture.object_bounds();
     let max_surfels = surfel_budget(config, object_pixels);
+    let poses = PoseRefinement::new(
+        config,
+        targets
+            .iter()
+            .map(|t| capture.views[t.view].camera)
+            .collect(),
+        bounds.center,
+    );
     let run = Run {
         capture,
         config,
@@ -389,6 +410,7 @@ pub fn train_on(
             max_surfels,
         ),
         backend,
+        poses,
         model_dir,
     };
     let log = std::fs::OpenOptions::new()
@@ -416,6 +438,8 @@ impl Run<'_> {
                 .into_iter()
                 .map(|g| (g, 0.0))
                 .collect(),
+            poses: self.poses.identity(),
+            colours: vec![[1.0; 3]; self.targets.len()],
             adam: Adam::new(AdamConfig::default()),
             densify: DensifyStats::new(n),
             elapsed_seconds: 0.0,
@@ -451,7 +475,7 @@ impl Run<'_> {
     ) -> Result<Session<'_>, TrainError> {
         let checkpoint = self.model_dir.join(CHECKPOINT_FILE);
         let (state, resumed_from) = if resume && checkpoint.exists() {
-            let (state, saved_fp) = TrainState::load(&checkpoint)?;
+            let (mut state, saved_fp) = TrainState::load(&checkpoint)?;
             if !same_config(&saved_fp, self.config) {
                 return Err(TrainError::ConfigChanged(checkpoint));
             }
@@ -463,6 +487,22 @@ impl Run<'_> {
                 });
             }
             let it = state.iteration;
+            // Written before runs refined poses and colours: none yet.
+            if state.poses.is_empty() {
+                state.poses = self.poses.identity();
+            }
+            if state.colours.is_empty() {
+                state.colours = vec![[1.0; 3]; self.targets.len()];
+            }
+            for saved in [state.poses.len(), state.colours.len()] {
+                if saved != self.targets.len() {
+                    return Err(TrainError::ViewsChanged {
+                        path: checkpoint,
+                        saved,
+                        now: self.targets.len(),
+                    });
+                }
+            }
             (state, Some(it))
         } else {
             (self.fresh_state()?, None)
@@ -471,7 +511,7 @@ impl Run<'_> {
         reporter.emit(TrainEvent::Started {
             iterations: self.config.steps(),
             mode: format!("{:?}", self.mode).to_lowercase(),
-            backend: format!("{}; {}", self.backend.description(), engine.describe()),
+            backend: format!("{}; {}", self.backend.description(), self.describe(&engine)),
             train_views: self.targets.len(),
             test_views: self.capture.test_views().count(),
             resumed_from,
@@ -715,6 +755,24 @@ impl Run<'_> {
         self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)
     }
 
+    /// How the steps run, for the start event: the device engine trains on the capture's poses
+    /// and colours (pose and colour refinement are host steps).
+    fn describe(&self, engine: &StepEngine) -> String {
+        let refines = self.poses.enabled() || self.config.colour_refinement;
+        match engine {
+            StepEngine::Device(_) if refines => {
+                format!("the capture's poses and colours; {}", engine.describe())
+            }
+            _ => engine.describe().to_owned(),
+        }
+    }
+
+    /// Whether the step of iteration `it` updates its view's colour ([`colour`]).
+    fn refines_colours(&self, it: u32) -> bool {
+        self.config.colour_refinement
+            && f64::from(it) >= self.config.refine_views_from * f64::from(self.config.steps())
+    }
+
     /// The learning rate of each surfel parameter group at iteration `it` (in the order of
     /// `Surfels::groups`); `None` for the groups the stage freezes (roughness and IoR in plain
     /// 2DGS, where the colour is the albedo).
@@ -823,7 +881,7 @@ impl Run<'_> {
 
     /// Prunes the surfels no training view sees ([`hidden::hidden_surfels`]).
     fn prune_hidden(&self, state: &mut TrainState) -> Result<(), TrainError> {
-        let cameras = self.train_camera_poses();
+        let cameras = self.train_camera_poses(state);
         let hidden =
             hidden::hidden_surfels(&state.surfels, &cameras, &**self.backend, &self.settings)?;
         let keep: Vec<bool> = hidden.iter().map(|&h| !h).collect();
@@ -842,23 +900,19 @@ impl Run<'_> {
         Ok(())
     }
 
-    /// The training views' cameras without their names (what mesh extraction and the hidden
-    /// surfels' test render).
-    fn train_camera_poses(&self) -> Vec<crate::core::camera::Camera> {
-        self.targets
-            .iter()
-            .map(|t| self.capture.views[t.view].camera)
-            .collect()
+    /// The training views' cameras, refined, without their names (what mesh extraction and the
+    /// hidden surfels' test render).
+    fn train_camera_poses(&self, state: &TrainState) -> Vec<crate::core::camera::Camera> {
+        self.poses.cameras(&state.poses)
     }
 
-    /// Cameras of the training views (saved with the model; the mesh is extracted from them).
-    fn train_cameras(&self) -> Vec<(String, crate::core::camera::Camera)> {
+    /// Cameras of the training views, refined (saved with the model; the mesh is extracted from
+    /// them).
+    fn train_cameras(&self, state: &TrainState) -> Vec<(String, crate::core::camera::Camera)> {
         self.targets
             .iter()
-            .map(|t| {
-                let view = &self.capture.views[t.view];
-                (view.name.clone(), view.camera)
-            })
+            .zip(self.poses.cameras(&state.poses))
+            .map(|(t, camera)| (self.capture.views[t.view].name.clone(), camera))
             .collect()
     }
 
@@ -877,7 +931,7 @@ impl Run<'_> {
         occlusion.current = true;
         let mut warning = None;
         if remesh {
-            let cameras = self.train_camera_poses();
+            let cameras = self.train_camera_poses(state);
             match mesh_extraction::mesh_from_surfels(
                 &state.surfels,
                 &cameras,
@@ -988,7 +1042,7 @@ impl Run<'_> {
             },
             surfels: state.surfels.clone(),
             envmap: exposure::in_capture_units(&state.envmap, self.radiance_scale)?,
-            train_cameras: self.train_cameras(),
+            train_cameras: self.train_cameras(state),
         };
         WorldUp::from_vector(up.to_array())?;
         model.save(self.model_dir)?;
@@ -1030,6 +1084,7 @@ impl Run<'_> {
 mod tests {
     use super::*;
     use crate::core::config::Iterations;
+    use crate::core::pose::PoseCorrection;
     use crate::pipeline::synth::{synth, Shape, SynthOptions};
 
     #[test]
@@ -1224,6 +1279,11 @@ mod tests {
     fn gridmap_runs_resume_bit_for_bit() {
         let dir = tempfile::tempdir().unwrap();
         let (capture, config) = torus_run(dir.path());
+        let config = TrainConfig {
+            pose_refinement: true,
+            colour_refinement: true,
+            ..config
+        };
         let never = AtomicBool::new(false);
         let whole = dir.path().join("whole");
         train(&capture, &whole, &config, false, &never, &mut |_| {}).unwrap();
@@ -1244,9 +1304,16 @@ mod tests {
         assert_eq!(a.iteration, 60);
         assert_eq!(a.surfels, b.surfels);
         assert_eq!(a.envmap, b.envmap);
-        // The model keeps its training cameras and renders with GridMap, as it was trained.
+        assert_eq!(a.poses, b.poses);
+        assert_eq!(a.colours, b.colours);
+        assert!(a.poses.iter().any(|p| *p != PoseCorrection::IDENTITY));
+        assert!(a.colours.iter().any(|c| *c != [1.0; 3]));
+        // The model keeps its training cameras, refined, and renders with GridMap, as it was
+        // trained.
         let model = Model::load(&whole).unwrap();
         assert_eq!(model.train_cameras.len(), capture.train_views().count());
+        let first = capture.train_views().next().unwrap();
+        assert_eq!(model.train_cameras[0].1, a.poses[0].apply(&first.camera));
         let reconstruction = crate::pipeline::reconstruction::Reconstruction::new(model).unwrap();
         assert!(reconstruction.gridmap().is_some());
     }

@@ -1,6 +1,6 @@
 //! Everything a training run carries from one iteration to the next, and its checkpoint: surfels,
-//! the raw environment cube map, learned polarizer angles, Adam moments and densification
-//! statistics. A checkpoint restores a run bit for bit (randomness is derived from the seed and the
+//! the raw environment cube map, learned polarizer angles, the training views' pose corrections,
+//! Adam moments and densification statistics. A checkpoint restores a run bit for bit (randomness is derived from the seed and the
 //! iteration number, so no generator state is stored).
 
 use std::collections::BTreeMap;
@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 use crate::core::densify::DensifyStats;
 use crate::core::envmap::CubeMap;
 use crate::core::optim::{Adam, AdamConfig, GroupState};
+use crate::core::pose::PoseCorrection;
 use crate::core::surfels::Surfels;
 use crate::formats::checkpoint::{Archive, CheckpointError};
 
@@ -26,6 +27,12 @@ pub struct TrainState {
     pub envmap: CubeMap,
     /// Learned polarizer angle per `polarizer_group`, radians in [0, π).
     pub polarizer_angles: BTreeMap<String, f64>,
+    /// The learned correction of each training view's pose, in the order of the run's targets
+    /// (empty in a checkpoint written before runs refined poses: no correction).
+    pub poses: Vec<PoseCorrection>,
+    /// Each training view's colour: its exposure and white balance over the run's, per channel
+    /// (`train::colour`; empty in a checkpoint written before runs learned them: all 1).
+    pub colours: Vec<[f64; 3]>,
     pub adam: Adam,
     pub densify: DensifyStats,
     /// Wall time spent in earlier sessions of this run.
@@ -80,6 +87,9 @@ impl TrainState {
             archive.put(&format!("surfels.{name}"), values);
         }
         archive.put("envmap", &self.envmap.raw);
+        let poses: Vec<f64> = self.poses.iter().flat_map(|p| p.to_array()).collect();
+        archive.put("poses", &poses);
+        archive.put("colours", self.colours.as_flattened());
         archive.put("densify.grad_sum", &self.densify.grad_sum);
         let seen: Vec<f64> = self.densify.seen.iter().map(|&s| f64::from(s)).collect();
         archive.put("densify.seen", &seen);
@@ -113,6 +123,21 @@ impl TrainState {
         }
         let envmap = CubeMap::from_raw(meta.envmap_size, archive.require(path, "envmap")?.to_vec())
             .map_err(|e| corrupt(e.to_string()))?;
+        let poses = match archive.get("poses") {
+            None => Vec::new(),
+            Some(values) if values.len() % 6 == 0 => values
+                .chunks_exact(6)
+                .map(|v| PoseCorrection::from_array(v.try_into().expect("six values")))
+                .collect(),
+            Some(_) => return Err(corrupt("pose corrections are not whole".to_owned())),
+        };
+        let colours = match archive.get("colours") {
+            None => Vec::new(),
+            Some(values) if values.len() % 3 == 0 => {
+                values.chunks_exact(3).map(|v| [v[0], v[1], v[2]]).collect()
+            }
+            Some(_) => return Err(corrupt("view colours are not whole".to_owned())),
+        };
         let densify = DensifyStats {
             grad_sum: archive.require(path, "densify.grad_sum")?.to_vec(),
             seen: archive
@@ -137,6 +162,8 @@ impl TrainState {
             surfels,
             envmap,
             polarizer_angles: meta.polarizer_angles,
+            poses,
+            colours,
             adam,
             densify,
             elapsed_seconds: meta.elapsed_seconds,

@@ -29,28 +29,39 @@ const MIN_COVERAGE: f64 = 0.5;
 /// how much brighter the fitted `target` is than the prediction `pred` (both interleaved RGB,
 /// α-premultiplied); `None` for a channel with no prediction to compare.
 pub fn ratio(pred: &[f64], target: &[f64], alpha: &[f64], mask: &[f32]) -> [Option<f64>; 3] {
-    let sums = (pred.par_chunks(3), target.par_chunks(3), alpha, mask)
+    // Sums over fixed chunks of pixels, added in order: the same bits whatever the thread count
+    // (a resumed run must follow the uninterrupted one bit for bit).
+    const CHUNK_PIXELS: usize = 4096;
+    let chunks: Vec<[f64; 6]> = (
+        pred.par_chunks(3 * CHUNK_PIXELS),
+        target.par_chunks(3 * CHUNK_PIXELS),
+        alpha.par_chunks(CHUNK_PIXELS),
+        mask.par_chunks(CHUNK_PIXELS),
+    )
         .into_par_iter()
-        .filter(|(_, _, &a, &m)| a >= MIN_COVERAGE && f64::from(m) >= MIN_COVERAGE)
-        .map(|(p, t, _, _)| {
+        .map(|(pred, target, alpha, mask)| {
             let mut s = [0.0; 6];
-            for c in 0..3 {
-                if p[c].is_finite() && t[c].is_finite() {
-                    s[c] += t[c] * p[c];
-                    s[3 + c] += p[c] * p[c];
+            let pixels = pred.chunks_exact(3).zip(target.chunks_exact(3));
+            for ((p, t), (&a, &m)) in pixels.zip(alpha.iter().zip(mask)) {
+                if a < MIN_COVERAGE || f64::from(m) < MIN_COVERAGE {
+                    continue;
+                }
+                for c in 0..3 {
+                    if p[c].is_finite() && t[c].is_finite() {
+                        s[c] += t[c] * p[c];
+                        s[3 + c] += p[c] * p[c];
+                    }
                 }
             }
             s
         })
-        .reduce(
-            || [0.0; 6],
-            |mut a, b| {
-                for (x, y) in a.iter_mut().zip(b) {
-                    *x += y;
-                }
-                a
-            },
-        );
+        .collect();
+    let mut sums = [0.0; 6];
+    for chunk in &chunks {
+        for (sum, v) in sums.iter_mut().zip(chunk) {
+            *sum += v;
+        }
+    }
     std::array::from_fn(|c| (sums[3 + c] > 1e-12).then(|| sums[c] / sums[3 + c]))
 }
 

@@ -10,10 +10,10 @@
 //! pixel rays also follow the camera, and are not differentiated (second order for corrections of
 //! a fraction of a degree).
 
-use glam::{DMat3, DMat4, DVec3};
+use glam::{DMat3, DMat4, DQuat, DVec3};
 use serde::{Deserialize, Serialize};
 
-use crate::core::camera::{Camera, CameraConvention, Intrinsics};
+use crate::core::camera::{Camera, CameraConvention};
 
 /// A rigid correction of a camera: rotation vector `ω` (radians) and translation `τ` (scene
 /// units), both in the camera's OpenCV axes (x right, y down, z forward).
@@ -70,36 +70,13 @@ impl PoseCorrection {
             rt.z_axis.extend(0.0),
             origin.extend(1.0),
         );
-        let intrinsics = Intrinsics {
-            width: camera.width,
-            height: camera.height,
-            fx: camera.fx,
-            fy: camera.fy,
-            cx: camera.cx,
-            cy: camera.cy,
-        };
-        Camera::new(intrinsics, c2w, CameraConvention::OpenCV)
+        Camera::new(camera.intrinsics(), c2w, CameraConvention::OpenCV)
     }
 }
 
-/// `exp([ω]×)`: the rotation by `|ω|` radians about `ω` (Rodrigues).
+/// `exp([ω]×)`: the rotation by `|ω|` radians about `ω`.
 pub fn rotation_matrix(omega: DVec3) -> DMat3 {
-    let angle = omega.length();
-    if angle < 1e-12 {
-        // First order: I + [ω]×.
-        return DMat3::IDENTITY + skew(omega);
-    }
-    let k = skew(omega / angle);
-    DMat3::IDENTITY + angle.sin() * k + (1.0 - angle.cos()) * (k * k)
-}
-
-/// The cross-product matrix `[v]×` (`[v]× x = v × x`).
-fn skew(v: DVec3) -> DMat3 {
-    DMat3::from_cols(
-        DVec3::new(0.0, v.z, -v.y),
-        DVec3::new(-v.z, 0.0, v.x),
-        DVec3::new(v.y, -v.x, 0.0),
-    )
+    DMat3::from_quat(DQuat::from_scaled_axis(omega))
 }
 
 /// The error of `camera`'s pose against `truth`'s: the angle of the relative rotation (degrees)

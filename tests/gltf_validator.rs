@@ -1,8 +1,8 @@
 //! `phygap export` end to end on a small model (a sphere of surfels under a coloured sky): the
 //! folder gains `model.glb`, `envmap.hdr` and `envmap.png`; the GLB holds the mesh with the
-//! surfels' materials, the HDR the model's lat-long map; and the GLB passes the Khronos glTF
-//! validator (npm package `gltf-validator`, pinned in `tests/gltf-validator/`) with no error and no
-//! warning.
+//! surfels' materials (baked into textures by default, per vertex on request), the HDR the model's
+//! lat-long map; and both forms of the GLB pass the Khronos glTF validator (npm package
+//! `gltf-validator`, pinned in `tests/gltf-validator/`) with no error and no warning.
 //!
 //! The validator needs Node.js and `npm ci --prefix tests/gltf-validator` (`.ci/run` does it). Without
 //! them the validator step prints a notice and the test ends after the Rust-side checks, except
@@ -13,11 +13,12 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use glam::DVec3;
-use phygap::core::config::{BackendChoice, TrainConfig};
+use phygap::core::config::{BackendChoice, MeshMaterials, TrainConfig};
 use phygap::core::envmap::{texel_dir, CubeMap, NUM_FACES};
 use phygap::core::mesh::cameras_around;
 use phygap::formats::image_io::read_image;
 use phygap::io::model::{Model, ModelInfo};
+use phygap::pipeline::export::ExportOptions;
 use phygap::testing::{running_in_ci, sphere_surfels};
 use serde_json::Value;
 
@@ -141,19 +142,122 @@ fn export_writes_a_glb_that_the_khronos_validator_accepts() {
     let (png, _) = read_image(&out.join("envmap.png")).unwrap();
     assert_eq!((png.width, png.height), (512, 256));
 
-    // The GLB: its materials are the surfels' (uniform here), on the extracted mesh.
-    let glb = std::fs::read(out.join("model.glb")).unwrap();
+    // The GLB (textured, the default): its materials are the surfels' (uniform here), baked on
+    // the extracted mesh's atlas.
+    let mesh = phygap::core::mesh::TriangleMesh::read_ply(&out.join("mesh.ply")).unwrap();
+    let (json, glb_bytes) = read_glb(&out.join("model.glb"));
+    let attributes = &json["meshes"][0]["primitives"][0]["attributes"];
+    for name in ["POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "_IOR"] {
+        assert!(attributes.get(name).is_some(), "{name} in {attributes}");
+    }
+    let material = &json["materials"][0];
+    for texture in [
+        &material["pbrMetallicRoughness"]["baseColorTexture"],
+        &material["pbrMetallicRoughness"]["metallicRoughnessTexture"],
+        &material["normalTexture"],
+    ] {
+        assert!(texture["index"].is_u64(), "{material}");
+    }
+    // The base colour texture is the albedo (0.6, 0.4, 0.2) in sRGB wherever a chart lies.
+    let base = image_of(&json, &glb_bytes, 0);
+    let srgb = [0.6f32, 0.4, 0.2]
+        .map(|c| (phygap::formats::image_io::linear_to_srgb(c) * 255.0).round() as i32);
+    let matching = base
+        .pixels()
+        .filter(|p| (0..3).all(|c| (i32::from(p[c]) - srgb[c]).abs() <= 2))
+        .count();
+    assert!(
+        matching > base.pixels().len() / 3,
+        "{matching} of {} texels hold the albedo {srgb:?}",
+        base.pixels().len()
+    );
+    check_geometry(&json, &mesh, true);
+    println!(
+        "model.glb (textures): {} bytes, {}² textures",
+        glb_bytes.len(),
+        base.width()
+    );
+
+    // The vertex form, on request.
+    let vertex_out = dir.path().join("export-vertex");
+    let options = ExportOptions {
+        mesh_materials: Some(MeshMaterials::Vertex),
+        ..ExportOptions::default()
+    };
+    let started = std::time::Instant::now();
+    phygap::pipeline::export::export_with(&model_dir, &vertex_out, options).unwrap();
+    println!("export (vertex): {:.1} s", started.elapsed().as_secs_f64());
+    let (vertex_json, vertex_bytes) = read_glb(&vertex_out.join("model.glb"));
+    let attributes = &vertex_json["meshes"][0]["primitives"][0]["attributes"];
+    assert!(attributes.get("COLOR_0").is_some() && attributes.get("TANGENT").is_none());
+    check_geometry(&vertex_json, &mesh, false);
+    println!("model.glb (vertex): {} bytes", vertex_bytes.len());
+
+    let Some(script) = validator_script() else {
+        return;
+    };
+    for (form, path) in [
+        ("textures", out.join("model.glb")),
+        ("vertex", vertex_out.join("model.glb")),
+    ] {
+        let report = validate(&script, &path);
+        let issues = &report["issues"];
+        println!(
+            "glTF validator {} ({form}): {} errors, {} warnings, {} infos, {} hints; {}",
+            report["validatorVersion"],
+            issues["numErrors"],
+            issues["numWarnings"],
+            issues["numInfos"],
+            issues["numHints"],
+            report["info"]
+        );
+        for message in issues["messages"].as_array().into_iter().flatten() {
+            println!("  {message}");
+        }
+        assert_eq!(issues["numErrors"], 0, "{form}: {issues}");
+        assert_eq!(issues["numWarnings"], 0, "{form}: {issues}");
+        let used = &report["info"]["extensionsUsed"];
+        assert!(
+            used.as_array()
+                .is_some_and(|e| e.iter().any(|e| e == "KHR_materials_ior")),
+            "{used}"
+        );
+    }
+}
+
+/// A GLB's JSON document and its bytes.
+fn read_glb(path: &Path) -> (Value, Vec<u8>) {
+    let glb = std::fs::read(path).unwrap();
     assert_eq!(&glb[..4], b"glTF");
     let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
     let json: Value = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
+    (json, glb)
+}
+
+/// Image `index` of a GLB, decoded.
+fn image_of(json: &Value, glb: &[u8], index: usize) -> image::RgbImage {
+    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let bin = &glb[20 + json_len + 8..];
+    let view = &json["bufferViews"][json["images"][index]["bufferView"].as_u64().unwrap() as usize];
+    let offset = view["byteOffset"].as_u64().unwrap() as usize;
+    let length = view["byteLength"].as_u64().unwrap() as usize;
+    image::load_from_memory(&bin[offset..offset + length])
+        .unwrap()
+        .to_rgb8()
+}
+
+/// The glTF's mesh is the dense one simplified: a smooth sphere to a few thousand triangles, far
+/// below the default budget, closed like the dense one (`seams`: the textured form's atlas copies
+/// vertices along its seams, so the count is checked on distinct positions).
+fn check_geometry(json: &Value, mesh: &phygap::core::mesh::TriangleMesh, seams: bool) {
     let ior = json["materials"][0]["extensions"]["KHR_materials_ior"]["ior"]
         .as_f64()
         .unwrap();
     assert!((ior - 1.5).abs() < 1e-6, "{ior}");
-    let mesh = phygap::core::mesh::TriangleMesh::read_ply(&out.join("mesh.ply")).unwrap();
-    // The glTF's mesh is the dense one simplified: a smooth sphere to a few thousand triangles,
-    // far below the default budget, closed like the dense one.
-    let glb_vertices = json["accessors"][1]["count"].as_u64().unwrap() as usize;
+    let position = json["meshes"][0]["primitives"][0]["attributes"]["POSITION"]
+        .as_u64()
+        .unwrap() as usize;
+    let glb_vertices = json["accessors"][position]["count"].as_u64().unwrap() as usize;
     let glb_indices = json["accessors"][0]["count"].as_u64().unwrap() as usize;
     assert!(
         glb_vertices > 100 && glb_vertices < mesh.vertices.len() / 10,
@@ -161,42 +265,15 @@ fn export_writes_a_glb_that_the_khronos_validator_accepts() {
         mesh.vertices.len()
     );
     assert!(glb_indices <= 3 * phygap::core::config::DEFAULT_MESH_TRIANGLES as usize);
-    // Closed (Euler: V − E + F = 2 with E = 3F/2 for a sphere): F = 2V − 4.
-    assert_eq!(glb_indices / 3, 2 * glb_vertices - 4);
-    let radius = json["accessors"][1]["max"][0].as_f64().unwrap();
+    let radius = json["accessors"][position]["max"][0].as_f64().unwrap();
     assert!(
         (radius - 1.0).abs() < 0.05,
         "the unit sphere's extent: {radius}"
     );
-    println!(
-        "model.glb: {} bytes, {glb_vertices} vertices (mesh.ply: {}), IoR {ior}",
-        glb.len(),
-        mesh.vertices.len()
-    );
-
-    let Some(script) = validator_script() else {
-        return;
-    };
-    let report = validate(&script, &out.join("model.glb"));
-    let issues = &report["issues"];
-    println!(
-        "glTF validator {}: {} errors, {} warnings, {} infos, {} hints; {}",
-        report["validatorVersion"],
-        issues["numErrors"],
-        issues["numWarnings"],
-        issues["numInfos"],
-        issues["numHints"],
-        report["info"]
-    );
-    for message in issues["messages"].as_array().into_iter().flatten() {
-        println!("  {message}");
+    if seams {
+        assert!(glb_indices / 3 < 2 * glb_vertices - 4, "seams add vertices");
+    } else {
+        // Closed (Euler: V − E + F = 2 with E = 3F/2 for a sphere): F = 2V − 4.
+        assert_eq!(glb_indices / 3, 2 * glb_vertices - 4);
     }
-    assert_eq!(issues["numErrors"], 0, "{issues}");
-    assert_eq!(issues["numWarnings"], 0, "{issues}");
-    let used = &report["info"]["extensionsUsed"];
-    assert!(
-        used.as_array()
-            .is_some_and(|e| e.iter().any(|e| e == "KHR_materials_ior")),
-        "{used}"
-    );
 }

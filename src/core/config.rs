@@ -86,6 +86,19 @@ pub const MAX_MIP_LEVELS_PER_SIZE: u8 = 4;
 /// which a web viewer or a game engine loads at once. Smooth objects end well below it.
 pub const DEFAULT_MESH_TRIANGLES: u32 = 100_000;
 
+/// How `model.glb` carries the learned materials.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[cfg_attr(feature = "openapi", derive(utoipa::ToSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum MeshMaterials {
+    /// Baked into textures on a UV atlas: base colour, metallic-roughness and a tangent-space
+    /// normal map.
+    #[default]
+    Textures,
+    /// Per vertex: albedo as `COLOR_0`, roughness through a ramp texture.
+    Vertex,
+}
+
 /// Every setting of a training run; also the training flags of the command line (each field a
 /// `--long-name` flag with the default as its default), so the CLI, the config file and the
 /// service's job `config` are one type.
@@ -325,6 +338,11 @@ pub struct TrainConfig {
     #[arg(long, default_value_t = TrainConfig::default().mesh_triangles)]
     pub mesh_triangles: u32,
 
+    /// How `model.glb` carries the materials: `textures` (a UV atlas with baked base colour,
+    /// metallic-roughness and normal maps) or `vertex` (per-vertex colour and roughness).
+    #[arg(long, value_enum, default_value_t = TrainConfig::default().mesh_materials)]
+    pub mesh_materials: MeshMaterials,
+
     /// Whether the export fails when no mesh can be extracted (the TSDF of the model's depth
     /// has no zero crossing, as after a run too short to form a surface). Off: the export goes
     /// on without `mesh.ply` and `model.glb` and says why in `metrics.json`'s `warnings` (a
@@ -398,6 +416,7 @@ impl Default for TrainConfig {
             gridmap_interval: 300,
             opacity_recovery_steps: 300,
             mesh_triangles: DEFAULT_MESH_TRIANGLES,
+            mesh_materials: MeshMaterials::Textures,
             require_mesh: false,
         }
     }

@@ -18,10 +18,19 @@ pub struct ExportArgs {
     /// (100,000 unless trained with another). mesh.ply stays dense.
     #[arg(long)]
     pub mesh_triangles: Option<u32>,
+    /// How model.glb carries the materials: `textures` (UV atlas with baked base colour,
+    /// metallic-roughness and normal maps) or `vertex` (per-vertex colour and roughness);
+    /// default: the model's config's `mesh_materials` (textures unless trained with another).
+    #[arg(long, value_enum)]
+    pub mesh_materials: Option<phygap::core::config::MeshMaterials>,
 }
 
 pub fn run(args: &ExportArgs) -> Result<()> {
-    let files = phygap::pipeline::export::export_with(&args.model, &args.out, args.mesh_triangles)?;
+    let options = phygap::pipeline::export::ExportOptions {
+        mesh_triangles: args.mesh_triangles,
+        mesh_materials: args.mesh_materials,
+    };
+    let files = phygap::pipeline::export::export_with(&args.model, &args.out, options)?;
     for f in &files {
         println!("{}", f.display());
     }

@@ -5,7 +5,8 @@
 //! parser ([`crate::formats::ply`]), `tsdf` fuses depth maps into a truncated signed distance grid,
 //! `marching_cubes` turns that grid into a welded mesh, `holes` closes the holes left where no
 //! camera looked, `smooth` filters its normals (bilateral) and fits the surface to them,
-//! `simplify` reduces it by quadric-error edge collapses, and `chamfer` measures the distance
+//! `simplify` reduces it by quadric-error edge collapses, `uv_atlas` cuts it into charts laid out
+//! in a texture (for baking materials), and `chamfer` measures the distance
 //! (and the normal error) from one mesh to another. Long stages run
 //! inside `tracing` spans and use rayon over independent voxel slabs or sample chunks.
 
@@ -23,6 +24,7 @@ mod ply;
 mod simplify;
 mod smooth;
 mod tsdf;
+pub mod uv_atlas;
 
 pub use chamfer::{
     chamfer_l1, chamfer_l1_with, normal_mae_deg, normal_mae_deg_with, sample_surface,
@@ -39,6 +41,7 @@ pub use tsdf::{
     mesh_from_grid, rendered_depth_views, sphere_depth_maps, DepthPixels, DepthView, GridLayout,
     TsdfParams, MARGIN_VOXELS, SURFACE_SPREAD_FOOTPRINTS,
 };
+pub use uv_atlas::{AtlasParams, UvAtlas};
 
 /// Errors of mesh input/output, extraction and metrics.
 #[derive(Debug, Error)]

@@ -4,8 +4,11 @@
 //! Also the one IoR that stands for a whole surface (the area-weighted median), since glTF's
 //! `KHR_materials_ior` holds one value per material.
 //!
-//! Used by the glTF export ([`super::gltf`]) and the service's material mesh (`phygap-api`).
-//! Threading: the neighbour queries run in parallel over the points (rayon).
+//! The same neighbours give the surface's normal where a texture needs it ([`SurfelSampler`]: the
+//! surfels' normals, turned to one side and averaged).
+//!
+//! Used by the glTF export ([`super::gltf`], [`super::bake`]) and the service's material mesh
+//! (`phygap-api`). Threading: the neighbour queries run in parallel over the points (rayon).
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -50,55 +53,112 @@ pub fn transfer_materials(
     surfels: &[Surfel],
 ) -> Result<Vec<VertexMaterial>, MaterialError> {
     let _span = tracing::info_span!("transfer_materials", points = points.len()).entered();
-    let opaque: Vec<&Surfel> = surfels.iter().filter(|s| s.opacity >= OPAQUE).collect();
-    let sources: Vec<&Surfel> = if opaque.is_empty() {
-        surfels.iter().collect()
-    } else {
-        opaque
-    };
-    if sources.is_empty() {
-        return Err(MaterialError::NoSurfels);
-    }
-    let centres: Vec<DVec3> = sources.iter().map(|s| s.position).collect();
-    let tree = KdTree::build(&centres);
-    Ok(points
-        .par_iter()
-        .map(|&p| {
-            let nearest = tree.k_nearest(p, NEIGHBOURS);
-            // A Gaussian falloff whose width is the farthest neighbour's distance: the nearest
-            // surfels dominate, and a point between two materials blends them smoothly.
-            let width2 = nearest.last().map_or(1.0, |n| n.1).max(1e-12);
-            let mut sum = VertexMaterial {
-                albedo: DVec3::ZERO,
-                roughness: 0.0,
-                ior: 0.0,
-            };
-            let mut total = 0.0;
-            for &(index, distance2) in &nearest {
-                let surfel = sources[index];
-                let weight = surfel.opacity.max(1e-3) * (-distance2 / (2.0 * width2)).exp();
-                sum.albedo += weight * surfel.albedo;
-                sum.roughness += weight * surfel.roughness;
-                sum.ior += weight * surfel.ior;
-                total += weight;
-            }
-            if total > 0.0 && total.is_finite() {
-                VertexMaterial {
-                    albedo: sum.albedo / total,
-                    roughness: sum.roughness / total,
-                    ior: sum.ior / total,
-                }
-            } else {
-                // A point with no finite neighbour (NaN position): the nearest source's values.
-                let s = sources[nearest.first().map_or(0, |n| n.0)];
-                VertexMaterial {
-                    albedo: s.albedo,
-                    roughness: s.roughness,
-                    ior: s.ior,
-                }
-            }
-        })
+    let sampler = SurfelSampler::new(surfels)?;
+    Ok(sampler
+        .sample(points, None)
+        .into_iter()
+        .map(|(material, _)| material)
         .collect())
+}
+
+/// The surfels that carry the surface's material, indexed for nearest-neighbour queries: the
+/// opaque ones (all of them when none is).
+pub struct SurfelSampler<'a> {
+    sources: Vec<&'a Surfel>,
+    tree: KdTree,
+}
+
+impl<'a> SurfelSampler<'a> {
+    /// The sampler of `surfels`; an error when there are none.
+    pub fn new(surfels: &'a [Surfel]) -> Result<Self, MaterialError> {
+        let opaque: Vec<&Surfel> = surfels.iter().filter(|s| s.opacity >= OPAQUE).collect();
+        let sources: Vec<&Surfel> = if opaque.is_empty() {
+            surfels.iter().collect()
+        } else {
+            opaque
+        };
+        if sources.is_empty() {
+            return Err(MaterialError::NoSurfels);
+        }
+        let centres: Vec<DVec3> = sources.iter().map(|s| s.position).collect();
+        let tree = KdTree::build(&centres);
+        Ok(SurfelSampler { sources, tree })
+    }
+
+    /// Surfels that carry the material.
+    pub fn len(&self) -> usize {
+        self.sources.len()
+    }
+
+    /// Whether there are none (never: [`SurfelSampler::new`] refuses that).
+    pub fn is_empty(&self) -> bool {
+        self.sources.is_empty()
+    }
+
+    /// The material and the surface normal at each of `points`, the same weighted mean of its
+    /// [`NEIGHBOURS`] nearest surfels for both. A surfel's normal (its rotation's third column)
+    /// has no side, so each is turned toward the point's `reference_normals` entry before the mean
+    /// (the reference itself where the mean vanishes); without references the normals returned
+    /// are the references' stand-in, +Z, and only the materials mean anything.
+    pub fn sample(
+        &self,
+        points: &[DVec3],
+        reference_normals: Option<&[DVec3]>,
+    ) -> Vec<(VertexMaterial, DVec3)> {
+        points
+            .par_iter()
+            .enumerate()
+            .map(|(i, &p)| {
+                let reference = reference_normals.map_or(DVec3::Z, |r| r[i]);
+                let nearest = self.tree.k_nearest(p, NEIGHBOURS);
+                // A Gaussian falloff whose width is the farthest neighbour's distance: the nearest
+                // surfels dominate, and a point between two materials blends them smoothly.
+                let width2 = nearest.last().map_or(1.0, |n| n.1).max(1e-12);
+                let mut sum = VertexMaterial {
+                    albedo: DVec3::ZERO,
+                    roughness: 0.0,
+                    ior: 0.0,
+                };
+                let mut normal = DVec3::ZERO;
+                let mut total = 0.0;
+                for &(index, distance2) in &nearest {
+                    let surfel = self.sources[index];
+                    let weight = surfel.opacity.max(1e-3) * (-distance2 / (2.0 * width2)).exp();
+                    sum.albedo += weight * surfel.albedo;
+                    sum.roughness += weight * surfel.roughness;
+                    sum.ior += weight * surfel.ior;
+                    let axis = surfel.rotation.col(2);
+                    normal += weight * axis * axis.dot(reference).signum();
+                    total += weight;
+                }
+                let normal = if reference_normals.is_some() {
+                    normal
+                        .try_normalize()
+                        .filter(|n| n.is_finite())
+                        .unwrap_or(reference)
+                } else {
+                    DVec3::Z
+                };
+                if total > 0.0 && total.is_finite() {
+                    let material = VertexMaterial {
+                        albedo: sum.albedo / total,
+                        roughness: sum.roughness / total,
+                        ior: sum.ior / total,
+                    };
+                    (material, normal)
+                } else {
+                    // A point with no finite neighbour (NaN position): the nearest source's values.
+                    let s = self.sources[nearest.first().map_or(0, |n| n.0)];
+                    let material = VertexMaterial {
+                        albedo: s.albedo,
+                        roughness: s.roughness,
+                        ior: s.ior,
+                    };
+                    (material, reference)
+                }
+            })
+            .collect()
+    }
 }
 
 /// The area-weighted median of the per-vertex IoR: each vertex weighs a third of the area of the

@@ -1,8 +1,9 @@
 //! Exporting a trained model's deliverables into a folder: surfels, the environment map (lat-long
 //! EXR, Radiance HDR and a tone-mapped PNG preview, [`envmap_files`]), the extracted mesh, closed
 //! and smoothed (`mesh.ply`, dense), the mesh simplified to the model's triangle budget with its
-//! learned materials as glTF 2.0 binary (`model.glb`, [`gltf`], materials sampled from the surfels
-//! by [`materials`]), configuration, metrics, and
+//! learned materials as glTF 2.0 binary (`model.glb`, [`gltf`]: materials sampled from the surfels
+//! by [`materials`], baked into textures on a UV atlas by [`bake`], or per vertex), configuration,
+//! metrics, and
 //! S0/normal/albedo/DoLP/AoLP renders of the capture's test views. This is what the service
 //! publishes as a job's artifacts and what `phygap export` writes.
 
@@ -11,21 +12,23 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 use thiserror::Error;
 
+use crate::core::config::MeshMaterials;
 use crate::core::envmap::EnvMapError;
-use crate::core::mesh::{MeshError, TriangleMesh};
+use crate::core::mesh::{AtlasParams, MeshError, TriangleMesh, UvAtlas};
 use crate::formats::image_io::{self, ImageError};
 use crate::io::capture::{self, CaptureError};
 use crate::io::model::{Model, ModelError, LATLONG_HEIGHT, TEST_CAMERAS_FILE};
 use crate::pipeline::mesh_extraction::{self, MeshingError, DEFAULT_MESH_RESOLUTION};
 use crate::pipeline::reconstruction::{Reconstruction, ReconstructionError};
 
+pub mod bake;
 pub mod envmap_files;
 pub mod gltf;
 pub mod material_mesh;
 pub mod materials;
 
 pub use envmap_files::{ENVMAP_HDR_FILE, ENVMAP_PNG_FILE};
-pub use gltf::{write_glb, GlbSummary, GltfError};
+pub use gltf::{write_glb, write_textured_glb, GlbSummary, GltfError, TexturedMesh};
 pub use materials::{transfer_materials, MaterialError, VertexMaterial};
 
 #[derive(Debug, Error)]
@@ -117,43 +120,165 @@ pub fn warnings(out_dir: &Path) -> Vec<String> {
 /// Kinds rendered for every test camera (DoLP and AoLP: the polarization the model predicts).
 const RENDERED: [&str; 5] = ["s0", "normal", "albedo", "dolp", "aolp"];
 
-/// Writes `mesh` (extracted from `model`) with the model's materials on its vertices as a glTF
-/// binary at `path`.
+/// Texels across the diagonal of the object's bounding box that the textures aim at at most.
+pub const TEXELS_ACROSS: f64 = 1024.0;
+
+/// Texels along the mean spacing of the surfels that carry the materials: two, as many as the
+/// sampling theorem asks of the detail the surfels can hold; more would only enlarge the file.
+pub const TEXELS_PER_SURFEL_SPACING: f64 = 2.0;
+
+/// Smallest and largest side of the baked textures (texels).
+pub const TEXTURE_SIZES: (u32, u32) = (256, 2048);
+
+/// The side of a texel (scene units) that the textures of `mesh`, whose materials come from
+/// `surfels` surfels, aim at: the larger (the coarser) of [`TEXELS_ACROSS`] texels along its box's
+/// diagonal and [`TEXELS_PER_SURFEL_SPACING`] texels along the surfels' mean spacing
+/// (√(area / surfels)). `None` for a mesh without area.
+pub fn target_texel(mesh: &TriangleMesh, surfels: usize) -> Option<f64> {
+    let (min, max) = mesh.bounds()?;
+    let area = mesh.area();
+    let object_texel = (max - min).length() / TEXELS_ACROSS;
+    let surfel_texel = (area / surfels.max(1) as f64).sqrt() / TEXELS_PER_SURFEL_SPACING;
+    let texel = object_texel.max(surfel_texel);
+    (texel > 0.0 && texel.is_finite()).then_some(texel)
+}
+
+/// The atlas of `mesh` on the smallest power-of-two texture in [`TEXTURE_SIZES`] whose packed
+/// charts reach the density of [`target_texel`] (the largest size when none does): from the size
+/// the surface would need with nothing lost to packing, doubled while the charts come out coarser.
+/// Gutters of 4 texels, 8 at 2048.
+pub fn sized_atlas(mesh: &TriangleMesh, surfels: usize) -> UvAtlas {
+    let (lo, hi) = TEXTURE_SIZES;
+    let texel = target_texel(mesh, surfels);
+    let mut size = lo;
+    if let Some(texel) = texel {
+        while f64::from(size) < mesh.area().sqrt() / texel && size < hi {
+            size *= 2;
+        }
+    }
+    loop {
+        let atlas = UvAtlas::build(
+            mesh,
+            AtlasParams {
+                size,
+                gutter: (size / 256).max(4),
+                ..AtlasParams::default()
+            },
+        );
+        let dense_enough = texel.is_none_or(|t| atlas.texels_per_unit * t >= 1.0);
+        if dense_enough || size >= hi {
+            return atlas;
+        }
+        size *= 2;
+    }
+}
+
+/// Writes `mesh` (extracted from `model`) with the model's materials as a glTF binary at `path`,
+/// in the form `form` chooses ([`gltf`]).
 pub fn write_model_glb(
     model: &Model,
     mesh: &TriangleMesh,
     path: &Path,
+    form: MeshMaterials,
 ) -> Result<GlbSummary, ExportError> {
-    let points: Vec<DVec3> = mesh
-        .vertices
-        .iter()
-        .map(|v| DVec3::from_array(*v))
-        .collect();
-    let vertex_materials =
-        materials::transfer_materials(&points, &materials::surfel_list(&model.surfels))?;
-    let summary = gltf::write_glb(path, mesh, &vertex_materials, model.world_up()?)?;
+    let _span = tracing::info_span!("write_model_glb", form = ?form).entered();
+    let surfels = materials::surfel_list(&model.surfels);
+    let sampler = materials::SurfelSampler::new(&surfels)?;
+    let up = model.world_up()?;
+    let summary = match form {
+        MeshMaterials::Vertex => {
+            let points: Vec<DVec3> = mesh
+                .vertices
+                .iter()
+                .map(|v| DVec3::from_array(*v))
+                .collect();
+            let vertex_materials: Vec<VertexMaterial> = sampler
+                .sample(&points, None)
+                .into_iter()
+                .map(|(m, _)| m)
+                .collect();
+            gltf::write_glb(path, mesh, &vertex_materials, up)?
+        }
+        MeshMaterials::Textures => {
+            let atlas = sized_atlas(mesh, sampler.len());
+            let size = atlas.size;
+            let gutter = (size / 256).max(4);
+            let tangents = atlas.tangents();
+            let maps = bake::bake(
+                &atlas,
+                &tangents,
+                bake::BakeParams { dilate: gutter },
+                |points| {
+                    let positions: Vec<DVec3> = points.iter().map(|p| p.position).collect();
+                    let normals: Vec<DVec3> = points.iter().map(|p| p.normal).collect();
+                    sampler
+                        .sample(&positions, Some(&normals))
+                        .into_iter()
+                        .map(|(material, normal)| bake::SurfaceSample { material, normal })
+                        .collect()
+                },
+            );
+            let points: Vec<DVec3> = mesh
+                .vertices
+                .iter()
+                .map(|v| DVec3::from_array(*v))
+                .collect();
+            let at_vertices = sampler.sample(&points, None);
+            let vertex_materials: Vec<VertexMaterial> = atlas
+                .source_vertex
+                .iter()
+                .map(|&v| at_vertices[v as usize].0)
+                .collect();
+            tracing::info!(
+                charts = atlas.charts,
+                texture = size,
+                covered = maps.covered,
+                "materials baked"
+            );
+            gltf::write_textured_glb(
+                path,
+                &TexturedMesh {
+                    atlas: &atlas,
+                    tangents: &tangents,
+                    vertex_materials: &vertex_materials,
+                    maps: &maps,
+                },
+                up,
+            )?
+        }
+    };
     tracing::info!(
         vertices = summary.vertices,
         triangles = summary.triangles,
         ior = summary.ior,
         bytes = summary.bytes,
+        texture = summary.texture_size,
         "glTF written"
     );
     Ok(summary)
 }
 
 /// Writes the deliverables of `model_dir` into `out_dir` (created if needed), the glTF's mesh
-/// simplified to the model's `mesh_triangles`; returns the files.
+/// simplified to the model's `mesh_triangles`, its materials in the model's `mesh_materials`
+/// form; returns the files.
 pub fn export(model_dir: &Path, out_dir: &Path) -> Result<Vec<PathBuf>, ExportError> {
-    export_with(model_dir, out_dir, None)
+    export_with(model_dir, out_dir, ExportOptions::default())
 }
 
-/// [`export`] with the glTF's triangle budget given (`Some(0)`: the dense mesh), instead of the
-/// model's config's `mesh_triangles`.
+/// What an export may choose instead of the model's config.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ExportOptions {
+    /// The glTF's triangle budget (`Some(0)`: the dense mesh) instead of `mesh_triangles`.
+    pub mesh_triangles: Option<u32>,
+    /// The glTF's form of the materials instead of `mesh_materials`.
+    pub mesh_materials: Option<MeshMaterials>,
+}
+
+/// [`export`] with [`ExportOptions`].
 pub fn export_with(
     model_dir: &Path,
     out_dir: &Path,
-    mesh_triangles: Option<u32>,
+    options: ExportOptions,
 ) -> Result<Vec<PathBuf>, ExportError> {
     let _span = tracing::info_span!("export", model = %model_dir.display()).entered();
     let io = |path: &Path| {
@@ -191,12 +316,17 @@ pub fn export_with(
         mesh_extraction::write_mesh(&deliverable.mesh, &mesh_path)?;
         written.push(mesh_path);
         let glb_path = out_dir.join(GLB_FILE);
-        let budget = mesh_triangles.unwrap_or(model.config.mesh_triangles);
+        let budget = options
+            .mesh_triangles
+            .unwrap_or(model.config.mesh_triangles);
+        let form = options
+            .mesh_materials
+            .unwrap_or(model.config.mesh_materials);
         if budget == 0 {
-            write_model_glb(&model, &deliverable.mesh, &glb_path)?;
+            write_model_glb(&model, &deliverable.mesh, &glb_path, form)?;
         } else {
             let (light, _) = mesh_extraction::simplify_deliverable(&deliverable, budget as usize);
-            write_model_glb(&model, &light, &glb_path)?;
+            write_model_glb(&model, &light, &glb_path, form)?;
         }
         written.push(glb_path);
     }
@@ -219,4 +349,43 @@ pub fn export_with(
         )?);
     }
     Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_texture_reaches_the_density_of_the_surfels_or_of_the_object() {
+        let sphere = TriangleMesh::icosphere(DVec3::ZERO, 1.0, 4);
+        let area = sphere.area();
+        // Few surfels: two texels along their spacing.
+        let texel = target_texel(&sphere, 5_000).unwrap();
+        assert!((texel - (area / 5_000.0).sqrt() / 2.0).abs() < 1e-12);
+        // Many: 1024 texels along the box's diagonal (2√3 for the unit sphere).
+        let texel = target_texel(&sphere, 10_000_000).unwrap();
+        assert!((texel - 12f64.sqrt() / 1024.0).abs() < 1e-9, "{texel}");
+        assert_eq!(target_texel(&TriangleMesh::default(), 100), None);
+        let mut sizes = Vec::new();
+        for surfels in [2_000, 20_000, 200_000, 10_000_000] {
+            let atlas = sized_atlas(&sphere, surfels);
+            let texel = target_texel(&sphere, surfels).unwrap();
+            // Dense enough, and the next smaller texture would not be (or it is the smallest).
+            assert!(atlas.texels_per_unit * texel >= 1.0 || atlas.size == 2048);
+            if atlas.size > 256 {
+                let smaller = UvAtlas::build(
+                    &sphere,
+                    AtlasParams {
+                        size: atlas.size / 2,
+                        gutter: (atlas.size / 512).max(4),
+                        ..AtlasParams::default()
+                    },
+                );
+                assert!(smaller.texels_per_unit * texel < 1.0, "{surfels} surfels");
+            }
+            sizes.push(atlas.size);
+        }
+        assert!(sizes.windows(2).all(|w| w[0] <= w[1]), "{sizes:?}");
+        assert_eq!((sizes[0], sizes[3]), (256, 2048), "{sizes:?}");
+    }
 }

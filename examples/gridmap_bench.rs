@@ -19,7 +19,7 @@ use phygap::core::raster::RasterSettings;
 use phygap::core::step::ViewTarget;
 use phygap::io::capture;
 use phygap::io::model::Model;
-use phygap::pipeline::mesh_extraction::{self, GRIDMAP_MESH_RESOLUTION};
+use phygap::pipeline::mesh_extraction::{self, MeshResolution, GRIDMAP_MESH_RESOLUTION};
 use phygap::pipeline::reconstruction::{run_prefilter_plan, Reconstruction};
 use phygap::pipeline::train::host_step::{self, StepInputs};
 use phygap::pipeline::train::targets::{resolve_mode, view_target};
@@ -76,7 +76,7 @@ fn main() -> anyhow::Result<()> {
 
     for resolution in [256, GRIDMAP_MESH_RESOLUTION] {
         let (t, mesh) = best(repeats, || {
-            mesh_extraction::extract_from_model(&model, resolution)
+            mesh_extraction::extract_from_model(&model, MeshResolution::Voxels(resolution))
         });
         let mesh = mesh?;
         println!(
@@ -84,7 +84,10 @@ fn main() -> anyhow::Result<()> {
             mesh.triangles.len()
         );
     }
-    let mesh = mesh_extraction::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)?;
+    let mesh = mesh_extraction::extract_from_model(
+        &model,
+        MeshResolution::Voxels(GRIDMAP_MESH_RESOLUTION),
+    )?;
     let plan = run_prefilter_plan(&model.config, model.envmap.size)?;
     let env = PreparedEnv::new(&model.envmap, plan)?;
     let cpu_before = cpu_seconds();
@@ -152,7 +155,7 @@ fn main() -> anyhow::Result<()> {
     );
     let (interval, mesh_interval) = (model.config.gridmap_interval, model.config.mesh_interval);
     let (t_mesh128, _) = best(1, || {
-        mesh_extraction::extract_from_model(&model, GRIDMAP_MESH_RESOLUTION)
+        mesh_extraction::extract_from_model(&model, MeshResolution::Voxels(GRIDMAP_MESH_RESOLUTION))
     });
     let amortized = t_grid / per
         + t_build / f64::from(interval.max(1))

@@ -12,7 +12,7 @@ use clap::Args;
 
 use phygap::core::mesh::{chamfer_l1, normal_mae_deg, TriangleMesh};
 use phygap::io::model::Model;
-use phygap::pipeline::mesh_extraction::{self, DEFAULT_MESH_RESOLUTION};
+use phygap::pipeline::mesh_extraction::{self, MeshResolution};
 
 #[derive(Args, Debug)]
 pub struct MeshArgs {
@@ -21,9 +21,10 @@ pub struct MeshArgs {
     /// Output file; the extension (.ply or .obj) chooses the format.
     #[arg(long)]
     pub out: PathBuf,
-    /// TSDF voxels along the longest side of the object.
-    #[arg(long, default_value_t = DEFAULT_MESH_RESOLUTION)]
-    pub resolution: usize,
+    /// TSDF voxels along the longest side of the object; default: a voxel about a pixel's
+    /// footprint at the object in the training views, 64 to 256 voxels.
+    #[arg(long)]
+    pub resolution: Option<usize>,
     /// Simplify to at most this many triangles (quadric error, further where the surface is
     /// smooth enough, as the export's model.glb); default: the dense mesh.
     #[arg(long)]
@@ -37,13 +38,17 @@ pub struct MeshArgs {
 pub fn run(args: &MeshArgs) -> Result<()> {
     let start = Instant::now();
     let model = Model::load(&args.model)?;
-    let deliverable = mesh_extraction::extract_deliverable(&model, args.resolution)?;
+    let resolution = args
+        .resolution
+        .map_or(MeshResolution::FromViews, MeshResolution::Voxels);
+    let deliverable = mesh_extraction::extract_deliverable(&model, resolution)?;
     println!(
-        "surface observed: {:.1}% of its area ({} hole{} closed), voxel {:.4}",
+        "surface observed: {:.1}% of its area ({} hole{} closed), voxel {:.4} ({} along the longest side)",
         100.0 * deliverable.observed_fraction,
         deliverable.holes,
         if deliverable.holes == 1 { "" } else { "s" },
-        deliverable.voxel
+        deliverable.voxel,
+        deliverable.resolution
     );
     let simplified = args.mesh_triangles.filter(|&n| n > 0).map(|budget| {
         let (mesh, report) = mesh_extraction::simplify_deliverable(&deliverable, budget);
@@ -74,6 +79,21 @@ pub fn run(args: &MeshArgs) -> Result<()> {
             Ok(())
         };
         report("dense", &deliverable.mesh)?;
+        let (observed, caps) = deliverable
+            .mesh
+            .split_triangles(deliverable.observed_triangles);
+        let part_error = |part: &TriangleMesh| -> Result<String> {
+            Ok(if part.triangles.is_empty() {
+                "-".to_owned()
+            } else {
+                format!("{:.2}°", normal_mae_deg(part, &gt)?)
+            })
+        };
+        println!(
+            "dense normal error: observed surface {}, caps {}",
+            part_error(&observed)?,
+            part_error(&caps)?
+        );
         if let Some(light) = &simplified {
             report("simplified", light)?;
             println!(

@@ -209,7 +209,7 @@ pub fn model_cameras(model: &Model) -> Vec<Camera> {
 /// or four footprints, so finer voxels reject more of a pixelated surface, and a voxel between
 /// pixel centres gets the bilinear depth of a cell wider than itself. On the quickstart's sphere
 /// (96-pixel views, footprint 0.030) 256 voxels (0.0088) left 45 % of the surface unobserved,
-/// 74 voxels 12 %. `None` without cameras or bounds in front of them.
+/// 74 voxels 11 %. `None` without cameras or bounds in front of them.
 pub fn footprint_resolution(cameras: &[Camera], bounds: (DVec3, DVec3)) -> Option<usize> {
     let centre = 0.5 * (bounds.0 + bounds.1);
     let longest = (bounds.1 - bounds.0).max_element();
@@ -266,9 +266,10 @@ pub struct Deliverable {
 /// on the shared captures).
 pub const SIMPLIFY_ERROR_VOXELS: f64 = 0.25;
 
-/// The mesh of a trained model (its own backend, the training cameras) at `resolution`, its
-/// holes closed: the surface where no camera looked is the smoothest one spanning the hole
-/// ([`TriangleMesh::close_holes`]), so the deliverable is watertight; then smoothed by bilateral
+/// The mesh of a trained model (its own backend, the training cameras) at `resolution`
+/// ([`grid_resolution`]), its holes closed: the surface where no camera looked is a thin-plate
+/// cap that continues the surface around the hole ([`TriangleMesh::close_holes`]), so the
+/// deliverable is watertight; then smoothed by bilateral
 /// normal filtering ([`TriangleMesh::smooth`]), which removes the lumps a few surfels wide and
 /// keeps creases.
 pub fn extract_deliverable(

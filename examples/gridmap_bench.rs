@@ -115,7 +115,7 @@ fn main() -> anyhow::Result<()> {
         .iter()
         .enumerate()
         .filter(|(_, v)| v.split == capture::Split::Train)
-        .map(|(i, v)| view_target(i, v, mode))
+        .map(|(i, v)| view_target(i, v, mode, &model.config))
         .collect();
     let backend = phygap::pipeline::backend::select(model.config.backend)?;
     let inputs = StepInputs {

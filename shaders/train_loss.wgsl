@@ -9,7 +9,7 @@
 //                       E[xy] per channel (`loss::ssim`);
 //   `ssim_adjoint_h`    the adjoints blurred along rows;
 //   `loss_chain`        the adjoints blurred along columns, and every other term at the pixel:
-//                       L1, mask MSE, the Stokes L1 or the extra L1 of partial views, edge-aware
+//                       L1, mask MSE (weighted), the Stokes L1 or the extra L1 of partial views, edge-aware
 //                       normal smoothness, depth distortion, the AoLP normal prior,
 //                       depth–normal consistency (its
 //                       gradients before the
@@ -24,8 +24,10 @@
 @group(0) @binding(1) var<storage, read> gbuf: array<f32>;
 // Per pixel 15 values: S0, S1, S2, diffuse, specular (RGB each); zero where not shaded.
 @group(0) @binding(2) var<storage, read> stokes: array<f32>;
-// Per pixel 10 values: the photometric target (RGB), the mask, the S1 and S2 targets (RGB).
+// Per pixel TARGET_FLOATS values: the photometric target (RGB), the mask, the S1 and S2 targets
+// (RGB), the confidence of the pixel's polarization and its weight in the mask loss.
 @group(0) @binding(3) var<storage, read> target_image: array<f32>;
+const TARGET_FLOATS: u32 = 12u;
 // Per pixel 3 values: the α-premultiplied prediction.
 @group(0) @binding(4) var<storage, read_write> pred: array<f32>;
 // Planes of P values (plane-major): SSIM's moments (15 planes) or adjoints (9 planes).
@@ -63,7 +65,7 @@ fn pred_rgb(p: u32) -> vec3<f32> {
 }
 
 fn target_rgb(p: u32, slot: u32) -> vec3<f32> {
-    let o = 10u * p + slot;
+    let o = TARGET_FLOATS * p + slot;
     return vec3<f32>(target_image[o], target_image[o + 1u], target_image[o + 2u]);
 }
 
@@ -296,9 +298,10 @@ fn loss_chain(
             up[k] = 0.0;
         }
         // Mask.
-        let m = target_image[10u * p + 3u];
-        sums[SLOT_MASK] = (alpha - m) * (alpha - m);
-        up[0] += train.lambda_mask * 2.0 * (alpha - m) * inv_p;
+        let m = target_image[TARGET_FLOATS * p + 3u];
+        let mask_weight = target_image[TARGET_FLOATS * p + 11u];
+        sums[SLOT_MASK] = mask_weight * (alpha - m) * (alpha - m);
+        up[0] += train.lambda_mask * 2.0 * mask_weight * (alpha - m) * inv_p;
 
         // From the prediction to the Stokes images (or the albedo) and α.
         var d0 = vec3<f32>(0.0);
@@ -409,7 +412,8 @@ fn loss_chain(
         }
         // The AoLP prior DoLP² sin² 2(ψ − φ) on the object's pixels (`loss::aolp_normal`):
         // φ is the rendered normal's azimuth in the pixel's Stokes frame, ψ and the DoLP are
-        // measured (channel means of the targets); weighted by λ / pixels.
+        // measured (channel means of the targets, the DoLP times the pixel's confidence);
+        // weighted by λ / pixels.
         let lambda_aolp = train.lambda_aolp;
         if lambda_aolp > 0.0 && m >= 0.5 {
             let s0 = max((tgt.x + tgt.y + tgt.z) / 3.0, POLARIZATION_MIN_S0);
@@ -422,6 +426,9 @@ fn loss_chain(
                 c /= dolp;
                 s /= dolp;
             }
+            let confidence = target_image[TARGET_FLOATS * p + 10u];
+            c *= confidence;
+            s *= confidence;
             let d = normalize(to_world(camera_dir(p)));
             // The Stokes frame of `camera::stokes_frame`; the camera's up is −(OpenCV down).
             let frame_x = normalize(cross(d, -train.rot1.xyz));

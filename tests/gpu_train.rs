@@ -16,6 +16,7 @@ use phygap::core::envmap::{EnvGrad, PreparedEnv};
 use phygap::core::events::Stage;
 use phygap::core::light::LightProbe;
 use phygap::core::loss::LossWeights;
+use phygap::core::mask_band::mask_loss_weights;
 use phygap::core::optim::{Adam, AdamConfig};
 use phygap::core::raster::cpu::CpuBackend;
 use phygap::core::raster::RasterSettings;
@@ -30,7 +31,8 @@ mod common;
 use common::{gpu, random_cube, random_env, shell};
 
 /// A target of `camera`'s size: the photometric image and S1/S2 smooth functions of the pixel
-/// (so SSIM sees structure), the mask the disc the shell covers.
+/// (so SSIM sees structure), the mask the disc the shell covers, a varying confidence of the
+/// polarization, and the mask loss's band around the disc's edge.
 fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget<'static> {
     let (w, h) = (camera.width as usize, camera.height as usize);
     let phase: f64 = rng.random_range(0.0..6.0);
@@ -55,6 +57,14 @@ fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget<'stat
         "partial" => (None, Some(Polarizer::Learned("cam0".into()))),
         _ => (None, None),
     };
+    // The polarization's confidence varying across the view, the mask loss left out near the
+    // disc's edge (both planes default to 1 on the device).
+    let polarization_confidence = (kind == "full").then(|| {
+        (0..w * h)
+            .map(|p| (0.5 + 0.5 * (0.3 * (p % w) as f64 - 0.2 * (p / w) as f64).sin()) as f32)
+            .collect()
+    });
+    let mask_weight = Some(mask_loss_weights(&mask, w, h, 2));
     ViewTarget {
         view: 0,
         photometric: photometric.into(),
@@ -62,6 +72,8 @@ fn target(camera: &Camera, kind: &str, rng: &mut ChaCha8Rng) -> ViewTarget<'stat
         polarizer,
         mask: mask.into(),
         gain: 0.5,
+        polarization_confidence,
+        mask_weight,
     }
 }
 
@@ -222,13 +234,16 @@ fn compare(
         assert!(l2 < 1e-3, "{what}: relative L2 error {l2:.2e}");
         worst = worst.max(assert_close(gpu, cpu, 5e-2, 1e-2, &what));
     }
-    assert_close(
+    // The densification statistic: per surfel the norm of a sum over its pixels whose terms
+    // cancel, in f32 on the device (worst 0.8–1.1 % on these scenes).
+    let screen = assert_close(
         &mean2d,
         &host.mean2d_grad_norm,
-        1e-2,
+        2e-2,
         1e-2,
         &format!("{what}: screen-space gradient"),
     );
+    println!("{what}: worst screen-space gradient error {screen:.2e}");
     if let Some(env) = &host.env {
         let light_error = relative_l2(&trainer.take_light_grad().unwrap(), env);
         assert!(
@@ -280,11 +295,11 @@ fn view_targets_are_uploaded_without_holding_their_staging_copies() {
         return;
     };
     let mut rng = ChaCha8Rng::seed_from_u64(17);
-    // 256×204 pixels of 40 bytes are just under 2 MiB, so an allocator that rounds a buffer up to
+    // 256×170 pixels of 48 bytes are just under 2 MiB, so an allocator that rounds a buffer up to
     // a power of two (lavapipe's does) adds 0.4%.
     let camera = Camera::look_at(
         256,
-        204,
+        170,
         0.9,
         DVec3::new(0.3, -3.2, 1.1),
         DVec3::ZERO,
@@ -311,8 +326,9 @@ fn view_targets_are_uploaded_without_holding_their_staging_copies() {
     // Both trainers live until the end, so neither's buffers are freed during the other's count.
     let (one, _first) = held_with(1);
     let (eight, _second) = held_with(8);
-    // Photometric RGB, mask, S1 and S2 RGB: 10 floats a pixel.
-    let seven_targets = 7 * camera.num_pixels() as u64 * 10 * 4;
+    // Photometric RGB, mask, S1 and S2 RGB, the polarization's confidence and the mask loss's
+    // weight: 12 floats a pixel.
+    let seven_targets = 7 * camera.num_pixels() as u64 * 12 * 4;
     let more = eight - one;
     assert!(
         more >= seven_targets && more < seven_targets + seven_targets / 10,
@@ -631,14 +647,14 @@ fn steps_reuse_their_bind_groups_and_drop_stale_ones() {
 }
 
 /// When the device cannot hold a step's buffers (here: a binding limit below the SSIM planes of
-/// a 112×112 view, above the light and the BRDF table), training continues with the gpu
+/// a 112×112 view, above its target, the light and the BRDF table), training continues with the gpu
 /// backend's host steps, which split images into bands and shade them in chunks, instead of
 /// failing.
 #[test]
 fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
     use phygap::core::config::TrainConfig;
     use phygap::core::events::TrainEvent;
-    let limit = 600_000;
+    let limit = 700_000;
     let Some(gpu) = gpu(GpuOptions {
         max_binding_bytes: Some(limit),
         ..GpuOptions::default()
@@ -655,8 +671,9 @@ fn training_falls_back_to_host_steps_when_buffers_exceed_the_device() {
             ..Default::default()
         },
     );
-    // The device step needs 112 · 112 · 15 f32 for the SSIM planes: more than the limit.
-    assert!(112 * 112 * 15 * 4 > limit);
+    // The device step needs 112 · 112 · 15 f32 for the SSIM planes: more than the limit; a
+    // view's target, 112 · 112 · 12 f32, fits.
+    assert!(112 * 112 * 15 * 4 > limit && 112 * 112 * 12 * 4 < limit);
     let config = TrainConfig {
         iterations: 12.into(),
         initial_surfels: 500,

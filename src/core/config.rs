@@ -81,6 +81,10 @@ pub const MAX_LOWPASS_SIGMA_PX: f64 = 4.0;
 /// Mitsuba than 2 (README, *A finer roughness chain*).
 pub const MAX_MIP_LEVELS_PER_SIZE: u8 = 4;
 
+/// Widest band around a mask's edge the mask loss may leave alone, in pixels: a mask off by more
+/// than this is a wrong mask, not an imprecise one.
+pub const MAX_MASK_EDGE_PX: u32 = 16;
+
 /// Default triangle budget of the exported mesh (`mesh_triangles`): a glTF of about 3.5 MB at
 /// most (positions, normals, colour, roughness coordinate and IoR: about 35 bytes a triangle),
 /// which a web viewer or a game engine loads at once. Smooth objects end well below it.
@@ -300,6 +304,23 @@ pub struct TrainConfig {
     /// rendered normal's azimuth), on views with full Stokes measurements, in every stage.
     #[arg(long, default_value_t = TrainConfig::default().lambda_aolp)]
     pub lambda_aolp: f64,
+    /// Weigh each pixel of the AoLP prior by the share of its measured polarized power that
+    /// rises above the view's own noise, measured on each view (off: by its DoLP alone, which
+    /// noise inflates where the light is weakly polarized). Off by default: on the knot with
+    /// 12-bit shot and read noise it did not lower the normal error (docs/results.md).
+    #[arg(
+        long,
+        value_name = "on|off",
+        value_parser = parse_switch,
+        action = clap::ArgAction::Set,
+        default_value = "off"
+    )]
+    pub polarization_snr: bool,
+    /// Width in pixels (at the working resolution) of the band on either side of each mask's
+    /// edge where the mask loss does not insist, for masks off by a pixel or two; the images
+    /// alone place the silhouette there. 0: none.
+    #[arg(long, default_value_t = TrainConfig::default().mask_edge_px)]
+    pub mask_edge_px: u32,
 
     /// Cube-map face size of the learned environment.
     #[arg(long, default_value_t = TrainConfig::default().envmap_resolution)]
@@ -405,6 +426,8 @@ impl Default for TrainConfig {
             lambda_depth_normal: 0.1,
             lambda_distortion: 0.0,
             lambda_aolp: 3.0,
+            polarization_snr: false,
+            mask_edge_px: 2,
             envmap_resolution: 64,
             // A model's config.json without the key (written before the setting) reads as
             // this default, so a change of it must read those models as 1 (`Model::load`).
@@ -539,6 +562,12 @@ impl TrainConfig {
             if !value.is_finite() || value < 0.0 {
                 return bad(key, "must be a finite number >= 0");
             }
+        }
+        if self.mask_edge_px > MAX_MASK_EDGE_PX {
+            return bad(
+                "mask_edge_px",
+                &format!("must be at most {MAX_MASK_EDGE_PX}"),
+            );
         }
         if self.lambda_ssim > 1.0 {
             return bad("lambda_ssim", "must be in [0, 1]");

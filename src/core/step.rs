@@ -42,6 +42,13 @@ pub struct ViewTarget<'a> {
     /// What the photometric and Stokes samples are multiplied by to give the values the run fits:
     /// the inverse of its radiance scale (`pipeline::train::exposure`), 1 in the capture's units.
     pub gain: f32,
+    /// How far each pixel's measured polarization can be trusted, in [0, 1]
+    /// ([`crate::core::polarization_confidence`]), multiplying its weight in the AoLP prior;
+    /// `None`: fully.
+    pub polarization_confidence: Option<Vec<f32>>,
+    /// The mask loss's weight of each pixel ([`crate::core::mask_band`]: 0 near the mask's
+    /// edge); `None`: 1 everywhere.
+    pub mask_weight: Option<Vec<f32>>,
 }
 
 impl ViewTarget<'_> {

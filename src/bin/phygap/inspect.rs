@@ -85,6 +85,12 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
         }
         None => {}
     }
+    if let Some(share) = s.polarization_above_noise {
+        text.push_str(&format!(
+            "signal      {:.0} % of the polarized power above the views' noise (the AoLP prior's mean confidence)\n",
+            100.0 * share
+        ));
+    }
     if let Some(raw) = &s.raw {
         text.push_str(&format!(
             "raw frames  {} demosaiced ({}){}\n",

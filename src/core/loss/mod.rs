@@ -312,22 +312,24 @@ pub fn stokes_l1_premultiplied(
     }
 }
 
-/// Mask loss `mean((α − M)²)` and its gradient with respect to the accumulated opacity α.
+/// Mask loss `mean(w (α − M)²)` and its gradient with respect to the accumulated opacity α; the
+/// weights `w` (1 without them) leave pixels out (0 near the mask's edge,
+/// [`crate::core::mask_band`]) without changing the mean's denominator.
 ///
 /// # Panics
 /// If the lengths differ.
-pub fn mask_mse(alpha: &[f64], mask: &[f64]) -> LossValue {
-    assert_eq!(
-        alpha.len(),
-        mask.len(),
-        "mask_mse: alpha and mask lengths differ"
+pub fn mask_mse(alpha: &[f64], mask: &[f64], weight: Option<&[f32]>) -> LossValue {
+    assert!(
+        alpha.len() == mask.len() && weight.is_none_or(|w| w.len() == alpha.len()),
+        "mask_mse: alpha, mask and weight lengths differ"
     );
     let inv_n = 1.0 / alpha.len().max(1) as f64;
     let mut grad = filled(alpha.len(), 0.0);
     let value = chunked_sum(&mut grad, |i, g| {
+        let w = weight.map_or(1.0, |w| f64::from(w[i]));
         let d = alpha[i] - mask[i];
-        *g = 2.0 * d * inv_n;
-        d * d
+        *g = 2.0 * w * d * inv_n;
+        w * d * d
     });
     LossValue {
         value: value * inv_n,
@@ -547,13 +549,16 @@ pub const POLARIZATION_MIN_S0: f64 = 1e-4;
 /// The measured `DoLP (cos 2ψ, sin 2ψ) = (S1, S2) / S0` of each pixel from a view's interleaved
 /// RGB Stokes targets, each sample times `gain` (the run's exposure,
 /// [`crate::core::step::ViewTarget::gain`]; the channel means; the DoLP clamped to 1, S0 floored
-/// at [`POLARIZATION_MIN_S0`]), and zero where the mask is below ½ (not the object's).
+/// at [`POLARIZATION_MIN_S0`]), times the pixel's `confidence` where given
+/// ([`crate::core::polarization_confidence`]), and zero where the mask is below ½ (not the
+/// object's).
 pub fn measured_polarization(
     s0: &[f32],
     s1: &[f32],
     s2: &[f32],
     mask: &[f32],
     gain: f32,
+    confidence: Option<&[f32]>,
 ) -> Vec<[f64; 2]> {
     let mean = |v: &[f32], p: usize| {
         (f64::from(v[3 * p] * gain)
@@ -571,6 +576,7 @@ pub fn measured_polarization(
             let (c, s) = (mean(s1, p) / s0, mean(s2, p) / s0);
             let dolp = c.hypot(s);
             let k = if dolp > 1.0 { 1.0 / dolp } else { 1.0 };
+            let k = k * confidence.map_or(1.0, |w| f64::from(w[p]));
             [c * k, s * k]
         })
         .collect()

@@ -250,25 +250,36 @@ fn stokes_l1_sums_both_components_with_their_gradients() {
 
 #[test]
 fn mask_mse_of_known_values_and_gradient() {
-    let r = mask_mse(&[1.0, 0.5, 0.0, 0.25], &[1.0, 0.0, 1.0, 0.25]);
+    let r = mask_mse(&[1.0, 0.5, 0.0, 0.25], &[1.0, 0.0, 1.0, 0.25], None);
     assert_eq!(r.value, (0.25 + 1.0) / 4.0);
     assert_eq!(r.grad, vec![0.0, 0.25, -0.5, 0.0]);
+    // A weight of 0 leaves the second pixel out; the mean still counts four pixels.
+    let weighted = mask_mse(
+        &[1.0, 0.5, 0.0, 0.25],
+        &[1.0, 0.0, 1.0, 0.25],
+        Some(&[1.0, 0.0, 0.5, 1.0]),
+    );
+    assert_eq!(weighted.value, 0.5 / 4.0);
+    assert_eq!(weighted.grad, vec![0.0, 0.0, -0.25, 0.0]);
     for seed in SEEDS {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let alpha = random_vec(&mut rng, W * H, 0.0, 1.0);
         let mask: Vec<f64> = (0..W * H)
             .map(|_| f64::from(rng.random_bool(0.5)))
             .collect();
-        let r = mask_mse(&alpha, &mask);
-        assert_gradient(
-            "mask_mse",
-            &mut |a| mask_mse(a, &mask).value,
-            &alpha,
-            &r.grad,
-            1e-6,
-            1e-5,
-            1e-5,
-        );
+        let weight: Vec<f32> = (0..W * H).map(|_| rng.random_range(0.0..1.0)).collect();
+        for weight in [None, Some(weight.as_slice())] {
+            let r = mask_mse(&alpha, &mask, weight);
+            assert_gradient(
+                "mask_mse",
+                &mut |a| mask_mse(a, &mask, weight).value,
+                &alpha,
+                &r.grad,
+                1e-6,
+                1e-5,
+                1e-5,
+            );
+        }
     }
 }
 
@@ -585,7 +596,7 @@ fn chunked_losses_match_their_serial_definitions_for_any_thread_count() {
     for ((g, p), t) in l.grad.iter().zip(&pred).zip(&target) {
         assert_eq!(*g, (p - t).signum() / n as f64);
     }
-    let mask = mask_mse(&pred, &target);
+    let mask = mask_mse(&pred, &target, None);
     let serial = pred
         .iter()
         .zip(&target)
@@ -626,7 +637,7 @@ fn chunked_losses_match_their_serial_definitions_for_any_thread_count() {
     let run = || {
         (
             l1(&pred, &target, None),
-            mask_mse(&pred, &target),
+            mask_mse(&pred, &target, None),
             depth_normal_consistency(&normal, &depth_normal, None),
             depth_distortion(&alpha, &depth, &depth_sq, 1.0),
         )
@@ -763,7 +774,7 @@ fn measured_polarization_is_the_channel_mean_stokes_ratio_on_the_object() {
         0.0,
     ];
     let mask = [1.0, 0.2, 1.0, 1.0];
-    let m = measured_polarization(&s0, &s1, &s2, &mask, 1.0);
+    let m = measured_polarization(&s0, &s1, &s2, &mask, 1.0, None);
     assert!(
         (m[0][0] - c).abs() < 1e-6 && (m[0][1] - s).abs() < 1e-6,
         "{:?}",
@@ -780,4 +791,10 @@ fn measured_polarization_is_the_channel_mean_stokes_ratio_on_the_object() {
         "{:?}",
         m[3]
     );
+    // A pixel's confidence scales its measured polarization.
+    let confidence = [0.25, 1.0, 0.0, 1.0];
+    let weighted = measured_polarization(&s0, &s1, &s2, &mask, 1.0, Some(&confidence));
+    assert_eq!(weighted[0], m[0].map(|v| 0.25 * v));
+    assert_eq!(weighted[2], [0.0, 0.0]);
+    assert_eq!(weighted[3], m[3]);
 }

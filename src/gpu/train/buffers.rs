@@ -247,7 +247,7 @@ pub(super) struct FrameBuffers {
 }
 
 /// f32 values per pixel of a view's target: photometric RGB, mask, S1 and S2 RGB.
-pub(super) const TARGET_FLOATS: u64 = 10;
+pub(super) const TARGET_FLOATS: u64 = 12;
 
 impl FrameBuffers {
     /// The buffers of a `width` × `height` image; `train_params_bytes`: the size of the

@@ -125,7 +125,8 @@ pub struct DeviceTrainer<'g> {
 }
 
 /// A view's target laid out per pixel as the run fits it: photometric RGB, mask, S1 and S2 RGB
-/// (zero without them), the photometric and Stokes samples times the view's gain.
+/// (zero without them), the photometric and Stokes samples times the view's gain; then the
+/// confidence of the pixel's polarization and its weight in the mask loss (1 without them).
 fn target_values(target: &ViewTarget) -> Vec<f32> {
     let pixels = target.mask.len();
     let mut out = Vec::with_capacity(pixels * TARGET_FLOATS as usize);
@@ -137,12 +138,17 @@ fn target_values(target: &ViewTarget) -> Vec<f32> {
             None => ([0.0; 3], [0.0; 3]),
         };
         let photometric = rgb(&target.photometric);
+        let per_pixel = |plane: &Option<Vec<f32>>| plane.as_ref().map_or(1.0, |v| v[p]);
         out.extend(
             photometric
                 .into_iter()
                 .chain([target.mask[p]])
                 .chain(s1)
-                .chain(s2),
+                .chain(s2)
+                .chain([
+                    per_pixel(&target.polarization_confidence),
+                    per_pixel(&target.mask_weight),
+                ]),
         );
     }
     out

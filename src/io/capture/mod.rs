@@ -44,6 +44,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::core::camera::Camera;
+use crate::core::polarization_confidence::polarization_confidence;
 use crate::formats::image_io::Image;
 
 pub use colmap::{ColmapError, ColmapReport, SparsePoint};
@@ -174,6 +175,9 @@ pub struct CaptureSummary {
     pub warnings: Vec<String>,
     /// DoLP over the masked pixels of every full-Stokes view; `None` without one.
     pub dolp: Option<DolpStats>,
+    /// The mean over those pixels of how far their polarization rises above their view's own
+    /// noise (the AoLP prior's confidence, `core::polarization_confidence`, in [0, 1]).
+    pub polarization_above_noise: Option<f64>,
     pub raw: Option<RawReport>,
     pub colmap: Option<ColmapReport>,
     /// Sparse points that seed the surfels (COLMAP `points3D`).
@@ -578,6 +582,26 @@ impl Capture {
                 _ => None,
             })
             .collect();
+        let above_noise: (f64, usize) = self
+            .views
+            .par_iter()
+            .map(|view| match &view.measurement {
+                Measurement::Stokes { s0, s1, s2 } => {
+                    let mask = &view.mask.data;
+                    let confidence = polarization_confidence(
+                        &s0.to_rgb().data,
+                        &s1.to_rgb().data,
+                        &s2.to_rgb().data,
+                        mask,
+                        view.mask.width,
+                        view.mask.height,
+                    );
+                    let object = mask.iter().filter(|&&m| m >= 0.5).count();
+                    (confidence.iter().map(|&w| f64::from(w)).sum(), object)
+                }
+                _ => (0.0, 0),
+            })
+            .reduce(|| (0.0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
         let mut total: Option<dolp::DolpHistogram> = None;
         for h in histograms.iter().flatten() {
             total.get_or_insert_with(Default::default).merge(h);
@@ -611,6 +635,8 @@ impl Capture {
             world_up: self.world_up,
             warnings: self.warnings.clone(),
             dolp: total.and_then(|h| h.stats()),
+            polarization_above_noise: (above_noise.1 > 0)
+                .then(|| above_noise.0 / above_noise.1 as f64),
             raw: self.raw.clone(),
             colmap: self.colmap.clone(),
             sparse_points: self.points.len(),

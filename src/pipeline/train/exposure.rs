@@ -99,6 +99,8 @@ mod tests {
             polarizer,
             mask: Cow::Owned(mask),
             gain: 1.0,
+            polarization_confidence: None,
+            mask_weight: None,
         }
     }
 
@@ -170,6 +172,8 @@ mod tests {
             polarizer: None,
             mask: Cow::Owned(vec![1.0]),
             gain: 1.0,
+            polarization_confidence: None,
+            mask_weight: None,
         }];
         normalize(&mut targets, 2.0);
         assert!(matches!(targets[0].photometric, Cow::Borrowed(_)));

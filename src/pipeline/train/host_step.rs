@@ -276,7 +276,11 @@ fn gbuffer_losses(
     up: &mut GBufferGrads,
     losses: &mut BTreeMap<String, f64>,
 ) {
-    let mask = loss::mask_mse(&g.alpha, &widen(&target.mask));
+    let mask = loss::mask_mse(
+        &g.alpha,
+        &widen(&target.mask),
+        target.mask_weight.as_deref(),
+    );
     losses.insert("mask".to_owned(), weights.lambda_mask * mask.value);
     add_into(&mut up.alpha, &mask.grad, weights.lambda_mask);
     if plan.normal_smooth {
@@ -308,8 +312,14 @@ fn gbuffer_losses(
         );
     }
     if let (true, Some((s1, s2))) = (plan.aolp, &target.stokes) {
-        let polarization =
-            loss::measured_polarization(&target.photometric, s1, s2, &target.mask, target.gain);
+        let polarization = loss::measured_polarization(
+            &target.photometric,
+            s1,
+            s2,
+            &target.mask,
+            target.gain,
+            target.polarization_confidence.as_deref(),
+        );
         let prior = loss::aolp_normal(g.normal.as_flattened(), camera, &polarization);
         losses.insert("aolp".to_owned(), weights.lambda_aolp * prior.value);
         add_into(

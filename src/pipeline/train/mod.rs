@@ -368,7 +368,7 @@ pub fn train_on(
         .iter()
         .enumerate()
         .filter(|(_, v)| v.split == crate::io::capture::Split::Train)
-        .map(|(i, v)| view_target(i, v, mode))
+        .map(|(i, v)| view_target(i, v, mode, config))
         .collect();
     let radiance_scale = exposure::radiance_scale(&targets);
     exposure::normalize(&mut targets, radiance_scale);
@@ -1202,6 +1202,8 @@ mod tests {
                 .map(|i| f32::from(u8::from(i < mask_pixels)))
                 .collect(),
             gain: 1.0,
+            polarization_confidence: None,
+            mask_weight: None,
         };
         let config = TrainConfig {
             initial_surfels: 1_000,
@@ -1251,7 +1253,7 @@ mod tests {
         let targets: Vec<ViewTarget> = capture
             .train_views()
             .enumerate()
-            .map(|(i, v)| view_target(i, v, Mode::Full))
+            .map(|(i, v)| view_target(i, v, Mode::Full, &config))
             .collect();
         let pixels = mean_object_pixels(&targets);
         assert!(pixels > 50.0 && pixels < 576.0, "{pixels}");

@@ -352,6 +352,8 @@ mod tests {
                 polarizer: None,
                 mask: Cow::Borrowed(&targets[k].1),
                 gain: 1.0,
+                polarization_confidence: None,
+                mask_weight: None,
             };
             let result = host_step::run(
                 &inputs,

@@ -1,11 +1,14 @@
 //! What each view is fitted to, borrowed from the capture's views (copied only where an image
 //! is not RGB): the photometric target (S0, an image behind a polarizer, or a plain image), S1/S2
 //! where the view has full Stokes and the run uses them, the mask, and which polarizer angle
-//! (known or learned) the view was taken behind.
+//! (known or learned) the view was taken behind; and, from the run's settings, how far each
+//! pixel's polarization can be trusted and where the mask loss leaves the mask's edge alone.
 
 use std::borrow::Cow;
 
-use crate::core::config::Mode;
+use crate::core::config::{Mode, TrainConfig};
+use crate::core::mask_band::mask_loss_weights;
+use crate::core::polarization_confidence::polarization_confidence;
 use crate::core::step::{Polarizer, ViewTarget};
 use crate::formats::image_io::Image;
 use crate::io::capture::{Capture, Measurement, PolarizerAngle, View};
@@ -19,8 +22,14 @@ fn rgb(img: &Image) -> Cow<'_, [f32]> {
     }
 }
 
-/// The target of `view` under the resolved `mode` (never `Auto`).
-pub fn view_target(index: usize, view: &View, mode: Mode) -> ViewTarget<'_> {
+/// The target of `view` under the resolved `mode` (never `Auto`), with `config`'s
+/// `polarization_snr` and `mask_edge_px`.
+pub fn view_target<'a>(
+    index: usize,
+    view: &'a View,
+    mode: Mode,
+    config: &TrainConfig,
+) -> ViewTarget<'a> {
     let mask = Cow::Borrowed(view.mask.data.as_slice());
     let (photometric, stokes, polarizer) = match (&view.measurement, mode) {
         (Measurement::Stokes { s0, s1, s2 }, Mode::Full | Mode::Partial) => {
@@ -39,6 +48,20 @@ pub fn view_target(index: usize, view: &View, mode: Mode) -> ViewTarget<'_> {
             (rgb(image), None, None)
         }
     };
+    let (width, height) = (view.mask.width, view.mask.height);
+    let polarization_confidence = match &stokes {
+        Some((s1, s2)) if config.polarization_snr => Some(polarization_confidence(
+            &photometric,
+            s1,
+            s2,
+            &mask,
+            width,
+            height,
+        )),
+        _ => None,
+    };
+    let mask_weight = (config.mask_edge_px > 0)
+        .then(|| mask_loss_weights(&mask, width, height, config.mask_edge_px));
     ViewTarget {
         view: index,
         photometric,
@@ -46,6 +69,8 @@ pub fn view_target(index: usize, view: &View, mode: Mode) -> ViewTarget<'_> {
         polarizer,
         mask,
         gain: 1.0,
+        polarization_confidence,
+        mask_weight,
     }
 }
 

@@ -318,7 +318,8 @@ pub struct TrainConfig {
     pub polarization_snr: bool,
     /// Width in pixels (at the working resolution) of the band on either side of each mask's
     /// edge where the mask loss does not insist, for masks off by a pixel or two; the images
-    /// alone place the silhouette there. 0: none.
+    /// alone place the silhouette there. 0 (the default): none; 2 takes back half of what masks
+    /// off by ±2 px cost the knot, and costs exact masks as much (docs/results.md).
     #[arg(long, default_value_t = TrainConfig::default().mask_edge_px)]
     pub mask_edge_px: u32,
 
@@ -427,7 +428,7 @@ impl Default for TrainConfig {
             lambda_distortion: 0.0,
             lambda_aolp: 3.0,
             polarization_snr: false,
-            mask_edge_px: 2,
+            mask_edge_px: 0,
             envmap_resolution: 64,
             // A model's config.json without the key (written before the setting) reads as
             // this default, so a change of it must read those models as 1 (`Model::load`).

@@ -124,8 +124,8 @@ export async function showViewerPage(root, jobId) {
 
 /**
  * The "Material mesh | glTF" switch under the canvas. The first switch to glTF downloads
- * model.glb and loads it with three.js's GLTFLoader (COLOR_0 albedo, roughness from the
- * metallic-roughness texture, KHR_materials_ior) and adds the material's one IoR to the facts; the
+ * model.glb and loads it with three.js's GLTFLoader (base colour, metallic-roughness and normal
+ * textures, or COLOR_0 and a roughness ramp in the vertex form; KHR_materials_ior) and adds the material's one IoR to the facts; the
  * canvas's data-shown says what is drawn, data-gltf-vertices how many vertices the glTF has.
  */
 function gltfToggle(root, jobId, modelView) {

@@ -86,3 +86,48 @@ fn an_export_that_requires_the_mesh_fails_without_one() {
     );
     assert!(error.to_string().contains("no zero crossing"), "{error}");
 }
+
+/// After 20 steps a capture's surfels fuse to a surface of a few voxels, which the simplification
+/// can collapse to nothing: `model.glb` then carries the dense mesh instead of failing the export.
+#[test]
+fn a_surface_the_simplification_collapses_exports_the_dense_mesh() {
+    use phygap::pipeline::mesh_extraction::{
+        extract_deliverable, simplify_deliverable, DEFAULT_MESH_RESOLUTION,
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let capture_dir = dir.path().join("capture");
+    phygap::pipeline::synth::synth(
+        &capture_dir,
+        &phygap::pipeline::synth::SynthOptions {
+            views: 10,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let capture = phygap::io::capture::load(&capture_dir).unwrap();
+    let model_dir = dir.path().join("model");
+    let config = TrainConfig {
+        iterations: 20.into(),
+        gridmap: false,
+        ..TrainConfig::default()
+    };
+    let cancel = std::sync::atomic::AtomicBool::new(false);
+    phygap::pipeline::train::train(&capture, &model_dir, &config, false, &cancel, &mut |_| {})
+        .unwrap();
+    let model = Model::load(&model_dir).unwrap();
+    let deliverable = extract_deliverable(&model, DEFAULT_MESH_RESOLUTION).unwrap();
+    let (light, _) = simplify_deliverable(&deliverable, config.mesh_triangles as usize);
+    let proper = |m: &phygap::core::mesh::TriangleMesh| {
+        m.triangles
+            .iter()
+            .filter(|&&[a, b, c]| a != b && b != c && a != c)
+            .count()
+    };
+    // The case this test is about: nothing left after the simplification, a few dense triangles.
+    assert_eq!(proper(&light), 0, "the simplified mesh kept triangles");
+    assert!(proper(&deliverable.mesh) > 0);
+    let out = dir.path().join("export");
+    export::export(&model_dir, &out).unwrap();
+    assert!(out.join(MESH_FILE).exists() && out.join(GLB_FILE).exists());
+    assert!(export::warnings(&out).is_empty());
+}

@@ -167,8 +167,8 @@ def capture_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.fixture(scope="session")
 def full_size_capture_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """A 10-view synthetic capture at synth's default size, whose 20-step model has no
-    surface to extract a mesh from."""
+    """A 10-view synthetic capture at synth's default size, whose 20-step model of 100
+    surfels has no surface to extract a mesh from."""
     return synth(tmp_path_factory.mktemp("full") / "capture", size=None)
 
 

@@ -322,12 +322,22 @@ pub fn export_with(
         let form = options
             .mesh_materials
             .unwrap_or(model.config.mesh_materials);
-        if budget == 0 {
-            write_model_glb(&model, &deliverable.mesh, &glb_path, form)?;
-        } else {
-            let (light, _) = mesh_extraction::simplify_deliverable(&deliverable, budget as usize);
-            write_model_glb(&model, &light, &glb_path, form)?;
-        }
+        let light = (budget > 0)
+            .then(|| mesh_extraction::simplify_deliverable(&deliverable, budget as usize).0)
+            // A surface of a few voxels (a run of a few steps) can collapse entirely; the
+            // glTF then carries the dense mesh, which is as small.
+            .filter(|light| {
+                light
+                    .triangles
+                    .iter()
+                    .any(|&[a, b, c]| a != b && b != c && a != c)
+            });
+        write_model_glb(
+            &model,
+            light.as_ref().unwrap_or(&deliverable.mesh),
+            &glb_path,
+            form,
+        )?;
         written.push(glb_path);
     }
     let up = model.world_up()?;

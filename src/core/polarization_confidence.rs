@@ -193,6 +193,16 @@ mod tests {
         [s0, s1, s2, mask]
     }
 
+    /// The confidences of the object's pixels (mask ≥ ½).
+    fn on_the_object(confidence: &[f32], mask: &[f32]) -> Vec<f32> {
+        confidence
+            .iter()
+            .zip(mask)
+            .filter(|(_, &m)| m >= 0.5)
+            .map(|(&w, _)| w)
+            .collect()
+    }
+
     #[test]
     fn the_noise_curve_recovers_shot_noise_that_grows_with_intensity() {
         let k = 1e-4;
@@ -221,12 +231,7 @@ mod tests {
         // zeroes the pixels below it (about 63 % of a χ²₂) and keeps the rest small.
         let [s0, s1, s2, mask] = noisy_view(96, 0.0, 1e-4, 3);
         let noise = polarization_confidence(&s0, &s1, &s2, &mask, 96, 96);
-        let object: Vec<f32> = noise
-            .iter()
-            .zip(&mask)
-            .filter(|(_, &m)| m >= 0.5)
-            .map(|(&w, _)| w)
-            .collect();
+        let object = on_the_object(&noise, &mask);
         let zero = object.iter().filter(|&&w| w == 0.0).count() as f64 / object.len() as f64;
         let mean = object.iter().sum::<f32>() / object.len() as f32;
         assert!((0.5..0.75).contains(&zero), "share zeroed {zero}");
@@ -238,12 +243,7 @@ mod tests {
         // DoLP 0.3 at S0 ≈ 0.6: P ≈ 0.18 against σ ≈ 0.0045 (channel mean): w ≈ 1 − 2σ²/P².
         let [s0, s1, s2, mask] = noisy_view(96, 0.3, 1e-4, 4);
         let w = polarization_confidence(&s0, &s1, &s2, &mask, 96, 96);
-        let object: Vec<f32> = w
-            .iter()
-            .zip(&mask)
-            .filter(|(_, &m)| m >= 0.5)
-            .map(|(&w, _)| w)
-            .collect();
+        let object = on_the_object(&w, &mask);
         let mean = object.iter().sum::<f32>() / object.len() as f32;
         assert!(mean > 0.95 && mean < 1.0, "mean confidence {mean}");
     }

@@ -31,7 +31,7 @@ pub fn mask_loss_weights(mask: &[f32], width: usize, height: usize, band_px: u32
 }
 
 /// Whether any pixel of each pixel's `(2 radius + 1)²` window (clipped to the image) is set.
-fn window_any(set: &[bool], width: usize, height: usize, radius: usize) -> Vec<bool> {
+pub(crate) fn window_any(set: &[bool], width: usize, height: usize, radius: usize) -> Vec<bool> {
     let rows = pass(set, width, height, radius, 1, width);
     pass(&rows, height, width, radius, width, 1)
 }

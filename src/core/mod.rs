@@ -3,6 +3,7 @@
 //! with its f64 reference engine (what every other engine is tested against) and the fast f32
 //! host engine; triangle meshes and metrics. Uses only [`crate::formats`].
 
+pub mod background;
 pub mod brdf_lut;
 pub mod camera;
 pub mod config;

@@ -91,6 +91,17 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
             100.0 * share
         ));
     }
+    if let Some(level) = s.background_level {
+        text.push_str(&format!(
+            "background  {:.2} of the object's mean brightness beyond the masks{}\n",
+            level,
+            if level > 0.0 {
+                " (black in the training targets: the model holds only the object)"
+            } else {
+                " (black, as rendered)"
+            }
+        ));
+    }
     if let Some(raw) = &s.raw {
         text.push_str(&format!(
             "raw frames  {} demosaiced ({}){}\n",

@@ -8,6 +8,7 @@
 //! holding a COLMAP model instead of `transforms.json` is read by `colmap/`, one in the IDR/NeuS
 //! or LLFF layout by `layouts/`.
 
+pub mod backdrop;
 pub mod colmap;
 pub mod conventions;
 pub mod degrade;
@@ -43,6 +44,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 use serde::Serialize;
 
+use crate::core::background::{background_and_object_sums, beyond_mask, MARGIN_PX};
 use crate::core::camera::Camera;
 use crate::core::polarization_confidence::polarization_confidence;
 use crate::formats::image_io::Image;
@@ -178,6 +180,10 @@ pub struct CaptureSummary {
     /// The mean over those pixels of how far their polarization rises above their view's own
     /// noise (the AoLP prior's confidence, `core::polarization_confidence`, in [0, 1]).
     pub polarization_above_noise: Option<f64>,
+    /// The images' mean beyond the masks (farther than `core::background::MARGIN_PX`) over their
+    /// mean on the object: 0 for a rendered capture, which training fits as it is; a photograph's
+    /// background is made black for training. `None` when no view has pixels beyond its mask.
+    pub background_level: Option<f64>,
     pub raw: Option<RawReport>,
     pub colmap: Option<ColmapReport>,
     /// Sparse points that seed the surfels (COLMAP `points3D`).
@@ -602,6 +608,26 @@ impl Capture {
                 _ => (0.0, 0),
             })
             .reduce(|| (0.0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
+        let [background, object] = self
+            .views
+            .par_iter()
+            .map(|view| {
+                let mask = &view.mask;
+                let beyond = beyond_mask(&mask.data, mask.width, mask.height, MARGIN_PX);
+                let image = match &view.measurement {
+                    Measurement::Stokes { s0: image, .. }
+                    | Measurement::Polarizer { image, .. }
+                    | Measurement::Rgb { image } => image,
+                };
+                background_and_object_sums(&image.data, &mask.data, &beyond)
+            })
+            .reduce(
+                || [(0.0, 0); 2],
+                |a, b| [0, 1].map(|k| (a[k].0 + b[k].0, a[k].1 + b[k].1)),
+            );
+        let mean = |(sum, count): (f64, usize)| sum / count.max(1) as f64;
+        let background_level = (background.1 > 0 && object.1 > 0)
+            .then(|| mean(background) / mean(object).max(f64::MIN_POSITIVE));
         let mut total: Option<dolp::DolpHistogram> = None;
         for h in histograms.iter().flatten() {
             total.get_or_insert_with(Default::default).merge(h);
@@ -637,6 +663,7 @@ impl Capture {
             dolp: total.and_then(|h| h.stats()),
             polarization_above_noise: (above_noise.1 > 0)
                 .then(|| above_noise.0 / above_noise.1 as f64),
+            background_level,
             raw: self.raw.clone(),
             colmap: self.colmap.clone(),
             sparse_points: self.points.len(),

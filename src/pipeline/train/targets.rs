@@ -1,11 +1,14 @@
 //! What each view is fitted to, borrowed from the capture's views (copied only where an image
-//! is not RGB): the photometric target (S0, an image behind a polarizer, or a plain image), S1/S2
-//! where the view has full Stokes and the run uses them, the mask, and which polarizer angle
-//! (known or learned) the view was taken behind; and, from the run's settings, how far each
-//! pixel's polarization can be trusted and where the mask loss leaves the mask's edge alone.
+//! is not RGB, or shows a background beyond the mask, which is made black:
+//! [`crate::core::background`]): the photometric target (S0, an image behind a polarizer, or a
+//! plain image), S1/S2 where the view has full Stokes and the run uses them, the mask, and which
+//! polarizer angle (known or learned) the view was taken behind; and, from the run's settings, how
+//! far each pixel's polarization can be trusted and where the mask loss leaves the mask's edge
+//! alone.
 
 use std::borrow::Cow;
 
+use crate::core::background::{beyond_mask, black_beyond, MARGIN_PX};
 use crate::core::config::{Mode, TrainConfig};
 use crate::core::mask_band::mask_loss_weights;
 use crate::core::polarization_confidence::polarization_confidence;
@@ -49,6 +52,9 @@ pub fn view_target<'a>(
         }
     };
     let (width, height) = (view.mask.width, view.mask.height);
+    let beyond = beyond_mask(&mask, width, height, MARGIN_PX);
+    let photometric = black_beyond(photometric, &beyond);
+    let stokes = stokes.map(|(s1, s2)| (black_beyond(s1, &beyond), black_beyond(s2, &beyond)));
     let polarization_confidence = match &stokes {
         Some((s1, s2)) if config.polarization_snr => Some(polarization_confidence(
             &photometric,
@@ -127,5 +133,78 @@ mod tests {
         assert!(matches!(expanded, Cow::Owned(_)));
         assert_eq!(expanded.len(), 18);
         assert_eq!(&expanded[12..15], &[4.0, 4.0, 4.0]);
+    }
+
+    /// A 12 × 10 view of a 4 × 4 object in the middle whose Stokes images hold `background`
+    /// everywhere off the object (and 0.5, 0.1, -0.1 on it).
+    fn stokes_view(background: f32) -> View {
+        use crate::core::camera::Camera;
+        use crate::io::capture::{GroundTruth, Split};
+        let (w, h) = (12, 10);
+        let on_object = |x: usize, y: usize| (4..8).contains(&x) && (3..7).contains(&y);
+        let image = |value: f32| {
+            Image::from_fn(w, h, 3, |x, y, out| {
+                out.fill(if on_object(x, y) { value } else { background });
+            })
+        };
+        View {
+            name: "frame 0".to_owned(),
+            frame_index: 0,
+            split: Split::Train,
+            camera: Camera::look_at(
+                w as u32,
+                h as u32,
+                0.7,
+                glam::DVec3::Z * 4.0,
+                glam::DVec3::ZERO,
+                glam::DVec3::Y,
+            ),
+            measurement: Measurement::Stokes {
+                s0: image(0.5),
+                s1: image(0.1),
+                s2: image(-0.1),
+            },
+            mask: Image::from_fn(w, h, 1, |x, y, out| {
+                out[0] = f32::from(u8::from(on_object(x, y)))
+            }),
+            ground_truth: GroundTruth::default(),
+        }
+    }
+
+    #[test]
+    fn a_photographed_background_is_black_in_every_target_and_the_object_untouched() {
+        let view = stokes_view(0.3);
+        let target = view_target(0, &view, Mode::Full, &TrainConfig::default());
+        let (s1, s2) = target.stokes.as_ref().expect("full Stokes");
+        for (samples, on_object) in [(&target.photometric, 0.5), (s1, 0.1), (s2, -0.1)] {
+            assert!(matches!(samples, Cow::Owned(_)));
+            for (p, pixel) in samples.chunks_exact(3).enumerate() {
+                let (x, y) = (p % 12, p / 12);
+                let expected = if (4..8).contains(&x) && (3..7).contains(&y) {
+                    on_object
+                } else if (2..10).contains(&x) && (1..9).contains(&y) {
+                    // Within MARGIN_PX (2) of the object: the photograph's value.
+                    0.3
+                } else {
+                    0.0
+                };
+                assert_eq!(pixel, [expected; 3], "pixel ({x}, {y})");
+            }
+        }
+    }
+
+    #[test]
+    fn a_rendered_capture_s_targets_are_borrowed_from_it() {
+        let view = stokes_view(0.0);
+        let target = view_target(0, &view, Mode::Full, &TrainConfig::default());
+        let Measurement::Stokes { s0, .. } = &view.measurement else {
+            unreachable!()
+        };
+        assert!(matches!(target.photometric, Cow::Borrowed(_)));
+        assert_eq!(target.photometric.as_ptr(), s0.data.as_ptr());
+        assert!(target
+            .stokes
+            .iter()
+            .all(|(a, b)| matches!((a, b), (Cow::Borrowed(_), Cow::Borrowed(_)))));
     }
 }

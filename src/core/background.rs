@@ -1,0 +1,158 @@
+//! The part of a view the model does not represent: what lies beyond the object's mask.
+//!
+//! Renders are α-premultiplied, black where no surfel is, and the shared captures are rendered the
+//! same way. A photograph is not: beyond the mask it shows the table, the room, the clutter. Fitted
+//! as it is, that background asks the photometric loss for surfels where the mask loss asks for
+//! none, and the two settle on floaters and a grey haze around the object. So the training targets
+//! are made black farther than [`MARGIN_PX`] from the mask: within the margin the images keep their
+//! values, so the colour of an anti-aliased contour, or of an object a mask cuts a pixel too tight,
+//! is still fitted. A capture whose background is already black is left exactly as it was.
+//!
+//! Threading: single-threaded separable passes over the mask (once per view and run).
+
+use std::borrow::Cow;
+
+use crate::core::mask_band::window_any;
+
+/// Pixels farther than this (Chebyshev distance) from every object pixel are background.
+pub const MARGIN_PX: u32 = 2;
+
+/// Whether each pixel of a `width × height` `mask` (object where ≥ ½) lies farther than
+/// `margin_px` from every object pixel.
+pub fn beyond_mask(mask: &[f32], width: usize, height: usize, margin_px: u32) -> Vec<bool> {
+    assert_eq!(
+        mask.len(),
+        width * height,
+        "beyond_mask: the mask is not {width}×{height}"
+    );
+    let object: Vec<bool> = mask.iter().map(|&m| m >= 0.5).collect();
+    window_any(&object, width, height, margin_px as usize)
+        .into_iter()
+        .map(|near| !near)
+        .collect()
+}
+
+/// Interleaved `samples` (any channel count) with every pixel that is `beyond` made 0: borrowed
+/// unchanged when those pixels are already 0, a copy otherwise.
+pub fn black_beyond<'a>(samples: Cow<'a, [f32]>, beyond: &[bool]) -> Cow<'a, [f32]> {
+    let channels = channels_of(&samples, beyond);
+    if !samples
+        .chunks_exact(channels)
+        .zip(beyond)
+        .any(|(pixel, &b)| b && pixel.iter().any(|&v| v != 0.0))
+    {
+        return samples;
+    }
+    let mut owned = samples.into_owned();
+    for (pixel, _) in owned
+        .chunks_exact_mut(channels)
+        .zip(beyond)
+        .filter(|(_, &b)| b)
+    {
+        pixel.fill(0.0);
+    }
+    Cow::Owned(owned)
+}
+
+/// The mean of `samples` over the `beyond` pixels and over the object's (the `mask` at ½ or
+/// more), all channels together, as (sum, count) pairs that add across views: a rendered capture's
+/// background mean is 0, a photograph's is often as bright as its object.
+pub fn background_and_object_sums(
+    samples: &[f32],
+    mask: &[f32],
+    beyond: &[bool],
+) -> [(f64, usize); 2] {
+    let channels = channels_of(samples, beyond);
+    let mut sums = [(0.0, 0); 2];
+    for ((pixel, &m), &b) in samples.chunks_exact(channels).zip(mask).zip(beyond) {
+        let which = match (b, m >= 0.5) {
+            (true, _) => 0,
+            (false, true) => 1,
+            (false, false) => continue,
+        };
+        sums[which].0 += pixel.iter().map(|&v| f64::from(v)).sum::<f64>();
+        sums[which].1 += channels;
+    }
+    sums
+}
+
+fn channels_of(samples: &[f32], beyond: &[bool]) -> usize {
+    assert!(
+        !beyond.is_empty() && samples.len().is_multiple_of(beyond.len()),
+        "black_beyond: {} samples for {} pixels",
+        samples.len(),
+        beyond.len()
+    );
+    samples.len() / beyond.len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 9 × 7 mask with a 3 × 3 object at columns 3–5, rows 2–4.
+    fn square() -> (Vec<f32>, usize, usize) {
+        let (w, h) = (9, 7);
+        let mask = (0..w * h)
+            .map(|p| {
+                f32::from(u8::from(
+                    (3..6).contains(&(p % w)) && (2..5).contains(&(p / w)),
+                ))
+            })
+            .collect();
+        (mask, w, h)
+    }
+
+    #[test]
+    fn the_margin_keeps_the_pixels_near_the_object() {
+        let (mask, w, h) = square();
+        let beyond = beyond_mask(&mask, w, h, 1);
+        // Columns 2–6 and rows 1–5 are within one pixel of the object; the rest is beyond.
+        for (p, &b) in beyond.iter().enumerate() {
+            let (x, y) = (p % w, p / w);
+            let near = (2..7).contains(&x) && (1..6).contains(&y);
+            assert_eq!(b, !near, "pixel ({x}, {y})");
+        }
+        assert!(beyond_mask(&mask, w, h, 9).iter().all(|&b| !b));
+        assert!(beyond_mask(&[1.0; 63], w, h, 0).iter().all(|&b| !b));
+    }
+
+    #[test]
+    fn a_cluttered_background_is_blackened_and_the_object_kept() {
+        let (mask, w, h) = square();
+        let beyond = beyond_mask(&mask, w, h, MARGIN_PX);
+        let photo: Vec<f32> = (0..w * h * 3).map(|i| 0.1 + i as f32).collect();
+        let target = black_beyond(Cow::Borrowed(&photo), &beyond);
+        assert!(matches!(target, Cow::Owned(_)));
+        for p in 0..w * h {
+            let expected = if beyond[p] {
+                [0.0; 3]
+            } else {
+                [
+                    0.1 + 3.0 * p as f32,
+                    1.1 + 3.0 * p as f32,
+                    2.1 + 3.0 * p as f32,
+                ]
+            };
+            assert_eq!(&target[3 * p..3 * p + 3], &expected, "pixel {p}");
+        }
+        let [background, object] = background_and_object_sums(&target, &mask, &beyond);
+        assert_eq!(background, (0.0, 3 * (w * h - 7 * 7)));
+        assert_eq!(object.1, 27);
+        // The object's pixels 21–23, 30–32, 39–41: mean of 3p + 1.1 over them.
+        let mean = object.0 / object.1 as f64;
+        assert!((mean - (3.0 * 31.0 + 1.1)).abs() < 1e-4, "{mean}");
+    }
+
+    #[test]
+    fn a_black_background_is_borrowed_untouched() {
+        let (mask, w, h) = square();
+        let beyond = beyond_mask(&mask, w, h, 0);
+        let rendered: Vec<f32> = mask.iter().map(|&m| 0.25 * m).collect();
+        let target = black_beyond(Cow::Borrowed(&rendered), &beyond);
+        assert!(matches!(target, Cow::Borrowed(_)));
+        assert_eq!(target.as_ptr(), rendered.as_ptr());
+        let [background, _] = background_and_object_sums(&rendered, &mask, &beyond);
+        assert_eq!(background.0, 0.0);
+    }
+}

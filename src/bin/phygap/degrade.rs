@@ -1,6 +1,7 @@
 //! `phygap degrade CAPTURE --out DIR [--preset machine-vision] [settings]`: a realistic capture
 //! from a clean one (sensor bit depth and Poisson-Gaussian noise, JPEG, per-view exposure and
-//! white balance, vignetting, pose noise, mask erosion/dilation, a polarizer angle offset); the
+//! white balance, vignetting, pose noise, mask erosion/dilation, a polarizer angle offset, a
+//! cluttered backdrop); the
 //! model is [`phygap::io::capture::degrade`]'s.
 
 use std::path::PathBuf;
@@ -79,6 +80,10 @@ pub struct DegradeArgs {
     /// Polarizer angle offset in degrees (the polarizers sit this far off 0/45/90/135°).
     #[arg(long, allow_hyphen_values = true)]
     pub polarizer_offset_deg: Option<f64>,
+    /// A distant cluttered backdrop behind the object, its mean this fraction of the object's
+    /// bright level (0: black, as rendered); what a photograph shows beyond the mask.
+    #[arg(long)]
+    pub background: Option<f64>,
     /// Seed of every random draw.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
@@ -107,6 +112,7 @@ impl DegradeArgs {
         set(&mut o.rotation_sigma_deg, self.rotation_deg);
         set(&mut o.translation_sigma, self.translation);
         set(&mut o.polarizer_offset_deg, self.polarizer_offset_deg);
+        set(&mut o.background, self.background);
         o.mask_px = self.mask_px.unwrap_or(o.mask_px);
         if let Some(quality) = self.jpeg_quality {
             o.jpeg_quality = quality;

@@ -21,8 +21,9 @@
 //! sRGB JPEG at a quality. Poses get a rotation about the camera centre (σ in degrees) and a
 //! translation (σ as a fraction of the object's radius), each random in direction with a
 //! magnitude of root mean square σ; masks are eroded or dilated by a whole number of pixels drawn
-//! per view in ±their range. Everything random comes from one ChaCha stream seeded by `seed`, in
-//! view order, so a run is reproducible.
+//! per view in ±their range. A distant cluttered backdrop ([`super::backdrop`]) can be put behind
+//! the object before the sensor sees it. Everything random comes from ChaCha streams seeded by
+//! `seed` (one for the backdrop, one for the rest, in view order), so a run is reproducible.
 //!
 //! `degrade.json` beside the new `transforms.json` records the settings, the gain, each view's
 //! exposure, white balance, mask change, true and noisy `transform_matrix`, so a pose-refinement
@@ -38,10 +39,13 @@ use thiserror::Error;
 
 use crate::formats::image_io::{linear_to_srgb, write_exr, write_png, Image, ImageError};
 
+use super::backdrop::Backdrop;
 use super::{CaptureError, Measurement, Split, View};
 
 /// The object's 99.5th percentile of S0 lands at this fraction of full scale (before exposure).
 pub const FULL_SCALE_TARGET: f64 = 0.8;
+/// Mixed into the seed of the backdrop's random stream.
+const BACKDROP_STREAM: u64 = 0xBAC_D209;
 
 /// How the degraded per-angle images are stored.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -83,6 +87,9 @@ pub struct DegradeOptions {
     pub mask_px: u32,
     /// The polarizers sit this many degrees off their nominal 0/45/90/135°.
     pub polarizer_offset_deg: f64,
+    /// A distant cluttered backdrop behind the object ([`super::backdrop`]), its mean this
+    /// fraction of the object's bright level (its 99.5th percentile of S0); 0: black, as rendered.
+    pub background: f64,
     pub seed: u64,
 }
 
@@ -101,6 +108,7 @@ impl Default for DegradeOptions {
             translation_sigma: 0.0,
             mask_px: 0,
             polarizer_offset_deg: 0.0,
+            background: 0.0,
             seed: 0,
         }
     }
@@ -150,6 +158,12 @@ impl DegradeOptions {
             ("white-balance range", self.white_balance_range),
             ("vignetting", self.vignetting),
         ];
+        if !(self.background.is_finite() && (0.0..=4.0).contains(&self.background)) {
+            return bad(format!(
+                "background level {} (expected 0–4 times the object's)",
+                self.background
+            ));
+        }
         for (name, v) in fractions {
             if !(v.is_finite() && (0.0..1.0).contains(&v)) {
                 return bad(format!("{name} {v} (expected a fraction in [0, 1))"));
@@ -448,6 +462,14 @@ pub fn degrade(
     let gain = capture_gain(&capture.views);
     let radius = capture.object_bounds().radius;
     let mut rng = ChaCha8Rng::seed_from_u64(options.seed);
+    // Its own stream: drawing the backdrop takes nothing from the stream of the poses,
+    // exposures, masks and noise.
+    let backdrop = (options.background > 0.0).then(|| {
+        Backdrop::new(
+            options.background * FULL_SCALE_TARGET / gain,
+            options.seed ^ BACKDROP_STREAM,
+        )
+    });
     let extension = match options.format {
         OutputFormat::Exr => "exr",
         OutputFormat::Png => "png",
@@ -474,6 +496,14 @@ pub fn degrade(
             options.translation_sigma * radius,
             &mut rng,
         );
+        let photographed;
+        let s0 = match &backdrop {
+            Some(backdrop) => {
+                photographed = backdrop.behind(s0, &view.mask, &view.camera);
+                &photographed
+            }
+            None => s0,
+        };
         let images = sensed_images(
             [s0, s1, s2],
             gain,
@@ -795,6 +825,47 @@ mod tests {
     }
 
     #[test]
+    fn a_backdrop_shows_beyond_the_mask_and_changes_nothing_else() {
+        let clean = tempfile::tempdir().unwrap();
+        clean_capture(clean.path());
+        let out = tempfile::tempdir().unwrap();
+        let load = |background: f64| {
+            // Without sensor noise, whose Poisson draws take a varying count of random numbers.
+            let options = DegradeOptions {
+                background,
+                seed: 5,
+                full_well: None,
+                read_noise: 0.0,
+                ..DegradeOptions::machine_vision()
+            };
+            let dir = out.path().join(format!("{background}"));
+            let record = degrade(clean.path(), &dir, &options).unwrap();
+            (super::super::load(&dir).unwrap(), record)
+        };
+        let (black, black_record) = load(0.0);
+        let (photographed, record) = load(0.5);
+        for (a, b) in black_record.views.iter().zip(&record.views) {
+            assert_eq!(a.noisy_transform_matrix, b.noisy_transform_matrix);
+            assert_eq!((a.exposure, a.mask_px), (b.exposure, b.mask_px));
+        }
+        let summary = photographed.summary();
+        assert!(black.summary().background_level.unwrap() < 0.05);
+        assert!(summary.background_level.unwrap() > 0.3, "{summary:?}");
+        // The sphere's centre pixel sees no backdrop; a corner does.
+        for (view, clean_view) in photographed.views.iter().zip(&black.views) {
+            let (Measurement::Stokes { s0, .. }, Measurement::Stokes { s0: s0_black, .. }) =
+                (&view.measurement, &clean_view.measurement)
+            else {
+                panic!("Stokes views");
+            };
+            let centre = (16 * 32 + 16) * 3 + 1;
+            let ratio = s0.data[centre] / s0_black.data[centre];
+            assert!((ratio - 1.0).abs() < 0.1, "{}: {ratio}", view.name);
+            assert!(s0.data[1] > s0_black.data[1] + 0.05, "{}", view.name);
+        }
+    }
+
+    #[test]
     fn settings_out_of_range_are_refused() {
         for options in [
             DegradeOptions {
@@ -811,6 +882,14 @@ mod tests {
             },
             DegradeOptions {
                 full_well: Some(0.0),
+                ..DegradeOptions::default()
+            },
+            DegradeOptions {
+                background: f64::NAN,
+                ..DegradeOptions::default()
+            },
+            DegradeOptions {
+                background: -1.0,
                 ..DegradeOptions::default()
             },
         ] {

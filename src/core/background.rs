@@ -3,10 +3,11 @@
 //! Renders are α-premultiplied, black where no surfel is, and the shared captures are rendered the
 //! same way. A photograph is not: beyond the mask it shows the table, the room, the clutter. Fitted
 //! as it is, that background asks the photometric loss for surfels where the mask loss asks for
-//! none, and the two settle on floaters and a grey haze around the object. So the training targets
-//! are made black farther than [`MARGIN_PX`] from the mask: within the margin the images keep their
-//! values, so the colour of an anti-aliased contour, or of an object a mask cuts a pixel too tight,
-//! is still fitted. A capture whose background is already black is left exactly as it was.
+//! none, and the two settle on floaters and a haze around the object. So the training targets are
+//! black wherever the mask says background, the same thing the mask loss says. Where the mask is
+//! not trusted to the pixel (`--mask-edge-px`, [`crate::core::mask_band`]), the images keep their
+//! values within that band, so they, not the mask, place the contour. A capture whose background is
+//! already black is left exactly as it was.
 //!
 //! Threading: single-threaded separable passes over the mask (once per view and run).
 
@@ -14,11 +15,12 @@ use std::borrow::Cow;
 
 use crate::core::mask_band::window_any;
 
-/// Pixels farther than this (Chebyshev distance) from every object pixel are background.
-pub const MARGIN_PX: u32 = 2;
+/// How far beyond the mask [`background_and_object_sums`]'s callers start measuring a capture's
+/// background: past an anti-aliased contour, whose partly covered pixels are the object's.
+pub const MEASURED_BEYOND_PX: u32 = 2;
 
 /// Whether each pixel of a `width × height` `mask` (object where ≥ ½) lies farther than
-/// `margin_px` from every object pixel.
+/// `margin_px` (Chebyshev distance) from every object pixel; with 0, whether it is background.
 pub fn beyond_mask(mask: &[f32], width: usize, height: usize, margin_px: u32) -> Vec<bool> {
     assert_eq!(
         mask.len(),
@@ -120,7 +122,7 @@ mod tests {
     #[test]
     fn a_cluttered_background_is_blackened_and_the_object_kept() {
         let (mask, w, h) = square();
-        let beyond = beyond_mask(&mask, w, h, MARGIN_PX);
+        let beyond = beyond_mask(&mask, w, h, 2);
         let photo: Vec<f32> = (0..w * h * 3).map(|i| 0.1 + i as f32).collect();
         let target = black_beyond(Cow::Borrowed(&photo), &beyond);
         assert!(matches!(target, Cow::Owned(_)));

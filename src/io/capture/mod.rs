@@ -44,7 +44,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::core::background::{background_and_object_sums, beyond_mask, MARGIN_PX};
+use crate::core::background::{background_and_object_sums, beyond_mask, MEASURED_BEYOND_PX};
 use crate::core::camera::Camera;
 use crate::core::polarization_confidence::polarization_confidence;
 use crate::formats::image_io::Image;
@@ -180,7 +180,7 @@ pub struct CaptureSummary {
     /// The mean over those pixels of how far their polarization rises above their view's own
     /// noise (the AoLP prior's confidence, `core::polarization_confidence`, in [0, 1]).
     pub polarization_above_noise: Option<f64>,
-    /// The images' mean beyond the masks (farther than `core::background::MARGIN_PX`) over their
+    /// The images' mean beyond the masks (farther than `core::background::MEASURED_BEYOND_PX`) over their
     /// mean on the object: 0 for a rendered capture, which training fits as it is; a photograph's
     /// background is made black for training. `None` when no view has pixels beyond its mask.
     pub background_level: Option<f64>,
@@ -613,7 +613,7 @@ impl Capture {
             .par_iter()
             .map(|view| {
                 let mask = &view.mask;
-                let beyond = beyond_mask(&mask.data, mask.width, mask.height, MARGIN_PX);
+                let beyond = beyond_mask(&mask.data, mask.width, mask.height, MEASURED_BEYOND_PX);
                 let image = match &view.measurement {
                     Measurement::Stokes { s0: image, .. }
                     | Measurement::Polarizer { image, .. }

@@ -8,7 +8,7 @@
 
 use std::borrow::Cow;
 
-use crate::core::background::{beyond_mask, black_beyond, MARGIN_PX};
+use crate::core::background::{beyond_mask, black_beyond};
 use crate::core::config::{Mode, TrainConfig};
 use crate::core::mask_band::mask_loss_weights;
 use crate::core::polarization_confidence::polarization_confidence;
@@ -52,7 +52,7 @@ pub fn view_target<'a>(
         }
     };
     let (width, height) = (view.mask.width, view.mask.height);
-    let beyond = beyond_mask(&mask, width, height, MARGIN_PX);
+    let beyond = beyond_mask(&mask, width, height, config.mask_edge_px);
     let photometric = black_beyond(photometric, &beyond);
     let stokes = stokes.map(|(s1, s2)| (black_beyond(s1, &beyond), black_beyond(s2, &beyond)));
     let polarization_confidence = match &stokes {
@@ -174,21 +174,28 @@ mod tests {
     #[test]
     fn a_photographed_background_is_black_in_every_target_and_the_object_untouched() {
         let view = stokes_view(0.3);
-        let target = view_target(0, &view, Mode::Full, &TrainConfig::default());
-        let (s1, s2) = target.stokes.as_ref().expect("full Stokes");
-        for (samples, on_object) in [(&target.photometric, 0.5), (s1, 0.1), (s2, -0.1)] {
-            assert!(matches!(samples, Cow::Owned(_)));
-            for (p, pixel) in samples.chunks_exact(3).enumerate() {
-                let (x, y) = (p % 12, p / 12);
-                let expected = if (4..8).contains(&x) && (3..7).contains(&y) {
-                    on_object
-                } else if (2..10).contains(&x) && (1..9).contains(&y) {
-                    // Within MARGIN_PX (2) of the object: the photograph's value.
-                    0.3
-                } else {
-                    0.0
-                };
-                assert_eq!(pixel, [expected; 3], "pixel ({x}, {y})");
+        // By default off the mask is black; with a mask-edge band the images keep their values
+        // within it.
+        for band in [0, 2] {
+            let config = TrainConfig {
+                mask_edge_px: band,
+                ..TrainConfig::default()
+            };
+            let target = view_target(0, &view, Mode::Full, &config);
+            let (s1, s2) = target.stokes.as_ref().expect("full Stokes");
+            for (samples, on_object) in [(&target.photometric, 0.5), (s1, 0.1), (s2, -0.1)] {
+                assert!(matches!(samples, Cow::Owned(_)));
+                for (p, pixel) in samples.chunks_exact(3).enumerate() {
+                    let (x, y) = (p % 12, p / 12);
+                    let expected = if (4..8).contains(&x) && (3..7).contains(&y) {
+                        on_object
+                    } else if band == 2 && (2..10).contains(&x) && (1..9).contains(&y) {
+                        0.3
+                    } else {
+                        0.0
+                    };
+                    assert_eq!(pixel, [expected; 3], "band {band}, pixel ({x}, {y})");
+                }
             }
         }
     }

@@ -59,9 +59,7 @@ pub fn run(args: &TrainArgs, matches: &clap::ArgMatches) -> Result<()> {
     let config = args.config(matches)?;
     let engine = train::engine_for(&config)?;
     let capture = train::load_capture(&args.capture, &config, &engine, &CaptureLimits::DEFAULT)?;
-    for warning in &capture.warnings {
-        eprintln!("warning: {warning}");
-    }
+    // The capture's warnings are already on stderr: loading logs each one.
     let cancel = Arc::new(AtomicBool::new(false));
     {
         let cancel = cancel.clone();

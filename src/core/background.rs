@@ -35,9 +35,11 @@ pub fn beyond_mask(mask: &[f32], width: usize, height: usize, margin_px: u32) ->
 }
 
 /// Interleaved `samples` (any channel count) with every pixel that is `beyond` made 0: borrowed
-/// unchanged when those pixels are already 0, a copy otherwise.
+/// unchanged when those pixels are already 0 (or the sizes disagree), a copy otherwise.
 pub fn black_beyond<'a>(samples: Cow<'a, [f32]>, beyond: &[bool]) -> Cow<'a, [f32]> {
-    let channels = channels_of(&samples, beyond);
+    let Some(channels) = channels_of(&samples, beyond) else {
+        return samples;
+    };
     if !samples
         .chunks_exact(channels)
         .zip(beyond)
@@ -58,14 +60,17 @@ pub fn black_beyond<'a>(samples: Cow<'a, [f32]>, beyond: &[bool]) -> Cow<'a, [f3
 
 /// The mean of `samples` over the `beyond` pixels and over the object's (the `mask` at ½ or
 /// more), all channels together, as (sum, count) pairs that add across views: a rendered capture's
-/// background mean is 0, a photograph's is often as bright as its object.
+/// background mean is 0, a photograph's is often as bright as its object. Zero counts where the
+/// sizes disagree.
 pub fn background_and_object_sums(
     samples: &[f32],
     mask: &[f32],
     beyond: &[bool],
 ) -> [(f64, usize); 2] {
-    let channels = channels_of(samples, beyond);
     let mut sums = [(0.0, 0); 2];
+    let Some(channels) = channels_of(samples, beyond) else {
+        return sums;
+    };
     for ((pixel, &m), &b) in samples.chunks_exact(channels).zip(mask).zip(beyond) {
         let which = match (b, m >= 0.5) {
             (true, _) => 0,
@@ -78,14 +83,17 @@ pub fn background_and_object_sums(
     sums
 }
 
-fn channels_of(samples: &[f32], beyond: &[bool]) -> usize {
-    assert!(
-        !beyond.is_empty() && samples.len().is_multiple_of(beyond.len()),
-        "black_beyond: {} samples for {} pixels",
+/// Samples per pixel, when `samples` is a whole number of them for the `beyond` pixels (a
+/// loaded capture's images and masks always agree).
+fn channels_of(samples: &[f32], beyond: &[bool]) -> Option<usize> {
+    let agree = !beyond.is_empty() && samples.len().is_multiple_of(beyond.len());
+    debug_assert!(
+        agree,
+        "{} samples for {} pixels",
         samples.len(),
         beyond.len()
     );
-    samples.len() / beyond.len()
+    agree.then(|| samples.len() / beyond.len())
 }
 
 #[cfg(test)]

@@ -845,6 +845,25 @@ impl UvAtlas {
 mod tests {
     use super::*;
 
+    /// Two triangles per quad of `mesh`'s vertices laid out as `rings` rings of `sides`, closed
+    /// both ways (the last ring joins the first, the last side each ring's first), then normals.
+    fn close_ring_grid(mesh: &mut TriangleMesh, rings: u32, sides: u32) {
+        let index = |i: u32, j: u32| (i % rings) * sides + (j % sides);
+        for i in 0..rings {
+            for j in 0..sides {
+                let (a, b, c, d) = (
+                    index(i, j),
+                    index(i + 1, j),
+                    index(i + 1, j + 1),
+                    index(i, j + 1),
+                );
+                mesh.triangles.push([a, b, c]);
+                mesh.triangles.push([a, c, d]);
+            }
+        }
+        mesh.compute_vertex_normals();
+    }
+
     /// A torus (major radius 1, minor 0.35) of `rings` × `sides` quads: curved both ways, with a
     /// hole, so that no single projection covers it.
     fn torus(rings: u32, sides: u32) -> TriangleMesh {
@@ -860,20 +879,7 @@ mod tests {
                     .push([r * a.cos(), r * a.sin(), 0.35 * b.sin()]);
             }
         }
-        let index = |i: u32, j: u32| (i % rings) * sides + (j % sides);
-        for i in 0..rings {
-            for j in 0..sides {
-                let (a, b, c, d) = (
-                    index(i, j),
-                    index(i + 1, j),
-                    index(i + 1, j + 1),
-                    index(i, j + 1),
-                );
-                mesh.triangles.push([a, b, c]);
-                mesh.triangles.push([a, c, d]);
-            }
-        }
-        mesh.compute_vertex_normals();
+        close_ring_grid(&mut mesh, rings, sides);
         mesh
     }
 
@@ -1027,20 +1033,7 @@ mod tests {
                 mesh.vertices.push(p.to_array());
             }
         }
-        let index = |i: u32, j: u32| (i % rings) * sides + (j % sides);
-        for i in 0..rings {
-            for j in 0..sides {
-                let (a, b, c, d) = (
-                    index(i, j),
-                    index(i + 1, j),
-                    index(i + 1, j + 1),
-                    index(i, j + 1),
-                );
-                mesh.triangles.push([a, b, c]);
-                mesh.triangles.push([a, c, d]);
-            }
-        }
-        mesh.compute_vertex_normals();
+        close_ring_grid(&mut mesh, rings, sides);
         mesh
     }
 

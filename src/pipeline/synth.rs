@@ -296,19 +296,17 @@ fn render_view(
     for j in 0..h {
         for i in 0..w {
             let px = j * w + i;
-            for (img, val) in
-                v.s.iter_mut()
-                    .zip(pixel_stokes(options, camera, env, lut, i, j))
-            {
+            let d = camera.pixel_dir(i as u32, j as u32);
+            let centre = trace(options.shape, origin, d).map(|t| (d, origin + d * t));
+            let stokes = pixel_stokes(options, camera, env, lut, (i, j), centre);
+            for (img, val) in v.s.iter_mut().zip(stokes) {
                 img.data[px * 3..px * 3 + 3].copy_from_slice(&val.as_vec3().to_array());
             }
             // The ground truth is the surface the pixel's centre ray hits, as in the shared
             // captures.
-            let d = camera.pixel_dir(i as u32, j as u32);
-            let Some(t) = trace(options.shape, origin, d) else {
+            let Some((_, p)) = centre else {
                 continue;
             };
-            let p = origin + d * t;
             v.mask.data[px] = 1.0;
             let n = surface_normal(options.shape, p);
             v.normal.data[px * 3..px * 3 + 3].copy_from_slice(&n.as_vec3().to_array());
@@ -329,13 +327,14 @@ const EDGE_SUBSAMPLES: usize = 4;
 /// and the shared captures' renderer integrate; the background is black): one ray through the
 /// centre where the four corner rays agree on what they hit (nothing, or the same albedo),
 /// [`EDGE_SUBSAMPLES`]² stratified rays where the silhouette or an albedo edge crosses it.
+/// `centre` is what the centre ray hits (its direction and the point), already traced.
 fn pixel_stokes(
     options: &SynthOptions,
     camera: &Camera,
     env: &PreparedEnv,
     lut: &BrdfLut,
-    i: usize,
-    j: usize,
+    (i, j): (usize, usize),
+    centre: Option<(DVec3, DVec3)>,
 ) -> [DVec3; 3] {
     let origin = camera.origin();
     let seen = |u: f64, v: f64| {
@@ -361,7 +360,7 @@ fn pixel_stokes(
     let corners = [(x, y), (x + 1.0, y), (x, y + 1.0), (x + 1.0, y + 1.0)]
         .map(|(u, v)| seen(u, v).map(|(_, p)| albedo_at(options, p)));
     if corners.iter().all(|c| *c == corners[0]) {
-        return match seen(x + 0.5, y + 0.5) {
+        return match centre {
             Some((d, p)) => shade_at(d, p),
             None => [DVec3::ZERO; 3],
         };

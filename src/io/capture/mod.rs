@@ -180,9 +180,9 @@ pub struct CaptureSummary {
     /// The mean over those pixels of how far their polarization rises above their view's own
     /// noise (the AoLP prior's confidence, `core::polarization_confidence`, in [0, 1]).
     pub polarization_above_noise: Option<f64>,
-    /// The images' mean beyond the masks (farther than `core::background::MEASURED_BEYOND_PX`) over their
-    /// mean on the object: 0 for a rendered capture, which training fits as it is; a photograph's
-    /// background is made black for training. `None` when no view has pixels beyond its mask.
+    /// The images' mean beyond the masks (farther than `core::background::MEASURED_BEYOND_PX`)
+    /// over their mean on the object: 0 for a rendered capture; a photograph's background, which
+    /// training makes black. `None` when no view has pixels beyond its mask.
     pub background_level: Option<f64>,
     pub raw: Option<RawReport>,
     pub colmap: Option<ColmapReport>,

@@ -108,27 +108,38 @@ pub struct DensifyPlan {
 }
 
 /// Plans one densify-and-prune pass.
+///
+/// Surfels that are transparent or oversized are pruned; of the rest, those whose mean gradient
+/// reaches the threshold grow (a clone or a split adds one surfel each). When they are more than
+/// the cap leaves room for (counted after pruning), the room goes to the largest gradients, so
+/// the detail a run still lacks is where it grows at its budget, whatever order the surfels are
+/// stored in.
 pub fn plan(surfels: &Surfels, stats: &DensifyStats, rules: &DensifyRules) -> DensifyPlan {
     let n = surfels.len();
-    let mut keep = vec![true; n];
-    let mut clone = Vec::new();
-    let mut split = Vec::new();
-    let mut budget = rules.max_surfels.saturating_sub(n);
-    for (i, kept) in keep.iter_mut().enumerate() {
-        let max_scale = surfels.log_scale[i][0].max(surfels.log_scale[i][1]).exp();
-        let opacity = sigmoid(surfels.opacity[i]);
-        if opacity < rules.prune_opacity || max_scale > rules.prune_scale {
-            *kept = false;
-        } else if stats.mean(i) >= rules.grad_threshold && budget > 0 {
-            // A clone adds one surfel; a split replaces one by two: both grow the count by one.
-            budget -= 1;
-            if max_scale <= rules.split_scale {
-                clone.push(i);
-            } else {
-                split.push(i);
-            }
+    let keep: Vec<bool> = (0..n)
+        .map(|i| {
+            sigmoid(surfels.opacity[i]) >= rules.prune_opacity
+                && larger_scale(surfels, i) <= rules.prune_scale
+        })
+        .collect();
+    let kept = keep.iter().filter(|k| **k).count();
+    let room = rules.max_surfels.saturating_sub(kept);
+    let mut growing: Vec<usize> = (0..n)
+        .filter(|&i| keep[i] && stats.mean(i) >= rules.grad_threshold)
+        .collect();
+    if growing.len() > room {
+        // Largest mean gradient first; ties by index, so a plan is a function of its inputs.
+        let by_gradient =
+            |a: &usize, b: &usize| stats.mean(*b).total_cmp(&stats.mean(*a)).then(a.cmp(b));
+        if room > 0 {
+            growing.select_nth_unstable_by(room - 1, by_gradient);
         }
+        growing.truncate(room);
+        growing.sort_unstable();
     }
+    let (clone, split): (Vec<usize>, Vec<usize>) = growing
+        .into_iter()
+        .partition(|&i| larger_scale(surfels, i) <= rules.split_scale);
     // Indices after `retain(keep)`: split parents survive it and are dropped by `apply` once their
     // two children have been appended.
     let mut remap = vec![usize::MAX; n];
@@ -150,6 +161,11 @@ pub fn plan(surfels: &Surfels, stats: &DensifyStats, rules: &DensifyRules) -> De
         cloned: clone.len(),
         split: split.len(),
     }
+}
+
+/// Surfel `i`'s larger scale, in scene units.
+fn larger_scale(surfels: &Surfels, i: usize) -> f64 {
+    surfels.log_scale[i][0].max(surfels.log_scale[i][1]).exp()
 }
 
 /// Applies a plan to the surfels: retain, append copies, move split children apart inside their
@@ -267,6 +283,25 @@ mod tests {
         let rules = DensifyRules::for_extent(1.0, 2e-4, 0.0, 4);
         let plan = plan(&s, &stats, &rules);
         assert_eq!(plan.cloned + plan.split, 0);
+    }
+
+    #[test]
+    fn at_the_cap_the_largest_gradients_grow() {
+        let s = scene();
+        let mut stats = DensifyStats::new(4);
+        // Surfel 3 has the largest gradient, surfel 0 the smallest above the threshold.
+        stats.add_view(&[3e-4, 5e-4, 1e-3, 9e-4], 100, 100);
+        // Surfel 2 is pruned (transparent), which leaves room for two of the three others.
+        let rules = DensifyRules::for_extent(1.0, 2e-4, 0.05, 5);
+        let plan = plan(&s, &stats, &rules);
+        assert_eq!(plan.pruned, 1);
+        assert_eq!(
+            (plan.cloned, plan.split),
+            (0, 2),
+            "surfels 1 and 3, both large"
+        );
+        // After `retain`, surfels 1 and 3 are at 1 and 2; each split appends two children.
+        assert_eq!(plan.append_from, vec![1, 1, 2, 2]);
     }
 
     #[test]

@@ -42,6 +42,9 @@ pub struct EvalReport {
     /// fraction of the object's radius.
     pub pose_error_deg: Option<f64>,
     pub pose_error_radius: Option<f64>,
+    /// The mean image distance, in the capture's pixels, between where the model's training
+    /// cameras and the capture's see the model's opaque surfels.
+    pub pose_error_px: Option<f64>,
     pub num_surfels: usize,
     pub train_seconds: Option<f64>,
     /// Learned angle per `polarizer_group`, degrees in [0, 180).
@@ -63,11 +66,28 @@ pub enum EvalError {
     Mesh(#[from] crate::core::mesh::MeshError),
 }
 
-/// The mean rotation error (degrees) and centre distance (fraction of the object's radius) of a
-/// model's training cameras against the training views of `capture`, paired by name, or in order
-/// where the names differ but the counts agree (a copy of the capture written by `phygap
-/// degrade`, evaluated against the clean one); `None` when they cannot be paired.
-pub fn pose_errors(cameras: &[(String, Camera)], capture: &Capture) -> Option<(f64, f64)> {
+/// How far a model's training cameras are from a capture's ([`pose_errors`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PoseErrors {
+    /// The mean angle between the paired cameras' rotations, in degrees.
+    pub angle_deg: f64,
+    /// The mean distance between their centres, as a fraction of the object's radius.
+    pub distance_radius: f64,
+    /// The mean distance, in the capture's pixels, between where the two cameras of a pair see
+    /// the same points of the object: what the errors do to the images, in which a rotation and a
+    /// translation that shift the object alike cancel. `None` without points in front of both.
+    pub image_px: Option<f64>,
+}
+
+/// The errors of a model's training cameras against the training views of `capture`, paired by
+/// name, or in order where the names differ but the counts agree (a copy of the capture written by
+/// `phygap degrade`, evaluated against the clean one); `None` when they cannot be paired. The
+/// image distance is taken over `points` (the object's, in world units).
+pub fn pose_errors(
+    cameras: &[(String, Camera)],
+    capture: &Capture,
+    points: &[DVec3],
+) -> Option<PoseErrors> {
     let train: Vec<&View> = capture.train_views().collect();
     let by_name: Option<Vec<&View>> = cameras
         .iter()
@@ -87,8 +107,33 @@ pub fn pose_errors(cameras: &[(String, Camera)], capture: &Capture) -> Option<(f
         .zip(&pairs)
         .map(|((_, camera), view)| pose_error(camera, &view.camera))
         .fold((0.0, 0.0), |(a, d), (da, dd)| (a + da, d + dd));
+    let image: Vec<f64> = cameras
+        .iter()
+        .zip(&pairs)
+        .filter_map(|((_, camera), view)| image_displacement(camera, &view.camera, points))
+        .collect();
     let n = pairs.len() as f64;
-    Some((angle / n, distance / n / radius))
+    Some(PoseErrors {
+        angle_deg: angle / n,
+        distance_radius: distance / n / radius,
+        image_px: (!image.is_empty()).then(|| image.iter().sum::<f64>() / image.len() as f64),
+    })
+}
+
+/// The mean distance in `truth`'s pixels between where `camera` (at any resolution of the same
+/// view) and `truth` see `points`; `None` when no point is in front of both.
+fn image_displacement(camera: &Camera, truth: &Camera, points: &[DVec3]) -> Option<f64> {
+    let sx = f64::from(truth.width) / f64::from(camera.width);
+    let sy = f64::from(truth.height) / f64::from(camera.height);
+    let (sum, count) = points
+        .iter()
+        .filter_map(|&x| {
+            let (u, v, _) = camera.project(x)?;
+            let (ut, vt, _) = truth.project(x)?;
+            Some((u * sx - ut).hypot(v * sy - vt))
+        })
+        .fold((0.0, 0usize), |(s, c), d| (s + d, c + 1));
+    (count > 0).then(|| sum / count as f64)
 }
 
 /// Mean S0 PSNR and SSIM (sRGB 8-bit, inside the mask) of `relit` — a scene lit by the capture's
@@ -461,6 +506,7 @@ pub fn evaluate_scaled(
         relight_psnr: None,
         pose_error_deg: None,
         pose_error_radius: None,
+        pose_error_px: None,
         relight_ssim: None,
         chamfer: None,
         num_surfels: scene.surfels.len(),
@@ -471,4 +517,53 @@ pub fn evaluate_scaled(
             .collect(),
         test_views: tests.len(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn points() -> Vec<DVec3> {
+        (0..50)
+            .map(|k| {
+                let a = f64::from(k) * 0.7;
+                DVec3::new(0.5 * a.cos(), 0.5 * a.sin(), 0.3 * (a * 1.3).sin())
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_image_displacement_is_in_the_true_cameras_pixels() {
+        let eye = DVec3::new(0.4, -3.0, 1.2);
+        let truth = Camera::look_at(64, 48, 0.8, eye, DVec3::ZERO, DVec3::Z);
+        let d = |camera: &Camera| image_displacement(camera, &truth, &points()).unwrap();
+        assert!(d(&truth) < 1e-12);
+        // The same view at half the resolution sees every point where the truth does.
+        let half = Camera {
+            width: 32,
+            height: 24,
+            fx: truth.fx / 2.0,
+            fy: truth.fy / 2.0,
+            cx: truth.cx / 2.0,
+            cy: truth.cy / 2.0,
+            ..truth
+        };
+        assert!(d(&half) < 1e-12);
+        // A principal point 1.5 px right and 2 px down moves every point by 2.5 px; at half the
+        // resolution the same move in the half-size image is 5 px in the truth's.
+        let moved = Camera {
+            cx: truth.cx + 1.5,
+            cy: truth.cy + 2.0,
+            ..truth
+        };
+        assert!((d(&moved) - 2.5).abs() < 1e-9);
+        let moved_half = Camera {
+            cx: half.cx + 1.5,
+            cy: half.cy + 2.0,
+            ..half
+        };
+        assert!((d(&moved_half) - 5.0).abs() < 1e-9);
+        // Points behind either camera count for nothing.
+        assert_eq!(image_displacement(&truth, &truth, &[eye * 2.0]), None);
+    }
 }

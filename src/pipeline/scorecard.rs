@@ -8,8 +8,10 @@
 
 use std::path::{Path, PathBuf};
 
+use glam::DVec3;
 use thiserror::Error;
 
+use crate::core::surfels::sigmoid;
 use crate::io::capture::{Capture, SceneMaps};
 use crate::io::model::Model;
 use crate::pipeline::evaluate::{self, EvalError, EvalReport};
@@ -74,9 +76,12 @@ pub fn score(
     let reconstruction = Reconstruction::new(model.clone())?;
     let mut report = reconstruction.evaluate(capture)?;
     report.train_seconds = Some(model.info.train_seconds);
-    if let Some((angle, distance)) = evaluate::pose_errors(&model.train_cameras, capture) {
-        report.pose_error_deg = Some(angle);
-        report.pose_error_radius = Some(distance);
+    if let Some(errors) =
+        evaluate::pose_errors(&model.train_cameras, capture, &opaque_points(model))
+    {
+        report.pose_error_deg = Some(errors.angle_deg);
+        report.pose_error_radius = Some(errors.distance_radius);
+        report.pose_error_px = errors.image_px;
     }
     if let Some(envmap) = &truth.relight_envmap {
         // GridMap's mesh depends on the surfels alone: the relit copy reuses it.
@@ -89,6 +94,21 @@ pub fn score(
         report.chamfer = Some(evaluate::chamfer_to_gt(&mesh, gt)?);
     }
     Ok(report)
+}
+
+/// At most this many surfels stand for the object where the pose errors are seen in the images.
+const POSE_POINTS: usize = 4096;
+
+/// The centres of the model's opaque surfels (opacity above ½), evenly thinned to
+/// [`POSE_POINTS`].
+fn opaque_points(model: &Model) -> Vec<DVec3> {
+    let surfels = &model.surfels;
+    let opaque: Vec<DVec3> = (0..surfels.len())
+        .filter(|&i| sigmoid(surfels.opacity[i]) > 0.5)
+        .map(|i| DVec3::from_array(surfels.position[i]))
+        .collect();
+    let stride = opaque.len().div_ceil(POSE_POINTS).max(1);
+    opaque.into_iter().step_by(stride).collect()
 }
 
 #[cfg(test)]

@@ -92,5 +92,6 @@ pub fn print_table(report: &EvalReport) {
     println!("Chamfer-L1      {}", fmt(report.chamfer));
     println!("pose error (°)  {}", fmt(report.pose_error_deg));
     println!("pose error (r)  {}", fmt(report.pose_error_radius));
+    println!("pose error (px) {}", fmt(report.pose_error_px));
     println!("surfels         {}", report.num_surfels);
 }

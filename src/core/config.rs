@@ -356,7 +356,7 @@ pub struct TrainConfig {
 
     /// Most triangles of the exported mesh (`model.glb`): the dense mesh is simplified by quadric
     /// error collapses to this budget, or further where the surface is smooth enough (an error of
-    /// a quarter TSDF voxel); 0 keeps the dense mesh. `mesh.ply` stays dense.
+    /// an eighth of a TSDF voxel); 0 keeps the dense mesh. `mesh.ply` stays dense.
     #[arg(long, default_value_t = TrainConfig::default().mesh_triangles)]
     pub mesh_triangles: u32,
 

@@ -8,6 +8,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
+use phygap::core::background::DARK_BACKGROUND_LEVEL;
 use phygap::core::resolution::Resolution;
 use phygap::io::capture::conventions::{self, ConventionsReport};
 use phygap::io::capture::{self, CaptureSummary};
@@ -95,10 +96,12 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
         text.push_str(&format!(
             "background  {:.2} of the object's mean brightness beyond the masks{}\n",
             level,
-            if level > 0.0 {
-                " (black in the training targets: the model holds only the object)"
-            } else {
+            if level == 0.0 {
                 " (black, as rendered)"
+            } else if level <= DARK_BACKGROUND_LEVEL {
+                " (dark: the training targets keep the images whole, so a mask that misses the object's rim does not black it out)"
+            } else {
+                " (black in the training targets: the model holds only the object)"
             }
         ));
     }

@@ -182,7 +182,8 @@ pub struct CaptureSummary {
     pub polarization_above_noise: Option<f64>,
     /// The images' mean beyond the masks (farther than `core::background::MEASURED_BEYOND_PX`)
     /// over their mean on the object: 0 for a rendered capture; a photograph's background, which
-    /// training makes black. `None` when no view has pixels beyond its mask.
+    /// training makes black unless it is dark (`core::background::DARK_BACKGROUND_LEVEL`). `None`
+    /// when no view has pixels beyond its mask.
     pub background_level: Option<f64>,
     pub raw: Option<RawReport>,
     pub colmap: Option<ColmapReport>,

@@ -1,5 +1,5 @@
 //! What each view is fitted to, borrowed from the capture's views (copied only where an image
-//! is not RGB, or shows a background beyond the mask, which is made black:
+//! is not RGB, or shows a background beyond the mask that is not dark, which is made black:
 //! [`crate::core::background`]): the photometric target (S0, an image behind a polarizer, or a
 //! plain image), S1/S2 where the view has full Stokes and the run uses them, the mask, and which
 //! polarizer angle (known or learned) the view was taken behind; and, from the run's settings, how
@@ -8,7 +8,7 @@
 
 use std::borrow::Cow;
 
-use crate::core::background::{beyond_mask, black_beyond};
+use crate::core::background::{beyond_mask, black_beyond, is_dark_background};
 use crate::core::config::{Mode, TrainConfig};
 use crate::core::mask_band::mask_loss_weights;
 use crate::core::polarization_confidence::polarization_confidence;
@@ -52,9 +52,15 @@ pub fn view_target<'a>(
         }
     };
     let (width, height) = (view.mask.width, view.mask.height);
-    let beyond = beyond_mask(&mask, width, height, config.mask_edge_px);
-    let photometric = black_beyond(photometric, &beyond);
-    let stokes = stokes.map(|(s1, s2)| (black_beyond(s1, &beyond), black_beyond(s2, &beyond)));
+    let (photometric, stokes) = if is_dark_background(&photometric, &mask, width, height) {
+        (photometric, stokes)
+    } else {
+        let beyond = beyond_mask(&mask, width, height, config.mask_edge_px);
+        (
+            black_beyond(photometric, &beyond),
+            stokes.map(|(s1, s2)| (black_beyond(s1, &beyond), black_beyond(s2, &beyond))),
+        )
+    };
     let polarization_confidence = match &stokes {
         Some((s1, s2)) if config.polarization_snr => Some(polarization_confidence(
             &photometric,
@@ -196,6 +202,32 @@ mod tests {
                     };
                     assert_eq!(pixel, [expected; 3], "band {band}, pixel ({x}, {y})");
                 }
+            }
+        }
+    }
+
+    /// A view over a dark backdrop (its noise at 2 % of the object's brightness) whose mask is
+    /// eroded by a pixel keeps its images whole, the object's rim included; at 6 % the backdrop
+    /// is no longer dark and is made black.
+    #[test]
+    fn a_dark_background_keeps_the_rim_an_eroded_mask_misses() {
+        for (background, dark) in [(0.01, true), (0.03, false)] {
+            let mut view = stokes_view(background);
+            view.mask = Image::from_fn(12, 10, 1, |x, y, out| {
+                out[0] = f32::from(u8::from((5..7).contains(&x) && (4..6).contains(&y)))
+            });
+            let target = view_target(0, &view, Mode::Full, &TrainConfig::default());
+            let rim = 3 * (3 * 12 + 4);
+            let far = 0;
+            if dark {
+                assert!(matches!(target.photometric, Cow::Borrowed(_)));
+                assert_eq!(target.photometric[rim], 0.5);
+                assert_eq!(target.photometric[far], background);
+                let (s1, _) = target.stokes.as_ref().unwrap();
+                assert_eq!(s1[rim], 0.1);
+            } else {
+                assert_eq!(target.photometric[rim], 0.0);
+                assert_eq!(target.photometric[far], 0.0);
             }
         }
     }

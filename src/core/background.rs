@@ -9,8 +9,10 @@
 //! values within that band, so they, not the mask, place the contour.
 //!
 //! A view whose background is dark ([`is_dark_background`]: a rendered capture, a black backdrop,
-//! a sensor's noise) is left exactly as it was: blacking it out would change only the pixels where
-//! the mask is wrong, and where a mask is eroded those are the object's rim.
+//! a sensor's noise) keeps its images within [`DARK_RIM_PX`] of the mask: blacking out a dark
+//! background changes only the pixels where the mask is wrong, and next to an eroded mask those
+//! are the object's rim. Farther out only the noise is left, and it is made black like any
+//! background (fitted, it grows a haze of faint surfels around the object).
 //!
 //! Threading: single-threaded separable passes over the mask (once per view and run).
 
@@ -22,10 +24,14 @@ use crate::core::mask_band::window_any;
 /// background: past an anti-aliased contour, whose partly covered pixels are the object's.
 pub const MEASURED_BEYOND_PX: u32 = 2;
 
-/// Background at most this fraction of the object's mean brightness is dark: the images stay
-/// whole. A sensor's noise over a black backdrop reads 0.03 (12 bits, read noise 0.5 % of full
+/// Background at most this fraction of the object's mean brightness is dark: the images keep a
+/// rim of [`DARK_RIM_PX`] beyond the mask. A sensor's noise over a black backdrop reads 0.03 (12 bits, read noise 0.5 % of full
 /// scale); a photographed table and room read about as bright as the object.
 pub const DARK_BACKGROUND_LEVEL: f64 = 0.05;
+
+/// How far beyond the mask a dark background keeps its values: masks a pixel or two short of
+/// the object (matting, a threshold, a mask drawn at another resolution) leave its rim there.
+pub const DARK_RIM_PX: u32 = 2;
 
 /// Whether the view whose interleaved `samples` and `mask` (object where ≥ ½) these are shows a
 /// dark background: its mean farther than [`MEASURED_BEYOND_PX`] beyond the mask at most

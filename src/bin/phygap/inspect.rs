@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
-use phygap::core::background::DARK_BACKGROUND_LEVEL;
+use phygap::core::background::{DARK_BACKGROUND_LEVEL, DARK_RIM_PX};
 use phygap::core::resolution::Resolution;
 use phygap::io::capture::conventions::{self, ConventionsReport};
 use phygap::io::capture::{self, CaptureSummary};
@@ -93,16 +93,18 @@ fn describe(root: &std::path::Path, s: &CaptureSummary) -> String {
         ));
     }
     if let Some(level) = s.background_level {
+        let meaning = if level == 0.0 {
+            " (black, as rendered)".to_owned()
+        } else if level <= DARK_BACKGROUND_LEVEL {
+            format!(
+                " (dark: the training targets keep the images within {DARK_RIM_PX} px of the masks, \
+                 where a mask short of the object leaves its rim, and are black farther out)"
+            )
+        } else {
+            " (black in the training targets: the model holds only the object)".to_owned()
+        };
         text.push_str(&format!(
-            "background  {:.2} of the object's mean brightness beyond the masks{}\n",
-            level,
-            if level == 0.0 {
-                " (black, as rendered)"
-            } else if level <= DARK_BACKGROUND_LEVEL {
-                " (dark: the training targets keep the images whole, so a mask that misses the object's rim does not black it out)"
-            } else {
-                " (black in the training targets: the model holds only the object)"
-            }
+            "background  {level:.2} of the object's mean brightness beyond the masks{meaning}\n"
         ));
     }
     if let Some(raw) = &s.raw {

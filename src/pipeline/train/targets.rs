@@ -1,14 +1,14 @@
 //! What each view is fitted to, borrowed from the capture's views (copied only where an image
-//! is not RGB, or shows a background beyond the mask that is not dark, which is made black:
-//! [`crate::core::background`]): the photometric target (S0, an image behind a polarizer, or a
-//! plain image), S1/S2 where the view has full Stokes and the run uses them, the mask, and which
-//! polarizer angle (known or learned) the view was taken behind; and, from the run's settings, how
-//! far each pixel's polarization can be trusted and where the mask loss leaves the mask's edge
-//! alone.
+//! is not RGB, or shows a background beyond the mask, which is made black, past a rim of a few
+//! pixels where the background is dark: [`crate::core::background`]): the photometric target
+//! (S0, an image behind a polarizer, or a plain image), S1/S2 where the view has full Stokes and
+//! the run uses them, the mask, and which polarizer angle (known or learned) the view was taken
+//! behind; and, from the run's settings, how far each pixel's polarization can be trusted and
+//! where the mask loss leaves the mask's edge alone.
 
 use std::borrow::Cow;
 
-use crate::core::background::{beyond_mask, black_beyond, is_dark_background};
+use crate::core::background::{beyond_mask, black_beyond, is_dark_background, DARK_RIM_PX};
 use crate::core::config::{Mode, TrainConfig};
 use crate::core::mask_band::mask_loss_weights;
 use crate::core::polarization_confidence::polarization_confidence;
@@ -52,15 +52,14 @@ pub fn view_target<'a>(
         }
     };
     let (width, height) = (view.mask.width, view.mask.height);
-    let (photometric, stokes) = if is_dark_background(&photometric, &mask, width, height) {
-        (photometric, stokes)
+    let kept_px = if is_dark_background(&photometric, &mask, width, height) {
+        config.mask_edge_px.max(DARK_RIM_PX)
     } else {
-        let beyond = beyond_mask(&mask, width, height, config.mask_edge_px);
-        (
-            black_beyond(photometric, &beyond),
-            stokes.map(|(s1, s2)| (black_beyond(s1, &beyond), black_beyond(s2, &beyond))),
-        )
+        config.mask_edge_px
     };
+    let beyond = beyond_mask(&mask, width, height, kept_px);
+    let photometric = black_beyond(photometric, &beyond);
+    let stokes = stokes.map(|(s1, s2)| (black_beyond(s1, &beyond), black_beyond(s2, &beyond)));
     let polarization_confidence = match &stokes {
         Some((s1, s2)) if config.polarization_snr => Some(polarization_confidence(
             &photometric,
@@ -207,8 +206,9 @@ mod tests {
     }
 
     /// A view over a dark backdrop (its noise at 2 % of the object's brightness) whose mask is
-    /// eroded by a pixel keeps its images whole, the object's rim included; at 6 % the backdrop
-    /// is no longer dark and is made black.
+    /// eroded by a pixel keeps the object's rim that the mask misses, and the backdrop within two
+    /// pixels of the mask; farther out the noise is black. At 6 % the backdrop is no longer dark
+    /// and is black from the mask's edge, rim and all.
     #[test]
     fn a_dark_background_keeps_the_rim_an_eroded_mask_misses() {
         for (background, dark) in [(0.01, true), (0.03, false)] {
@@ -217,18 +217,21 @@ mod tests {
                 out[0] = f32::from(u8::from((5..7).contains(&x) && (4..6).contains(&y)))
             });
             let target = view_target(0, &view, Mode::Full, &TrainConfig::default());
-            let rim = 3 * (3 * 12 + 4);
-            let far = 0;
+            let (s1, _) = target.stokes.as_ref().unwrap();
+            let at = |x: usize, y: usize| 3 * (y * 12 + x);
+            // (4, 3): the object, a pixel outside the mask; (3, 3): the backdrop, two pixels
+            // outside; (2, 3) and (0, 0): the backdrop, farther.
             if dark {
-                assert!(matches!(target.photometric, Cow::Borrowed(_)));
-                assert_eq!(target.photometric[rim], 0.5);
-                assert_eq!(target.photometric[far], background);
-                let (s1, _) = target.stokes.as_ref().unwrap();
-                assert_eq!(s1[rim], 0.1);
+                assert_eq!(target.photometric[at(4, 3)], 0.5);
+                assert_eq!(s1[at(4, 3)], 0.1);
+                assert_eq!(target.photometric[at(3, 3)], background);
             } else {
-                assert_eq!(target.photometric[rim], 0.0);
-                assert_eq!(target.photometric[far], 0.0);
+                assert_eq!(target.photometric[at(4, 3)], 0.0);
+                assert_eq!(s1[at(4, 3)], 0.0);
+                assert_eq!(target.photometric[at(3, 3)], 0.0);
             }
+            assert_eq!(target.photometric[at(2, 3)], 0.0);
+            assert_eq!(target.photometric[at(0, 0)], 0.0);
         }
     }
 

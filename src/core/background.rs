@@ -25,8 +25,9 @@ use crate::core::mask_band::window_any;
 pub const MEASURED_BEYOND_PX: u32 = 2;
 
 /// Background at most this fraction of the object's mean brightness is dark: the images keep a
-/// rim of [`DARK_RIM_PX`] beyond the mask. A sensor's noise over a black backdrop reads 0.03 (12 bits, read noise 0.5 % of full
-/// scale); a photographed table and room read about as bright as the object.
+/// rim of [`DARK_RIM_PX`] beyond the mask. A sensor's noise over a black backdrop reads 0.03
+/// (12 bits, read noise 0.5 % of full scale); a photographed table and room read about as bright
+/// as the object.
 pub const DARK_BACKGROUND_LEVEL: f64 = 0.05;
 
 /// How far beyond the mask a dark background keeps its values: masks a pixel or two short of

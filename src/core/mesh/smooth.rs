@@ -29,10 +29,10 @@ pub struct SmoothParams {
 }
 
 impl Default for SmoothParams {
-    /// Sixteen passes: on the default runs' meshes of the shared captures and the sample, twice
-    /// the eight passes of the paper's examples lowers the observed surface's normal error on
-    /// every one (sphere 2.00° → 1.89°, knot 4.80° → 4.34°, Homer 7.63° → 7.57°, sample 2.92° →
-    /// 2.50°); 24 and 32 go on helping the smooth ones but flatten Homer's detail (7.75°, 7.90°).
+    /// Sixteen passes: on the default runs' meshes of the shared captures and the sample, they
+    /// leave the observed surface's normal error lower than eight do on every one (sphere 2.00° →
+    /// 1.89°, knot 4.80° → 4.34°, Homer 7.63° → 7.57°, sample 2.92° → 2.50°); 24 and 32 go on
+    /// helping the smooth ones but flatten Homer's detail (7.75°, 7.90°).
     fn default() -> Self {
         SmoothParams {
             normal_iterations: 16,

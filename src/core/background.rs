@@ -35,18 +35,33 @@ pub const DARK_BACKGROUND_LEVEL: f64 = 0.05;
 pub const DARK_RIM_PX: u32 = 2;
 
 /// Whether the view whose interleaved `samples` and `mask` (object where ≥ ½) these are shows a
-/// dark background: its mean farther than [`MEASURED_BEYOND_PX`] beyond the mask at most
-/// [`DARK_BACKGROUND_LEVEL`] of its mean on the object. A view without pixels beyond its mask, or
-/// without an object, counts as dark (there is nothing to black out, or nothing to compare with).
+/// dark background: its [`background_level`] at most [`DARK_BACKGROUND_LEVEL`]. A view without
+/// pixels beyond its mask, or without an object, counts as dark (there is nothing to black out,
+/// or nothing to compare with).
 pub fn is_dark_background(samples: &[f32], mask: &[f32], width: usize, height: usize) -> bool {
+    background_level(measured_sums(samples, mask, width, height))
+        .is_none_or(|level| level <= DARK_BACKGROUND_LEVEL)
+}
+
+/// [`background_and_object_sums`] of a view with the background measured farther than
+/// [`MEASURED_BEYOND_PX`] beyond its `width × height` `mask`.
+pub fn measured_sums(
+    samples: &[f32],
+    mask: &[f32],
+    width: usize,
+    height: usize,
+) -> [(f64, usize); 2] {
     let beyond = beyond_mask(mask, width, height, MEASURED_BEYOND_PX);
-    let [(background, background_count), (object, object_count)] =
-        background_and_object_sums(samples, mask, &beyond);
-    if background_count == 0 || object_count == 0 {
-        return true;
-    }
-    let mean = |sum: f64, count: usize| sum / count as f64;
-    mean(background, background_count) <= DARK_BACKGROUND_LEVEL * mean(object, object_count)
+    background_and_object_sums(samples, mask, &beyond)
+}
+
+/// The background's mean over the object's, from [`background_and_object_sums`]' pairs (of one
+/// view, or added over several): 0 for a render, about 1 for a photographed table and room;
+/// `None` when either has no samples.
+pub fn background_level([background, object]: [(f64, usize); 2]) -> Option<f64> {
+    let mean = |(sum, count): (f64, usize)| sum / count as f64;
+    (background.1 > 0 && object.1 > 0)
+        .then(|| mean(background) / mean(object).max(f64::MIN_POSITIVE))
 }
 
 /// Whether each pixel of a `width × height` `mask` (object where ≥ ½) lies farther than

@@ -44,7 +44,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::core::background::{background_and_object_sums, beyond_mask, MEASURED_BEYOND_PX};
+use crate::core::background::{background_level, measured_sums};
 use crate::core::camera::Camera;
 use crate::core::polarization_confidence::polarization_confidence;
 use crate::formats::image_io::Image;
@@ -609,26 +609,23 @@ impl Capture {
                 _ => (0.0, 0),
             })
             .reduce(|| (0.0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
-        let [background, object] = self
+        let background_sums = self
             .views
             .par_iter()
             .map(|view| {
                 let mask = &view.mask;
-                let beyond = beyond_mask(&mask.data, mask.width, mask.height, MEASURED_BEYOND_PX);
                 let image = match &view.measurement {
                     Measurement::Stokes { s0: image, .. }
                     | Measurement::Polarizer { image, .. }
                     | Measurement::Rgb { image } => image,
                 };
-                background_and_object_sums(&image.data, &mask.data, &beyond)
+                measured_sums(&image.data, &mask.data, mask.width, mask.height)
             })
             .reduce(
                 || [(0.0, 0); 2],
                 |a, b| [0, 1].map(|k| (a[k].0 + b[k].0, a[k].1 + b[k].1)),
             );
-        let mean = |(sum, count): (f64, usize)| sum / count.max(1) as f64;
-        let background_level = (background.1 > 0 && object.1 > 0)
-            .then(|| mean(background) / mean(object).max(f64::MIN_POSITIVE));
+        let background_level = background_level(background_sums);
         let mut total: Option<dolp::DolpHistogram> = None;
         for h in histograms.iter().flatten() {
             total.get_or_insert_with(Default::default).merge(h);

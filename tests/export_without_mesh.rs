@@ -38,6 +38,8 @@ fn faint_model(require_mesh: bool) -> Model {
             num_surfels: surfels.len(),
             backend: "cpu".into(),
             working_resolution: None,
+            refined_poses: None,
+            silhouette_offset_px: None,
         },
         config: TrainConfig {
             iterations: 20.into(),

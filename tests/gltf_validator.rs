@@ -51,6 +51,8 @@ fn sphere_model() -> Model {
             num_surfels: surfels.len(),
             backend: "cpu".into(),
             working_resolution: None,
+            refined_poses: None,
+            silhouette_offset_px: None,
         },
         config: TrainConfig {
             iterations: 100.into(),

@@ -6,7 +6,7 @@
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use phygap::core::config::{Mode, TrainConfig};
+use phygap::core::config::{AutoSwitch, Mode, TrainConfig};
 use phygap::core::events::{Stage, TrainEvent};
 use phygap::io::capture::{self, Capture, Measurement};
 use phygap::io::model::Model;
@@ -620,4 +620,84 @@ fn the_loss_budget_scores_every_replacement() {
         shares.iter().all(|s| (0.0..=1.0).contains(s)) && shares.iter().sum::<f64>() <= 1.0,
         "{depths:?}"
     );
+}
+
+/// `pose_refinement: auto` (the default) refines the poses of a capture whose cameras are off by
+/// a degree or two and leaves exact ones alone; the run reports the decision once, where
+/// refinement would start, and the model keeps what it measured.
+#[test]
+fn auto_refines_estimated_poses_and_leaves_exact_ones() {
+    use phygap::io::capture::degrade::{degrade, DegradeOptions};
+    let dir = tempfile::tempdir().unwrap();
+    let exact = dir.path().join("exact");
+    synth(
+        &exact,
+        &SynthOptions {
+            views: 24,
+            size: 96,
+            ..SynthOptions::default()
+        },
+    )
+    .unwrap();
+    let estimated = dir.path().join("estimated");
+    let noise = DegradeOptions {
+        rotation_sigma_deg: 1.5,
+        seed: 3,
+        ..DegradeOptions::default()
+    };
+    degrade(&exact, &estimated, &noise).unwrap();
+    let config = TrainConfig {
+        refine_views_from: 0.5,
+        checkpoint_interval: 0,
+        eval_interval: 0,
+        ..small_config(240)
+    };
+    assert_eq!(config.pose_refinement, AutoSwitch::Auto);
+    for (capture_dir, refined) in [(&exact, false), (&estimated, true)] {
+        let capture = capture::load(capture_dir).unwrap();
+        let model_dir = dir.path().join(format!("model-{refined}"));
+        let (_, events) = run(&capture, &model_dir, &config, false, None);
+        let decisions: Vec<_> = events
+            .iter()
+            .filter_map(|e| match e {
+                TrainEvent::Decided {
+                    iteration,
+                    setting,
+                    on,
+                    evidence,
+                } => Some((*iteration, setting.as_str(), *on, evidence.clone())),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(decisions.len(), 1, "{decisions:?}");
+        let (iteration, setting, on, evidence) = &decisions[0];
+        assert_eq!(
+            (*iteration, *setting, *on),
+            (120, "pose_refinement", refined)
+        );
+        assert!(evidence.contains("px RMS"), "{evidence}");
+        let model = Model::load(&model_dir).unwrap();
+        let offset = model.info.silhouette_offset_px.unwrap();
+        println!("refined {refined}: the masks' own offset {offset:.2} px");
+        assert_eq!(
+            model.info.refined_poses,
+            Some(refined),
+            "offset {offset} px"
+        );
+        assert!(
+            if refined { offset > 2.0 } else { offset < 0.5 },
+            "offset {offset} px"
+        );
+        let moved = model
+            .train_cameras
+            .iter()
+            .zip(
+                capture
+                    .views
+                    .iter()
+                    .filter(|v| v.split == capture::Split::Train),
+            )
+            .any(|((_, camera), view)| camera.c2w != view.camera.c2w);
+        assert_eq!(moved, refined, "the cameras move only where refined");
+    }
 }

@@ -58,6 +58,45 @@ const PAPER_SCHEDULE_RATIO: f64 = 15_000.0 / DEFAULT_ITERATIONS as f64;
 /// Default surfel budget per pixel of object (see `TrainConfig::surfels_per_mask_pixel`).
 pub const SURFELS_PER_MASK_PIXEL: f64 = 6.0;
 
+/// A setting the run decides from the capture (`auto`), or that is fixed `on` or `off`. A
+/// config file may also give `true` or `false`, as it did when the setting was a plain switch.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[cfg_attr(feature = "openapi", derive(utoipa::ToSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum AutoSwitch {
+    /// Decided by the run from what the capture shows (each setting says how).
+    #[default]
+    Auto,
+    #[value(alias = "true")]
+    On,
+    #[value(alias = "false")]
+    Off,
+}
+
+impl<'de> Deserialize<'de> for AutoSwitch {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Written {
+            Switch(bool),
+            Named(String),
+        }
+        match Written::deserialize(deserializer)? {
+            Written::Switch(true) => Ok(AutoSwitch::On),
+            Written::Switch(false) => Ok(AutoSwitch::Off),
+            Written::Named(name) => match name.as_str() {
+                "auto" => Ok(AutoSwitch::Auto),
+                "on" => Ok(AutoSwitch::On),
+                "off" => Ok(AutoSwitch::Off),
+                other => Err(serde::de::Error::unknown_variant(
+                    other,
+                    &["auto", "on", "off"],
+                )),
+            },
+        }
+    }
+}
+
 /// An on/off setting on the command line (`on`, `off`, `true` or `false`).
 fn parse_switch(value: &str) -> Result<bool, String> {
     match value {
@@ -246,21 +285,18 @@ pub struct TrainConfig {
     /// Learn a correction of each training view's camera pose (rotation and translation) with
     /// the surfels, from `refine_views_from` on: for captures whose poses come from
     /// structure-from-motion or a turntable's calibration, off by a fraction of a degree, which
-    /// blurs every view. Off by default: on exact poses the corrections drift (0.19° on the knot,
-    /// 1.9 dB of S0 PSNR). Host engines (`fast`, `cpu`); the gpu engine trains on the capture's
-    /// poses.
-    #[arg(
-        long,
-        value_name = "on|off",
-        value_parser = parse_switch,
-        action = clap::ArgAction::Set,
-        default_value = "off"
-    )]
-    pub pose_refinement: bool,
+    /// blurs every view. `auto` (the default) decides at `refine_views_from`: on where the
+    /// training views' masks lie beside the silhouettes the surfels render by more than a pixel
+    /// RMS (`pipeline::train::estimated_poses`), off on poses that agree, where the
+    /// corrections would only drift (0.19° on the knot, 1.9 dB of S0 PSNR). Host engines
+    /// (`fast`, `cpu`); the gpu engine trains on the capture's poses.
+    #[arg(long, value_enum, default_value_t = TrainConfig::default().pose_refinement)]
+    pub pose_refinement: AutoSwitch,
     /// Learn each training view's exposure and white balance (a factor per colour channel,
     /// normalized to the capture's mean) from `refine_views_from` on: cameras that expose or
-    /// white-balance each view on their own (off by default). Host engines, like
-    /// `pose_refinement`.
+    /// white-balance each view on their own (off by default: a highlight also changes a view's
+    /// brightness, as much as a camera's exposure does on a glossy object, so the data do not
+    /// say when it helps). Host engines, like `pose_refinement`.
     #[arg(
         long,
         value_name = "on|off",
@@ -415,7 +451,7 @@ impl Default for TrainConfig {
             lr_roughness: 0.005 * PAPER_SCHEDULE_RATIO,
             lr_envmap: 0.01,
             lr_polarizer: 0.002,
-            pose_refinement: false,
+            pose_refinement: AutoSwitch::Auto,
             colour_refinement: false,
             refine_views_from: 0.05,
             refine_poses_until: 1.0,
@@ -685,6 +721,8 @@ mod tests {
             "rgb",
             "--lambda-stokes",
             "3",
+            "--pose-refinement",
+            "off",
         ]);
         let merged = file.overridden_by(&flags, &matches);
         assert_eq!(
@@ -697,9 +735,42 @@ mod tests {
             (Iterations::Fixed(900), false, Mode::Rgb, 3.0)
         );
         assert_eq!(merged.lr_albedo, 0.5, "kept from the file");
+        assert_eq!(merged.pose_refinement, AutoSwitch::Off);
+        assert_eq!(
+            parse(&["phygap", "--pose-refinement", "true"])
+                .0
+                .pose_refinement,
+            AutoSwitch::On,
+            "the old switch's words still work"
+        );
         assert!(Cli::command()
             .try_get_matches_from(["phygap", "--gridmap", "maybe"])
             .is_err());
+    }
+
+    #[test]
+    fn pose_refinement_reads_auto_on_off_and_the_old_switch() {
+        let read = |value: &str| {
+            TrainConfig::from_json(&format!(r#"{{"pose_refinement": {value}}}"#))
+                .map(|c| c.pose_refinement)
+        };
+        assert_eq!(TrainConfig::default().pose_refinement, AutoSwitch::Auto);
+        assert_eq!(read(r#""auto""#).unwrap(), AutoSwitch::Auto);
+        assert_eq!(read(r#""on""#).unwrap(), AutoSwitch::On);
+        assert_eq!(read("true").unwrap(), AutoSwitch::On);
+        assert_eq!(read(r#""off""#).unwrap(), AutoSwitch::Off);
+        assert_eq!(read("false").unwrap(), AutoSwitch::Off);
+        let e = read(r#""sometimes""#).unwrap_err();
+        assert!(e.to_string().contains("sometimes"), "{e}");
+        assert!(read("1").is_err());
+        // Written back as a word, read back the same.
+        let on = TrainConfig {
+            pose_refinement: AutoSwitch::On,
+            ..TrainConfig::default()
+        };
+        let json = serde_json::to_string(&on).unwrap();
+        assert!(json.contains(r#""pose_refinement":"on""#), "{json}");
+        assert_eq!(TrainConfig::from_json(&json).unwrap(), on);
     }
 
     #[test]

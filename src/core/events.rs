@@ -58,6 +58,15 @@ pub enum TrainEvent {
     /// Something went wrong that the run works around (e.g. GridMap's mesh could not be
     /// extracted and the previous one is kept); the message says what and how.
     Warning { iteration: u32, message: String },
+    /// The run decided a setting the config left to it (`auto`) from what it measured:
+    /// `setting` is the config key (`pose_refinement`), `on` the decision, `evidence` the
+    /// measurement in words.
+    Decided {
+        iteration: u32,
+        setting: String,
+        on: bool,
+        evidence: String,
+    },
     /// A checkpoint was written; training can resume from here.
     Checkpoint { iteration: u32 },
     /// The run finished; the model folder is complete.

@@ -29,6 +29,8 @@ pub mod render;
 pub mod resolution;
 pub mod setting;
 pub mod shading;
+pub mod silhouette;
 pub mod simd;
 pub mod step;
 pub mod surfels;
+pub mod view_spread;

@@ -72,6 +72,15 @@ pub struct ModelInfo {
     /// capture's full resolution).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub working_resolution: Option<WorkingResolution>,
+    /// Whether the training cameras' poses were refined (`pose_refinement`; absent in models
+    /// written before it was recorded, and where the run never reached the point of deciding).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refined_poses: Option<bool>,
+    /// What `pose_refinement: auto` measured where it decided: how far the training views' masks
+    /// lay beside the silhouettes the surfels rendered, each view's own part, RMS pixels
+    /// (`pipeline::train::estimated_poses`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub silhouette_offset_px: Option<f64>,
 }
 
 /// The size of the views a model was trained on.

@@ -131,6 +131,8 @@ mod tests {
                 num_surfels: surfels.len(),
                 backend: "cpu".into(),
                 working_resolution: None,
+                refined_poses: None,
+                silhouette_offset_px: None,
             },
             config,
             surfels,

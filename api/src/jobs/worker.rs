@@ -261,6 +261,8 @@ pub fn apply_event(progress: &mut Progress, event: &TrainEvent) {
         }
         TrainEvent::Evaluated { test_psnr, .. } => progress.test_psnr = Some(*test_psnr),
         TrainEvent::Checkpoint { iteration } => progress.checkpoint_iteration = Some(*iteration),
+        // Kept in the job's event history, which the progress pages give.
+        TrainEvent::Decided { .. } => {}
         TrainEvent::Warning { iteration, message } => {
             progress.warning = Some(format!("iteration {iteration}: {message}"));
         }

@@ -183,8 +183,9 @@ class Upload:
 @dataclass
 class ProgressEvent:
     """One recorded event of a job's runs: `type` is ``started``, ``step`` (with ``iteration``,
-    ``loss``, ``eta_seconds`` … in `data`), ``evaluated``, ``checkpoint``, ``warning`` or
-    ``finished``; `seq` numbers it in the job's history, across its runs."""
+    ``loss``, ``eta_seconds`` … in `data`), ``evaluated``, ``checkpoint``, ``warning``,
+    ``decided`` (a setting left to ``auto``: ``setting``, ``on``, ``evidence``) or ``finished``;
+    `seq` numbers it in the job's history, across its runs."""
 
     seq: int
     type: str

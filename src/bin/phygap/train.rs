@@ -159,6 +159,15 @@ pub fn show_event(bar: &ProgressBar, event: &TrainEvent) {
         TrainEvent::Warning { iteration, message } => {
             bar.println(format!("warning at step {iteration}: {message}"));
         }
+        TrainEvent::Decided {
+            iteration,
+            setting,
+            on,
+            evidence,
+        } => {
+            let switch = if *on { "on" } else { "off" };
+            bar.println(format!("step {iteration}: {setting} {switch}: {evidence}"));
+        }
         TrainEvent::Checkpoint { .. } => {}
         TrainEvent::Finished {
             seconds,

@@ -228,7 +228,9 @@ impl<'r> StepEngine<'r> {
                 state
                     .densify
                     .add_view(&result.mean2d_grad_norm, result.width, result.height);
-                if let (Some(grad), Some(rate)) = (result.pose, run.poses.rate(it)) {
+                if let (Some(grad), Some(rate)) =
+                    (result.pose, run.poses.rate(it, state.refine_poses))
+                {
                     run.poses
                         .update(&mut state.adam, &mut state.poses, target, &grad, rate)?;
                 }

@@ -20,6 +20,7 @@
 mod angles;
 pub mod colour;
 mod engine;
+pub mod estimated_poses;
 mod eta;
 pub mod exposure;
 pub mod hidden;
@@ -439,6 +440,8 @@ impl Run<'_> {
                 .map(|g| (g, 0.0))
                 .collect(),
             poses: self.poses.identity(),
+            refine_poses: self.poses.fixed_decision(),
+            silhouette_offset_px: None,
             colours: vec![[1.0; 3]; self.targets.len()],
             adam: Adam::new(AdamConfig::default()),
             densify: DensifyStats::new(n),
@@ -490,6 +493,10 @@ impl Run<'_> {
             // Written before runs refined poses and colours: none yet.
             if state.poses.is_empty() {
                 state.poses = self.poses.identity();
+            }
+            // Written before `auto` decided: the config fixed it.
+            if state.refine_poses.is_none() {
+                state.refine_poses = self.poses.fixed_decision();
             }
             if state.colours.is_empty() {
                 state.colours = vec![[1.0; 3]; self.targets.len()];
@@ -559,7 +566,8 @@ impl Run<'_> {
         self.conclude_iteration(&after, before.stage, &outcome, &mut rng, session, reporter)
     }
 
-    /// Before iteration `it`: the estimate of unknown polarizer angles when the PolarDR stage
+    /// Before iteration `it`: under `pose_refinement: auto`, whether poses are refined, where
+    /// refinement would start; the estimate of unknown polarizer angles when the PolarDR stage
     /// starts, and GridMap's mesh and probes on their schedule.
     fn prepare_iteration(
         &self,
@@ -574,6 +582,28 @@ impl Run<'_> {
             occlusion,
             ..
         } = session;
+        if self.poses.decision_due(state.iteration, state.refine_poses) {
+            let (on, evidence) = match engine {
+                StepEngine::Host => {
+                    let offset = estimated_poses::silhouette_offset(self, state)?;
+                    state.silhouette_offset_px = offset;
+                    (
+                        estimated_poses::estimated(offset),
+                        estimated_poses::evidence(offset),
+                    )
+                }
+                StepEngine::Device(_) => {
+                    (false, "the gpu engine trains on the capture's poses".into())
+                }
+            };
+            state.refine_poses = Some(on);
+            reporter.emit(TrainEvent::Decided {
+                iteration: state.iteration,
+                setting: "pose_refinement".into(),
+                on,
+                evidence,
+            });
+        }
         if before.estimate_angles && !state.polarizer_angles.is_empty() {
             engine.sync(state)?;
             env.refresh(state, &self.plan, occlusion)?;
@@ -1035,6 +1065,8 @@ impl Run<'_> {
                 num_surfels: state.surfels.len(),
                 backend: self.backend.name().to_owned(),
                 working_resolution: Some(model::WorkingResolution::of(self.capture)),
+                refined_poses: state.refine_poses,
+                silhouette_offset_px: state.silhouette_offset_px,
             },
             config: TrainConfig {
                 mode: self.mode,
@@ -1083,7 +1115,7 @@ impl Run<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::core::config::Iterations;
+    use crate::core::config::{AutoSwitch, Iterations};
     use crate::core::pose::PoseCorrection;
     use crate::pipeline::synth::{synth, Shape, SynthOptions};
 
@@ -1282,7 +1314,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let (capture, config) = torus_run(dir.path());
         let config = TrainConfig {
-            pose_refinement: true,
+            pose_refinement: AutoSwitch::On,
             colour_refinement: true,
             ..config
         };

@@ -12,6 +12,10 @@
 //! `refine_views_from` and decays exponentially to 1 % of it by `refine_poses_until`, where the
 //! poses stay.
 //!
+//! Under `pose_refinement: auto` the run decides at `refine_views_from`, once the surfels have a
+//! shape, from how far each view's mask lies beside the silhouette it renders
+//! ([`super::estimated_poses`]).
+//!
 //! Nothing holds the corrections' common part: one rigid motion of every camera, matched by the
 //! surfels, would change no image. The surfels start from the capture's poses and keep the run in
 //! their frame. Taking the common motion out after each update instead (a projection that is no
@@ -21,7 +25,7 @@
 use glam::DVec3;
 
 use crate::core::camera::Camera;
-use crate::core::config::TrainConfig;
+use crate::core::config::{AutoSwitch, TrainConfig};
 use crate::core::optim::{Adam, ExponentialLr, OptimError};
 use crate::core::pose::{PoseCorrection, PoseGrad};
 
@@ -36,6 +40,8 @@ pub struct PoseRefinement {
     centre: DVec3,
     /// The steps that update the poses, and the rate from the first (`None`: refinement off).
     schedule: Option<(std::ops::Range<u32>, ExponentialLr)>,
+    /// `on`, or `auto`: decided when the schedule starts.
+    setting: AutoSwitch,
 }
 
 impl PoseRefinement {
@@ -43,7 +49,8 @@ impl PoseRefinement {
         let steps = config.steps();
         let at = |fraction: f64| (fraction * f64::from(steps)).round() as u32;
         let (start, end) = (at(config.refine_views_from), at(config.refine_poses_until));
-        let schedule = (config.pose_refinement && config.lr_pose > 0.0 && start < end).then_some((
+        let wanted = config.pose_refinement != AutoSwitch::Off;
+        let schedule = (wanted && config.lr_pose > 0.0 && start < end).then_some((
             start..end,
             ExponentialLr {
                 init: config.lr_pose,
@@ -55,12 +62,32 @@ impl PoseRefinement {
             cameras,
             centre: object_centre,
             schedule,
+            setting: config.pose_refinement,
         }
     }
 
-    /// Whether the run learns corrections at all.
+    /// Whether the run may learn corrections at all (under `auto`, if it decides to).
     pub fn enabled(&self) -> bool {
         self.schedule.is_some()
+    }
+
+    /// Whether the poses are refined, where no measurement is needed to say: `None` under `auto`
+    /// (until [`super::estimated_poses`] decides at the schedule's start).
+    pub fn fixed_decision(&self) -> Option<bool> {
+        match (&self.schedule, self.setting) {
+            (Some(_), AutoSwitch::Auto) => None,
+            (Some(_), AutoSwitch::On) => Some(true),
+            _ => Some(false),
+        }
+    }
+
+    /// Whether `auto` decides before iteration `it`, the run not having decided yet.
+    pub fn decision_due(&self, it: u32, decided: Option<bool>) -> bool {
+        decided.is_none()
+            && self
+                .schedule
+                .as_ref()
+                .is_some_and(|(steps, _)| steps.start <= it)
     }
 
     /// The training views' cameras as the capture gives them.
@@ -88,8 +115,12 @@ impl PoseRefinement {
             .collect()
     }
 
-    /// The rate at iteration `it`; `None` before refinement starts or when it is off.
-    pub fn rate(&self, it: u32) -> Option<f64> {
+    /// The rate at iteration `it` of a run that has decided `refine`; `None` before refinement
+    /// starts or when it is off.
+    pub fn rate(&self, it: u32, refine: Option<bool>) -> Option<f64> {
+        if refine != Some(true) {
+            return None;
+        }
         let (steps, rate) = self.schedule.as_ref()?;
         steps.contains(&it).then(|| rate.at(it - steps.start))
     }
@@ -171,7 +202,7 @@ mod tests {
     fn config() -> TrainConfig {
         TrainConfig {
             iterations: Iterations::Fixed(1000),
-            pose_refinement: true,
+            pose_refinement: AutoSwitch::On,
             ..TrainConfig::default()
         }
     }
@@ -183,18 +214,46 @@ mod tests {
             ..config()
         };
         let refinement = PoseRefinement::new(&config, ring(4), DVec3::ZERO);
-        assert_eq!(refinement.rate(49), None);
-        assert!((refinement.rate(50).unwrap() - 1e-3).abs() < 1e-15);
-        let last = refinement.rate(499).unwrap();
+        let on = refinement.fixed_decision();
+        assert_eq!(on, Some(true));
+        assert_eq!(refinement.rate(49, on), None);
+        assert!((refinement.rate(50, on).unwrap() - 1e-3).abs() < 1e-15);
+        let last = refinement.rate(499, on).unwrap();
         assert!(last > 1e-5 && last < 1.02e-5, "{last}");
-        assert_eq!(refinement.rate(500), None);
+        assert_eq!(refinement.rate(500, on), None);
         let off = TrainConfig {
-            pose_refinement: false,
-            ..config
+            pose_refinement: AutoSwitch::Off,
+            ..config.clone()
         };
         let refinement = PoseRefinement::new(&off, ring(4), DVec3::ZERO);
         assert!(!refinement.enabled());
-        assert_eq!(refinement.rate(100), None);
+        assert_eq!(refinement.fixed_decision(), Some(false));
+        assert_eq!(refinement.rate(100, Some(true)), None);
+        assert!(!refinement.decision_due(100, None));
+    }
+
+    #[test]
+    fn auto_decides_once_where_refinement_would_start() {
+        let config = TrainConfig {
+            pose_refinement: AutoSwitch::Auto,
+            ..config()
+        };
+        let refinement = PoseRefinement::new(&config, ring(4), DVec3::ZERO);
+        assert_eq!(refinement.fixed_decision(), None);
+        assert!(!refinement.decision_due(49, None));
+        assert!(refinement.decision_due(50, None));
+        assert!(
+            refinement.decision_due(700, None),
+            "a resumed run decides when it gets there"
+        );
+        assert!(!refinement.decision_due(50, Some(false)));
+        assert_eq!(
+            refinement.rate(60, None),
+            None,
+            "nothing moves before the decision"
+        );
+        assert_eq!(refinement.rate(60, Some(false)), None);
+        assert!(refinement.rate(60, Some(true)).is_some());
     }
 
     /// Views whose cameras are off by known corrections, and per
@@ -325,7 +384,7 @@ mod tests {
         let env = PreparedEnv::new(&crate::io::model::initial_envmap(8).unwrap(), plan).unwrap();
         let config = TrainConfig {
             iterations: Iterations::Fixed(800),
-            pose_refinement: true,
+            pose_refinement: AutoSwitch::On,
             refine_views_from: 0.0,
             lr_pose: 3e-3,
             ..TrainConfig::default()
@@ -366,7 +425,7 @@ mod tests {
                 Stage::Geometry,
             )
             .unwrap();
-            let rate = refinement.rate(it).unwrap();
+            let rate = refinement.rate(it, Some(true)).unwrap();
             refinement
                 .update(&mut adam, &mut poses, k, &result.pose.unwrap(), rate)
                 .unwrap();

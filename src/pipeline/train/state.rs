@@ -30,6 +30,12 @@ pub struct TrainState {
     /// The learned correction of each training view's pose, in the order of the run's targets
     /// (empty in a checkpoint written before runs refined poses: no correction).
     pub poses: Vec<PoseCorrection>,
+    /// Whether the poses are refined: fixed by `pose_refinement` `on` or `off`, decided under
+    /// `auto` where refinement would start (`None` until then; `train::poses::decide`).
+    pub refine_poses: Option<bool>,
+    /// What that decision measured: how far the training views' masks lay beside the rendered
+    /// silhouettes, each view's own part, RMS pixels (`train::estimated_poses`).
+    pub silhouette_offset_px: Option<f64>,
     /// Each training view's colour: its exposure and white balance over the run's, per channel
     /// (`train::colour`; empty in a checkpoint written before runs learned them: all 1).
     pub colours: Vec<[f64; 3]>,
@@ -54,6 +60,11 @@ struct Meta {
     config_fingerprint: String,
     #[serde(default = "capture_units")]
     radiance_scale: f64,
+    /// Absent in a checkpoint from before `auto` decided (its config said, `TrainState::refine_poses`).
+    #[serde(default)]
+    refine_poses: Option<bool>,
+    #[serde(default)]
+    silhouette_offset_px: Option<f64>,
 }
 
 /// The radiance scale of a checkpoint from before exposure normalization: the capture's units.
@@ -81,6 +92,8 @@ impl TrainState {
             elapsed_seconds: self.elapsed_seconds,
             config_fingerprint: config_fingerprint.to_owned(),
             radiance_scale: self.radiance_scale,
+            refine_poses: self.refine_poses,
+            silhouette_offset_px: self.silhouette_offset_px,
         };
         let mut archive = Archive::new(serde_json::to_value(&meta).expect("plain data"));
         for (name, values) in self.surfels.groups() {
@@ -163,6 +176,8 @@ impl TrainState {
             envmap,
             polarizer_angles: meta.polarizer_angles,
             poses,
+            refine_poses: meta.refine_poses,
+            silhouette_offset_px: meta.silhouette_offset_px,
             colours,
             adam,
             densify,

@@ -9,8 +9,9 @@
 //! Skips with a notice when Chromium or chromedriver is missing (`apt-get install chromium
 //! chromium-driver`), except under `CI=true`, where that fails. With `PHYGAP_WEB_SCREENSHOTS=DIR`
 //! the pages' screenshots are written there; with `PHYGAP_WEB_ITERATIONS=N` the page is given a
-//! larger capture (the checkered creature, 24 views of 96 px) to train with the default settings
-//! for N steps. README's screenshots are made so.
+//! larger capture to train with the default settings for N steps: the capture folder
+//! `PHYGAP_WEB_CAPTURE` names, else the checkered creature (24 views of 96 px). The docs'
+//! screenshots are made so.
 
 mod common;
 mod webdriver;
@@ -55,24 +56,32 @@ impl Scenario {
         }
     }
 
-    /// A capture worth a screenshot, trained with the default settings.
+    /// A capture worth a screenshot, trained with the default settings: the folder
+    /// `PHYGAP_WEB_CAPTURE` names, else the checkered creature.
     fn showcase() -> Scenario {
-        let dir = tempfile::tempdir().unwrap();
-        let options = phygap::pipeline::synth::SynthOptions {
-            shape: phygap::pipeline::synth::Shape::Creature,
-            texture: phygap::pipeline::synth::Texture::Checker,
-            ..Default::default()
-        };
-        phygap::pipeline::synth::synth(dir.path(), &options).unwrap();
         let iterations = std::env::var("PHYGAP_WEB_ITERATIONS")
             .ok()
             .and_then(|v| v.parse().ok())
             .expect("PHYGAP_WEB_ITERATIONS is a number of steps");
+        let synthesized = tempfile::tempdir().unwrap();
+        let dir = match std::env::var_os("PHYGAP_WEB_CAPTURE") {
+            Some(dir) => PathBuf::from(dir),
+            None => {
+                let options = phygap::pipeline::synth::SynthOptions {
+                    shape: phygap::pipeline::synth::Shape::Creature,
+                    texture: phygap::pipeline::synth::Texture::Checker,
+                    ..Default::default()
+                };
+                phygap::pipeline::synth::synth(synthesized.path(), &options).unwrap();
+                synthesized.path().to_owned()
+            }
+        };
+        let capture = phygap::io::capture::load(&dir).unwrap();
         Scenario {
-            archive: zip_of(&files_of(dir.path())),
+            archive: zip_of(&files_of(&dir)),
             file_name: "capture.zip",
-            views: options.views,
-            test_views: options.views.div_ceil(8),
+            views: capture.views.len(),
+            test_views: capture.test_views().count(),
             iterations,
             extra: "",
             gridmap: true,
@@ -434,6 +443,7 @@ async fn the_page_uploads_trains_views_and_relights_in_a_browser() {
         .as_f64()
         .unwrap();
     assert_eq!(shown["ior"], format!("{ior:.3}"), "{shown}");
+    screenshot(&session, &screenshots, "web-gltf.png").await;
 
     // Relighting from the page.
     session

@@ -57,7 +57,7 @@ pub(super) fn silhouette_offset(run: &Run, state: &TrainState) -> Result<Option<
             Ok((alpha, camera))
         })
         .collect::<Result<Vec<_>, TrainError>>()?;
-    let centre = run.capture.object_bounds().center;
+    let centre = run.poses.centre();
     let shifts: Vec<(DVec3, DVec2)> = rendered
         .into_par_iter()
         .zip(&run.targets)

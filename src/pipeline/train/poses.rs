@@ -66,6 +66,11 @@ impl PoseRefinement {
         }
     }
 
+    /// The object's centre the corrections turn about.
+    pub fn centre(&self) -> DVec3 {
+        self.centre
+    }
+
     /// Whether the run may learn corrections at all (under `auto`, if it decides to).
     pub fn enabled(&self) -> bool {
         self.schedule.is_some()

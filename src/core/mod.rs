@@ -4,6 +4,7 @@
 //! host engine; triangle meshes and metrics. Uses only [`crate::formats`].
 
 pub mod background;
+pub mod blur;
 pub mod brdf_lut;
 pub mod camera;
 pub mod config;

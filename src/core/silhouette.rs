@@ -16,6 +16,7 @@
 
 use glam::{DMat2, DVec2, DVec3};
 
+use crate::core::blur::gaussian_blur;
 use crate::core::view_spread::own_part;
 
 /// Standard deviation of the blur applied to both images, pixels.
@@ -138,38 +139,6 @@ fn gauss_newton_step(rendered: &Sampled, mask: &[f64], shift: DVec2) -> Option<D
         return None;
     }
     Some(-(normal.inverse() * rhs))
-}
-
-/// A separable Gaussian blur of standard deviation `sigma` pixels, the edges clamped.
-fn gaussian_blur(image: &[f64], width: usize, height: usize, sigma: f64) -> Vec<f64> {
-    let radius = (3.0 * sigma).ceil() as isize;
-    let weights: Vec<f64> = (-radius..=radius)
-        .map(|k| (-0.5 * (k as f64 / sigma).powi(2)).exp())
-        .collect();
-    let total: f64 = weights.iter().sum();
-    let weights: Vec<f64> = weights.iter().map(|w| w / total).collect();
-    let clamp = |i: isize, n: usize| i.clamp(0, n as isize - 1) as usize;
-    let mut rows = vec![0.0; image.len()];
-    for y in 0..height {
-        for x in 0..width {
-            rows[y * width + x] = weights
-                .iter()
-                .enumerate()
-                .map(|(k, w)| w * image[y * width + clamp(x as isize + k as isize - radius, width)])
-                .sum();
-        }
-    }
-    let mut out = vec![0.0; image.len()];
-    for y in 0..height {
-        for x in 0..width {
-            out[y * width + x] = weights
-                .iter()
-                .enumerate()
-                .map(|(k, w)| w * rows[clamp(y as isize + k as isize - radius, height) * width + x])
-                .sum();
-        }
-    }
-    out
 }
 
 /// What the views' silhouette shifts have of their own, RMS pixels ([`own_part`]).

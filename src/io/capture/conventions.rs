@@ -30,6 +30,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
+use crate::core::blur::gaussian_blur;
 use crate::formats::image_io::{
     read_image_within, srgb_to_linear, Image, ImageFormat, ImageLimits,
 };
@@ -268,34 +269,12 @@ fn distance_to_background(mask: &Image, limit: u32) -> Vec<u32> {
 
 /// The mask blurred by a Gaussian of [`NORMAL_BLUR_SIGMA`] pixels (separable, clamped edges).
 fn blurred(mask: &Image) -> Vec<f64> {
-    let radius = (3.0 * NORMAL_BLUR_SIGMA).ceil() as isize;
-    let kernel: Vec<f64> = (-radius..=radius)
-        .map(|k| (-(k * k) as f64 / (2.0 * NORMAL_BLUR_SIGMA * NORMAL_BLUR_SIGMA)).exp())
+    let values: Vec<f64> = mask
+        .data
+        .chunks_exact(mask.channels)
+        .map(|pixel| f64::from(pixel[0]))
         .collect();
-    let total: f64 = kernel.iter().sum();
-    let (w, h) = (mask.width as isize, mask.height as isize);
-    let at = |x: isize, y: isize| mask.data[(y * w + x) as usize * mask.channels] as f64;
-    let mut rows = vec![0.0; (w * h) as usize];
-    for y in 0..h {
-        for x in 0..w {
-            rows[(y * w + x) as usize] = (-radius..=radius)
-                .map(|k| kernel[(k + radius) as usize] * at((x + k).clamp(0, w - 1), y))
-                .sum::<f64>()
-                / total;
-        }
-    }
-    let mut out = vec![0.0; (w * h) as usize];
-    for y in 0..h {
-        for x in 0..w {
-            out[(y * w + x) as usize] = (-radius..=radius)
-                .map(|k| {
-                    kernel[(k + radius) as usize] * rows[((y + k).clamp(0, h - 1) * w + x) as usize]
-                })
-                .sum::<f64>()
-                / total;
-        }
-    }
-    out
+    gaussian_blur(&values, mask.width, mask.height, NORMAL_BLUR_SIGMA)
 }
 
 /// The Stokes check's sums over one view (S0–S2 RGB, already in the stated convention, made

@@ -259,6 +259,8 @@ pub struct Deliverable {
     pub observed_fraction: f64,
     /// Holes closed.
     pub holes: usize,
+    /// Of those, the holes whose caps follow a quadric fitted to the surface around them.
+    pub holes_continued: usize,
 }
 
 /// Largest deviation the simplification may introduce, in TSDF voxels. The dense mesh lies about
@@ -296,6 +298,7 @@ pub fn extract_deliverable(
     if closed.holes > 0 {
         tracing::info!(
             holes = closed.holes,
+            continued = closed.continued,
             triangles = closed.triangles,
             "closed the mesh's holes"
         );
@@ -309,6 +312,7 @@ pub fn extract_deliverable(
         observed_triangles,
         observed_fraction: if total > 0.0 { observed / total } else { 0.0 },
         holes: closed.holes,
+        holes_continued: closed.continued,
     })
 }
 

@@ -43,10 +43,11 @@ pub fn run(args: &MeshArgs) -> Result<()> {
         .map_or(MeshResolution::FromViews, MeshResolution::Voxels);
     let deliverable = mesh_extraction::extract_deliverable(&model, resolution)?;
     println!(
-        "surface observed: {:.1}% of its area ({} hole{} closed), voxel {:.4} ({} along the longest side)",
+        "surface observed: {:.1}% of its area ({} hole{} closed, {} along the surface around it), voxel {:.4} ({} along the longest side)",
         100.0 * deliverable.observed_fraction,
         deliverable.holes,
         if deliverable.holes == 1 { "" } else { "s" },
+        deliverable.holes_continued,
         deliverable.voxel,
         deliverable.resolution
     );

@@ -4,11 +4,11 @@
 //! The submodules split the work: `ply` maps meshes to and from documents of the crate's one PLY
 //! parser ([`crate::formats::ply`]), `tsdf` fuses depth maps into a truncated signed distance grid,
 //! `marching_cubes` turns that grid into a welded mesh, `holes` closes the holes left where no
-//! camera looked, `smooth` filters its normals (bilateral) and fits the surface to them,
-//! `simplify` reduces it by quadric-error edge collapses, `uv_atlas` cuts it into charts laid out
-//! in a texture (for baking materials), and `chamfer` measures the distance
-//! (and the normal error) from one mesh to another. Long stages run
-//! inside `tracing` spans and use rayon over independent voxel slabs or sample chunks.
+//! camera looked (along a `quadric` fitted around each, where one fits), `smooth` filters its
+//! normals (bilateral) and fits the surface to them, `simplify` reduces it by quadric-error edge
+//! collapses, `uv_atlas` cuts it into charts laid out in a texture (for baking materials), and
+//! `chamfer` measures the distance (and the normal error) from one mesh to another. Long stages
+//! run inside `tracing` spans and use rayon over independent voxel slabs or sample chunks.
 
 use std::path::{Path, PathBuf};
 
@@ -21,6 +21,7 @@ mod chamfer;
 mod holes;
 mod marching_cubes;
 mod ply;
+mod quadric;
 mod simplify;
 mod smooth;
 mod tsdf;

@@ -19,7 +19,8 @@
 //! two rings next to it are left out of the fit, since where only grazing views saw the
 //! surface, its border flares outwards), the cap goes on
 //! along it: each cap vertex is projected onto the quadric and moved by the offset of the loop
-//! from the quadric, faired over the cap the same way, so the cap still meets the loop. Where no
+//! from the quadric, faired over the cap the same way and faded out over its first rings, so the
+//! cap meets the loop and lies on the quadric beyond. Where no
 //! quadric describes the surround (a crevice, a seam between parts), the thin plate stays.
 //!
 //! Single-threaded: a mesh has few holes; a cap costs O(loop length × rings) per conjugate-gradient
@@ -43,8 +44,8 @@ const FAIR_MAX_ITERATIONS: usize = 4000;
 const FAIR_TOLERANCE: f64 = 1e-10;
 
 /// Rings of vertices next to a hole's loop that its surface is not fitted to: where only
-/// grazing views saw the surface, its border flares outwards (by a hundredth of the sphere's
-/// radius on the sample). A cap laid on the fitted surface leaves the loop's offset from it
+/// grazing views saw the surface, its border flares outwards (by 2 % of the sphere's radius on
+/// the sample). A cap laid on the fitted surface leaves the loop's offset from it
 /// behind over as many of its own rings.
 const FLARE_RINGS: usize = 2;
 
@@ -159,9 +160,9 @@ impl TriangleMesh {
     /// Lays each cap on the quadric fitted to the surface around its hole
     /// ([`TriangleMesh::surface_around`]), where one fits: every cap vertex moves to the quadric
     /// (from its faired place, along the quadric's gradient) and then along its normal by the
-    /// loop's distance from the quadric, faired over the cap, so the cap still meets the loop
-    /// (a loop lifted off the surface, as a flared border is, lifts the cap parallel to it).
-    /// Returns how many caps moved.
+    /// loop's distance from the quadric, faired over the cap and faded out over its first
+    /// [`FLARE_RINGS`] rings, so the cap meets the loop and is on the quadric beyond (a flared
+    /// border does not lift the whole cap). Returns how many caps moved.
     fn continue_surfaces(&mut self, caps: &[Cap], fairing: &Fairing, before: usize) -> usize {
         let normals = self.area_weighted_normals(before);
         let mut adjacency: Vec<Vec<u32>> = vec![Vec::new(); self.vertices.len()];

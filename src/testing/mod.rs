@@ -1,7 +1,7 @@
 //! Fixtures shared by the tests and benchmarks: the shared ground-truth captures' folder, random
-//! upstream gradients for the rasterizer's backward pass, surfel spheres (one, or two beside
-//! each other for GridMap), [`hostile`] files that declare more than they hold, and the
-//! mutational [`fuzz`]er of the readers of untrusted bytes.
+//! unit vectors, random upstream gradients for the rasterizer's backward pass, surfel spheres
+//! (one, or two beside each other for GridMap), [`hostile`] files that declare more than they
+//! hold, and the mutational [`fuzz`]er of the readers of untrusted bytes.
 
 pub mod fuzz;
 pub mod hostile;
@@ -38,6 +38,21 @@ pub fn shared_data_dir() -> Option<PathBuf> {
 /// Whether the tests run under CI (`CI=true`), where nothing they need may be missing.
 pub fn running_in_ci() -> bool {
     std::env::var("CI").is_ok_and(|v| v == "true" || v == "1")
+}
+
+/// A random unit vector, uniform over the sphere: a point drawn in the cube and kept when it lies
+/// in the ball (and not within 0.1 of its centre, where normalising would amplify rounding).
+pub fn random_unit(rng: &mut impl Rng) -> DVec3 {
+    loop {
+        let v = DVec3::new(
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+        );
+        if (0.1..1.0).contains(&v.length()) {
+            return v.normalize();
+        }
+    }
 }
 
 /// Upstream gradients of a `width × height` G-buffer, every entry uniform in [−1, 1), drawn

@@ -629,21 +629,9 @@ pub fn closest_point_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::random_unit;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
-
-    fn random_unit(rng: &mut ChaCha8Rng) -> DVec3 {
-        loop {
-            let v = DVec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
-            if v.length_squared() > 1e-4 && v.length_squared() <= 1.0 {
-                return v.normalize();
-            }
-        }
-    }
 
     fn triangle_soup(seed: u64, count: usize) -> TriangleMesh {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);

@@ -164,7 +164,12 @@ impl TriangleMesh {
     /// [`FLARE_RINGS`] rings, so the cap meets the loop and is on the quadric beyond (a flared
     /// border does not lift the whole cap). Returns how many caps moved.
     fn continue_surfaces(&mut self, caps: &[Cap], fairing: &Fairing, before: usize) -> usize {
-        let normals = self.area_weighted_normals(before);
+        // Unit normals of the observed surface (zero for the caps' vertices).
+        let normals: Vec<DVec3> = self
+            .area_weighted_normal_sums(before)
+            .into_iter()
+            .map(DVec3::normalize_or_zero)
+            .collect();
         let mut adjacency: Vec<Vec<u32>> = vec![Vec::new(); self.vertices.len()];
         for t in &self.triangles[..before] {
             for k in 0..3 {
@@ -332,19 +337,6 @@ impl TriangleMesh {
             hole_radius,
             tolerance: 1e-9 * hole_radius.max(f64::MIN_POSITIVE),
         })
-    }
-
-    /// Unit normals of the vertices from the first `triangles` (their area-weighted sum).
-    fn area_weighted_normals(&self, triangles: usize) -> Vec<DVec3> {
-        let mut normals = vec![DVec3::ZERO; self.vertices.len()];
-        for t in &self.triangles[..triangles] {
-            let [a, b, c] = t.map(|v| self.vertex(v));
-            let n = (b - a).cross(c - a);
-            for &v in t {
-                normals[v as usize] += n;
-            }
-        }
-        normals.into_iter().map(DVec3::normalize_or_zero).collect()
     }
 
     /// The mesh of the triangles before `at` and the mesh of the others (the caps, when `at` is
@@ -678,6 +670,30 @@ mod tests {
         )
     }
 
+    /// The lowest z of the vertices from `first` on.
+    fn lowest_z(mesh: &TriangleMesh, first: usize) -> f64 {
+        mesh.vertices[first..]
+            .iter()
+            .map(|v| v[2])
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// Angles (degrees) between the normals of the vertices from `first` on and the radius of
+    /// the sphere about the origin through them: (mean, largest).
+    fn normals_off_the_radius(mesh: &TriangleMesh, first: usize) -> (f64, f64) {
+        let angles: Vec<f64> = (first..mesh.vertices.len())
+            .map(|v| {
+                let radial = DVec3::from_array(mesh.vertices[v]).normalize();
+                let n = DVec3::from_array(mesh.normals[v]);
+                n.dot(radial).clamp(-1.0, 1.0).acos().to_degrees()
+            })
+            .collect();
+        (
+            angles.iter().sum::<f64>() / angles.len() as f64,
+            angles.iter().copied().fold(0.0, f64::max),
+        )
+    }
+
     /// A unit sphere without its cap below z = −0.6 (a hole 0.8 across and 0.4 deep): a flat
     /// membrane over the rim lies up to 0.4 from the sphere, a thin plate a few hundredths
     /// (flatter than the sphere); the cap laid on the quadric around the hole is on the sphere,
@@ -693,10 +709,7 @@ mod tests {
         assert!(closed.triangles > 0);
         assert!(is_closed_and_oriented(&mesh));
         assert_eq!(mesh.normals.len(), mesh.vertices.len());
-        let lowest = mesh.vertices[old_vertices..]
-            .iter()
-            .map(|v| v[2])
-            .fold(f64::INFINITY, f64::min);
+        let lowest = lowest_z(&mesh, old_vertices);
         let (mean, worst) = off_unit_sphere(&mesh, old_vertices);
         println!(
             "{} cap vertices: {mean:.4} from the sphere on average, {worst:.4} at most, lowest z {lowest:.3}",
@@ -705,15 +718,7 @@ mod tests {
         assert_eq!(closed.continued, 1);
         assert!(mean < 0.002 && worst < 0.005, "mean {mean}, worst {worst}");
         assert!(lowest < -0.99, "the cap reaches down to {lowest} only");
-        let angles: Vec<f64> = (old_vertices..mesh.vertices.len())
-            .map(|v| {
-                let p = DVec3::from_array(mesh.vertices[v]).normalize();
-                let n = DVec3::from_array(mesh.normals[v]);
-                n.dot(p).clamp(-1.0, 1.0).acos().to_degrees()
-            })
-            .collect();
-        let mean_angle = angles.iter().sum::<f64>() / angles.len() as f64;
-        let worst_angle = angles.iter().copied().fold(0.0, f64::max);
+        let (mean_angle, worst_angle) = normals_off_the_radius(&mesh, old_vertices);
         println!(
             "cap normals off the radius: {mean_angle:.2}° on average, {worst_angle:.2}° at most"
         );
@@ -755,19 +760,8 @@ mod tests {
             rim,
             loops[0].iter().map(|&v| mesh.vertex(v)).collect::<Vec<_>>()
         );
-        let lowest = mesh.vertices[old_vertices..]
-            .iter()
-            .map(|v| v[2])
-            .fold(f64::INFINITY, f64::min);
-        let angles: Vec<f64> = (old_vertices..mesh.vertices.len())
-            .map(|v| {
-                let radial = DVec3::from_array(mesh.vertices[v]).normalize();
-                let n = DVec3::from_array(mesh.normals[v]);
-                n.dot(radial).clamp(-1.0, 1.0).acos().to_degrees()
-            })
-            .collect();
-        let mean_angle = angles.iter().sum::<f64>() / angles.len() as f64;
-        let worst_angle = angles.iter().copied().fold(0.0, f64::max);
+        let lowest = lowest_z(&mesh, old_vertices);
+        let (mean_angle, worst_angle) = normals_off_the_radius(&mesh, old_vertices);
         println!(
             "flared loop: the cap reaches z = {lowest:.4}, normals {mean_angle:.2}° off on average, {worst_angle:.2}° at most (where the flare fades)"
         );

@@ -189,18 +189,25 @@ impl TriangleMesh {
     /// Recomputes vertex normals as the normalized sum of the (area-weighted) face normals of the
     /// adjacent triangles; the face normal follows the counter-clockwise winding.
     pub fn compute_vertex_normals(&mut self) {
+        self.normals = self
+            .area_weighted_normal_sums(self.triangles.len())
+            .into_iter()
+            .map(|s| s.try_normalize().unwrap_or(DVec3::Z).to_array())
+            .collect();
+    }
+
+    /// Per vertex, the sum of the (twice-)area-weighted normals of the first `triangles`
+    /// triangles that use it (zero for a vertex none uses).
+    fn area_weighted_normal_sums(&self, triangles: usize) -> Vec<DVec3> {
         let mut sums = vec![DVec3::ZERO; self.vertices.len()];
-        for t in 0..self.triangles.len() {
+        for t in 0..triangles {
             let [a, b, c] = self.triangle_corners(t);
             let twice_area_normal = (b - a).cross(c - a);
             for &i in &self.triangles[t] {
                 sums[i as usize] += twice_area_normal;
             }
         }
-        self.normals = sums
-            .into_iter()
-            .map(|s| s.try_normalize().unwrap_or(DVec3::Z).to_array())
-            .collect();
+        sums
     }
 
     /// Keeps the connected component (triangles linked through shared vertices) with the most

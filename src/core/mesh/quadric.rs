@@ -119,16 +119,17 @@ impl Quadric {
         angle_deg: f64,
     ) -> Option<(Quadric, f64)> {
         let min_cos = angle_deg.to_radians().cos();
+        let describes = |quadric: &Quadric, p: DVec3, n: DVec3| {
+            let (value, gradient) = quadric.value_and_gradient(p);
+            value.abs() <= distance && gradient.normalize_or_zero().dot(n) >= min_cos
+        };
         let mut inliers: Vec<bool> = vec![true; points.len()];
         let mut quadric = Quadric::fit(points, normals)?;
         for _ in 1..ROBUST_ROUNDS {
             let next: Vec<bool> = points
                 .iter()
                 .zip(normals)
-                .map(|(&p, &n)| {
-                    let (value, gradient) = quadric.value_and_gradient(p);
-                    value.abs() <= distance && gradient.normalize_or_zero().dot(n) >= min_cos
-                })
+                .map(|(&p, &n)| describes(&quadric, p, n))
                 .collect();
             if next == inliers {
                 break;
@@ -146,10 +147,7 @@ impl Quadric {
         let described = points
             .iter()
             .zip(normals)
-            .filter(|(&p, &n)| {
-                let (value, gradient) = quadric.value_and_gradient(p);
-                value.abs() <= distance && gradient.normalize_or_zero().dot(n) >= min_cos
-            })
+            .filter(|(&p, &n)| describes(&quadric, p, n))
             .count();
         Some((quadric, described as f64 / points.len() as f64))
     }
@@ -243,21 +241,9 @@ fn solve(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::random_unit;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
-
-    fn random_unit(rng: &mut ChaCha8Rng) -> DVec3 {
-        loop {
-            let v = DVec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
-            if v.length_squared() > 0.01 && v.length_squared() < 1.0 {
-                return v.normalize();
-            }
-        }
-    }
 
     /// Points on a patch of a sphere (a quarter of it, around one pole): the fit is the sphere's
     /// signed distance to first order, everywhere near it and across the unseen rest.

@@ -8,6 +8,7 @@ use super::*;
 use crate::core::camera::stokes_frame;
 use crate::core::envmap::{CubeMap, MipChainSpec, PrefilterPlan, PreparedEnv};
 use crate::core::gradcheck::assert_gradient;
+use crate::testing::random_unit;
 
 fn tiny_plan(fresnel: bool) -> Arc<PrefilterPlan> {
     PrefilterPlan::new(MipChainSpec {
@@ -17,19 +18,6 @@ fn tiny_plan(fresnel: bool) -> Arc<PrefilterPlan> {
         ..MipChainSpec::default()
     })
     .unwrap()
-}
-
-fn random_unit(rng: &mut ChaCha8Rng) -> DVec3 {
-    loop {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        if (0.1..1.0).contains(&v.length()) {
-            return v.normalize();
-        }
-    }
 }
 
 fn random_cube(rng: &mut ChaCha8Rng) -> CubeMap {

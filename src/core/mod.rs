@@ -32,6 +32,7 @@ pub mod setting;
 pub mod shading;
 pub mod silhouette;
 pub mod simd;
+pub mod similarity;
 pub mod step;
 pub mod surfels;
 pub mod view_spread;

@@ -52,6 +52,18 @@ impl PoseCorrection {
         DVec3::from_array(self.rotation).length().to_degrees()
     }
 
+    /// The correction that moves `camera` to where `moved` is: `between(c, m).apply(c)` is `m`
+    /// (up to rounding) for cameras with the same intrinsics.
+    pub fn between(camera: &Camera, moved: &Camera) -> PoseCorrection {
+        let (r, t) = camera.world_to_camera_opencv();
+        let (r_moved, t_moved) = moved.world_to_camera_opencv();
+        let e = r_moved * r.transpose();
+        PoseCorrection {
+            rotation: DQuat::from_mat3(&e).to_scaled_axis().to_array(),
+            translation: (t_moved - e * t).to_array(),
+        }
+    }
+
     /// `camera` moved by this correction (intrinsics unchanged).
     pub fn apply(&self, camera: &Camera) -> Camera {
         if *self == PoseCorrection::IDENTITY {
@@ -128,6 +140,20 @@ mod tests {
         }
         let camera = random_camera(&mut rng);
         assert_eq!(PoseCorrection::IDENTITY.apply(&camera), camera);
+    }
+
+    #[test]
+    fn the_correction_between_two_cameras_moves_one_onto_the_other() {
+        let mut rng = ChaCha8Rng::seed_from_u64(2);
+        for _ in 0..10 {
+            let camera = random_camera(&mut rng);
+            let c = random_correction(&mut rng, 0.3);
+            let moved = c.apply(&camera);
+            let found = PoseCorrection::between(&camera, &moved);
+            for (a, b) in found.to_array().iter().zip(c.to_array()) {
+                assert!((a - b).abs() < 1e-10, "{found:?} against {c:?}");
+            }
+        }
     }
 
     #[test]

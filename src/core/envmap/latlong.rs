@@ -172,7 +172,13 @@ impl CubeMap {
     /// The map turned by `degrees` about the world's up axis (right-hand rule: a light at azimuth
     /// direction d moves to `R(degrees) · d`), resampled bilinearly at every texel.
     pub fn rotated_about_up(&self, degrees: f64, up: WorldUp) -> CubeMap {
-        let inverse = DQuat::from_axis_angle(up.axis(), -degrees.to_radians());
+        self.rotated(DQuat::from_axis_angle(up.axis(), degrees.to_radians()))
+    }
+
+    /// The map turned by `rotation` (a light from direction d comes from `rotation · d`),
+    /// resampled bilinearly at every texel.
+    pub fn rotated(&self, rotation: DQuat) -> CubeMap {
+        let inverse = rotation.inverse();
         let grid = CubeGrid::new(self.size);
         let radiance = self.radiance();
         let raw = grid

@@ -8,6 +8,7 @@ pub mod ply;
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
 use crate::core::filled::filled;
+use crate::core::similarity::Similarity;
 
 /// Offset of the IoR activation: η = `IOR_MIN` + sigmoid(raw), so η ∈ (1.3, 2.3).
 pub const IOR_MIN: f64 = 1.3;
@@ -180,6 +181,22 @@ impl Surfels {
         ]
     }
 
+    /// Moves every surfel with the scene by `motion`: centres carried, tangent frames turned,
+    /// extents scaled (the materials stay).
+    pub fn move_by(&mut self, motion: &Similarity) {
+        let log_scale = motion.scale.ln();
+        for p in &mut self.position {
+            *p = motion.apply(DVec3::from_array(*p)).to_array();
+        }
+        for s in &mut self.log_scale {
+            *s = s.map(|v| v + log_scale);
+        }
+        for q in &mut self.rotation {
+            let turned = motion.rotation * DQuat::from_xyzw(q[1], q[2], q[3], q[0]);
+            *q = [turned.w, turned.x, turned.y, turned.z];
+        }
+    }
+
     /// True when every parameter is finite.
     pub fn is_finite(&self) -> bool {
         self.groups()
@@ -191,6 +208,37 @@ impl Surfels {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn moving_surfels_moves_their_activated_frames() {
+        let mut s = Surfels::default();
+        let q = DQuat::from_rotation_z(0.3) * DQuat::from_rotation_x(-1.1);
+        let before = Surfel {
+            position: DVec3::new(0.1, -0.2, 0.3),
+            scale: DVec2::new(0.02, 0.05),
+            rotation: DMat3::from_quat(q),
+            opacity: 0.7,
+            albedo: DVec3::new(0.5, 0.18, 0.08),
+            roughness: 0.1,
+            ior: 1.8,
+        };
+        s.push_activated(&before);
+        let motion = Similarity {
+            rotation: DQuat::from_axis_angle(DVec3::new(1.0, 2.0, -0.5).normalize(), 0.7),
+            scale: 1.3,
+            translation: DVec3::new(0.2, 0.0, -1.0),
+        };
+        s.move_by(&motion);
+        let after = s.get(0);
+        assert!(after
+            .position
+            .abs_diff_eq(motion.apply(before.position), 1e-12));
+        assert!(after.scale.abs_diff_eq(1.3 * before.scale, 1e-12));
+        let turned = DMat3::from_quat(motion.rotation) * before.rotation;
+        assert!(after.rotation.abs_diff_eq(turned, 1e-12));
+        assert!((after.opacity - before.opacity).abs() < 1e-12);
+        assert!(after.albedo.abs_diff_eq(before.albedo, 1e-12));
+    }
 
     #[test]
     fn activations_invert_the_initial_values() {

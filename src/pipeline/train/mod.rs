@@ -770,8 +770,9 @@ impl Run<'_> {
         session.engine.sync(&mut session.state)?;
         let env = PreparedEnv::new(&session.state.envmap, self.plan.clone())?;
         session.state.elapsed_seconds = session.elapsed();
-        let state = session.state;
+        let mut state = session.state;
         state.save(&session.checkpoint, &session.fingerprint)?;
+        self.register(&mut state);
         let last_stage = schedule.final_stage();
         let mut occlusion = Occlusion::default();
         if last_stage == Stage::Polar && self.config.gridmap {
@@ -783,6 +784,30 @@ impl Run<'_> {
             }
         }
         self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)
+    }
+
+    /// A refined run's surfels, light and cameras moved back into the capture's frame
+    /// ([`PoseRefinement::register`]); the checkpoint keeps the frame the run trained in.
+    fn register(&self, state: &mut TrainState) {
+        if state.refine_poses != Some(true) {
+            return;
+        }
+        let TrainState {
+            surfels,
+            envmap,
+            poses,
+            ..
+        } = state;
+        let radius = self.capture.object_bounds().radius;
+        if let Some(motion) = self.poses.register(radius, surfels, envmap, poses) {
+            let centre = self.poses.centre();
+            tracing::info!(
+                angle_deg = motion.angle_deg(),
+                scale = motion.scale,
+                shift_radius = (motion.apply(centre) - centre).length() / radius,
+                "refined run moved back into the capture's frame"
+            );
+        }
     }
 
     /// How the steps run, for the start event: the device engine trains on the capture's poses

@@ -1140,9 +1140,12 @@ impl Run<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::camera::Camera;
     use crate::core::config::{AutoSwitch, Iterations};
     use crate::core::pose::PoseCorrection;
+    use crate::core::similarity::Similarity;
     use crate::pipeline::synth::{synth, Shape, SynthOptions};
+    use glam::DVec3;
 
     #[test]
     fn a_checkpoint_matches_its_config_and_one_written_before_a_setting_existed() {
@@ -1367,12 +1370,29 @@ mod tests {
         assert_eq!(a.colours, b.colours);
         assert!(a.poses.iter().any(|p| *p != PoseCorrection::IDENTITY));
         assert!(a.colours.iter().any(|c| *c != [1.0; 3]));
-        // The model keeps its training cameras, refined, and renders with GridMap, as it was
-        // trained.
+        // The model keeps its training cameras, refined and moved with the surfels back into the
+        // capture's frame, and renders with GridMap, as it was trained.
         let model = Model::load(&whole).unwrap();
         assert_eq!(model.train_cameras.len(), capture.train_views().count());
-        let first = capture.train_views().next().unwrap();
-        assert_eq!(model.train_cameras[0].1, a.poses[0].apply(&first.camera));
+        let given: Vec<Camera> = capture.train_views().map(|v| v.camera).collect();
+        let refined: Vec<Camera> = given
+            .iter()
+            .zip(&a.poses)
+            .map(|(c, p)| p.apply(c))
+            .collect();
+        let bounds = capture.object_bounds();
+        let motion =
+            Similarity::between_cameras(&refined, &given, bounds.center, bounds.radius).unwrap();
+        assert!(motion != Similarity::IDENTITY);
+        for ((_, saved), camera) in model.train_cameras.iter().zip(&refined) {
+            assert!(saved.c2w.abs_diff_eq(motion.camera(camera).c2w, 1e-9));
+        }
+        let mut moved = a.surfels.clone();
+        moved.move_by(&motion);
+        for (saved, expected) in model.surfels.position.iter().zip(&moved.position) {
+            let gap = DVec3::from_array(*saved).distance(DVec3::from_array(*expected));
+            assert!(gap < 1e-5, "{saved:?} against {expected:?}");
+        }
         let reconstruction = crate::pipeline::reconstruction::Reconstruction::new(model).unwrap();
         assert!(reconstruction.gridmap().is_some());
     }

@@ -40,6 +40,7 @@ fn faint_model(require_mesh: bool) -> Model {
             working_resolution: None,
             refined_poses: None,
             silhouette_offset_px: None,
+            frame_registration: None,
         },
         config: TrainConfig {
             iterations: 20.into(),

@@ -53,6 +53,7 @@ fn sphere_model() -> Model {
             working_resolution: None,
             refined_poses: None,
             silhouette_offset_px: None,
+            frame_registration: None,
         },
         config: TrainConfig {
             iterations: 100.into(),

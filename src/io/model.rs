@@ -81,6 +81,21 @@ pub struct ModelInfo {
     /// (`pipeline::train::estimated_poses`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub silhouette_offset_px: Option<f64>,
+    /// How a refined run was moved back into the capture's frame at its end
+    /// (`PoseRefinement::register`); absent where the poses were not refined.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub frame_registration: Option<FrameRegistration>,
+}
+
+/// The similarity a refined run was moved by to put it back in the capture's frame.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FrameRegistration {
+    /// Its rotation's angle, degrees.
+    pub angle_deg: f64,
+    /// Its scale.
+    pub scale: f64,
+    /// How far it moved the object's centre, as a fraction of the object's radius.
+    pub shift_radius: f64,
 }
 
 /// The size of the views a model was trained on.

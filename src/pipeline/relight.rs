@@ -133,6 +133,7 @@ mod tests {
                 working_resolution: None,
                 refined_poses: None,
                 silhouette_offset_px: None,
+                frame_registration: None,
             },
             config,
             surfels,

@@ -12,6 +12,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use phygap::core::config::TrainConfig;
 use phygap::core::events::TrainEvent;
 use phygap::io::capture::CaptureLimits;
+use phygap::io::model::ModelInfo;
 use phygap::pipeline::scorecard::GroundTruth;
 use phygap::pipeline::train::{self, TrainOutcome};
 
@@ -80,6 +81,19 @@ pub fn run(args: &TrainArgs, matches: &clap::ArgMatches) -> Result<()> {
     match outcome {
         TrainOutcome::Finished => {
             println!("model written to {}", args.out.display());
+            let info = std::fs::read_to_string(args.out.join("model.json")).ok();
+            if let Some(r) = info
+                .and_then(|json| serde_json::from_str::<ModelInfo>(&json).ok())
+                .and_then(|info| info.frame_registration)
+            {
+                println!(
+                    "refined poses: cameras and surfels moved back into the capture's frame \
+                     (turned {:.3}°, scaled by {:.4}, shifted {:.2} % of the object's radius)",
+                    r.angle_deg,
+                    r.scale,
+                    100.0 * r.shift_radius
+                );
+            }
             if let Ok(metrics) = std::fs::read_to_string(args.out.join("metrics.json")) {
                 println!("test metrics: {metrics}");
             }

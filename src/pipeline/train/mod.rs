@@ -772,7 +772,7 @@ impl Run<'_> {
         session.state.elapsed_seconds = session.elapsed();
         let mut state = session.state;
         state.save(&session.checkpoint, &session.fingerprint)?;
-        self.register(&mut state);
+        let registration = self.register(&mut state);
         let last_stage = schedule.final_stage();
         let mut occlusion = Occlusion::default();
         if last_stage == Stage::Polar && self.config.gridmap {
@@ -783,14 +783,19 @@ impl Run<'_> {
                 });
             }
         }
-        self.finish(&state, self.light(&occlusion, &env, last_stage), reporter)
+        self.finish(
+            &state,
+            registration,
+            self.light(&occlusion, &env, last_stage),
+            reporter,
+        )
     }
 
     /// A refined run's surfels, light and cameras moved back into the capture's frame
     /// ([`PoseRefinement::register`]); the checkpoint keeps the frame the run trained in.
-    fn register(&self, state: &mut TrainState) {
+    fn register(&self, state: &mut TrainState) -> Option<model::FrameRegistration> {
         if state.refine_poses != Some(true) {
-            return;
+            return None;
         }
         let TrainState {
             surfels,
@@ -799,15 +804,18 @@ impl Run<'_> {
             ..
         } = state;
         let radius = self.capture.object_bounds().radius;
-        if let Some(motion) = self.poses.register(radius, surfels, envmap, poses) {
-            let centre = self.poses.centre();
-            tracing::info!(
-                angle_deg = motion.angle_deg(),
-                scale = motion.scale,
-                shift_radius = (motion.apply(centre) - centre).length() / radius,
-                "refined run moved back into the capture's frame"
-            );
-        }
+        let motion = self.poses.register(radius, surfels, envmap, poses)?;
+        let centre = self.poses.centre();
+        let registration = model::FrameRegistration {
+            angle_deg: motion.angle_deg(),
+            scale: motion.scale,
+            shift_radius: (motion.apply(centre) - centre).length() / radius,
+        };
+        tracing::info!(
+            ?registration,
+            "refined run moved back into the capture's frame"
+        );
+        Some(registration)
     }
 
     /// How the steps run, for the start event: the device engine trains on the capture's poses
@@ -1072,6 +1080,7 @@ impl Run<'_> {
     fn finish(
         &self,
         state: &TrainState,
+        frame_registration: Option<model::FrameRegistration>,
         light: &dyn LightProbe,
         reporter: &mut Reporter,
     ) -> Result<(), TrainError> {
@@ -1092,6 +1101,7 @@ impl Run<'_> {
                 working_resolution: Some(model::WorkingResolution::of(self.capture)),
                 refined_poses: state.refine_poses,
                 silhouette_offset_px: state.silhouette_offset_px,
+                frame_registration,
             },
             config: TrainConfig {
                 mode: self.mode,

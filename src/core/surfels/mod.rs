@@ -209,11 +209,10 @@ impl Surfels {
 mod tests {
     use super::*;
 
-    #[test]
-    fn moving_surfels_moves_their_activated_frames() {
-        let mut s = Surfels::default();
+    /// One surfel turned off the axes, with materials away from their activations' middles.
+    fn a_surfel() -> Surfel {
         let q = DQuat::from_rotation_z(0.3) * DQuat::from_rotation_x(-1.1);
-        let before = Surfel {
+        Surfel {
             position: DVec3::new(0.1, -0.2, 0.3),
             scale: DVec2::new(0.02, 0.05),
             rotation: DMat3::from_quat(q),
@@ -221,7 +220,13 @@ mod tests {
             albedo: DVec3::new(0.5, 0.18, 0.08),
             roughness: 0.1,
             ior: 1.8,
-        };
+        }
+    }
+
+    #[test]
+    fn moving_surfels_moves_their_activated_frames() {
+        let mut s = Surfels::default();
+        let before = a_surfel();
         s.push_activated(&before);
         let motion = Similarity {
             rotation: DQuat::from_axis_angle(DVec3::new(1.0, 2.0, -0.5).normalize(), 0.7),
@@ -244,15 +249,7 @@ mod tests {
     fn activations_invert_the_initial_values() {
         let mut s = Surfels::default();
         let q = DQuat::from_rotation_z(0.3) * DQuat::from_rotation_x(-1.1);
-        s.push_activated(&Surfel {
-            position: DVec3::new(0.1, -0.2, 0.3),
-            scale: DVec2::new(0.02, 0.05),
-            rotation: DMat3::from_quat(q),
-            opacity: 0.7,
-            albedo: DVec3::new(0.5, 0.18, 0.08),
-            roughness: 0.1,
-            ior: 1.8,
-        });
+        s.push_activated(&a_surfel());
         let a = s.get(0);
         assert!((a.scale - DVec2::new(0.02, 0.05)).abs().max_element() < 1e-12);
         assert!((a.opacity - 0.7).abs() < 1e-12);

@@ -186,12 +186,13 @@ fn dominant_eigenvector(mut m: [[f64; 4]; 4]) -> [f64; 4] {
     for (i, row) in v.iter_mut().enumerate() {
         row[i] = 1.0;
     }
+    let norm: f64 = m.iter().flatten().map(|x| x * x).sum();
     for _sweep in 0..50 {
         let off: f64 = (0..4)
             .flat_map(|i| (0..4).filter(move |&j| j != i).map(move |j| (i, j)))
             .map(|(i, j)| m[i][j] * m[i][j])
             .sum();
-        if off < 1e-30 {
+        if off <= 1e-30 * norm {
             break;
         }
         for p in 0..3 {
@@ -260,6 +261,25 @@ mod tests {
             assert!(fit.rotation.dot(truth.rotation).abs() > 1.0 - 1e-12);
             assert!((fit.scale - truth.scale).abs() < 1e-10);
             assert!(fit.translation.abs_diff_eq(truth.translation, 1e-9));
+        }
+    }
+
+    #[test]
+    fn far_and_large_scenes_fit_as_well() {
+        let mut rng = ChaCha8Rng::seed_from_u64(13);
+        let truth = Similarity {
+            translation: DVec3::new(4000.0, -2500.0, 900.0),
+            ..random_similarity(&mut rng)
+        };
+        let a: Vec<DVec3> = (0..12)
+            .map(|_| DVec3::splat(1.0e4) + 300.0 * random_unit(&mut rng))
+            .collect();
+        let b: Vec<DVec3> = a.iter().map(|&p| truth.apply(p)).collect();
+        let fit = between_points(&a, &b).expect("a fit");
+        assert!(fit.rotation.angle_between(truth.rotation) < 1e-9);
+        assert!((fit.scale / truth.scale - 1.0).abs() < 1e-10);
+        for (p, q) in a.iter().zip(&b) {
+            assert!(fit.apply(*p).distance(*q) < 1e-6 * q.length());
         }
     }
 

@@ -135,6 +135,18 @@ impl Camera {
         -self.c2w.z_axis.truncate()
     }
 
+    /// This camera's intrinsics at another pose: its OpenCV axes (the columns of `axes`: right,
+    /// down, forward, in world coordinates) and its centre `origin`.
+    pub fn placed(&self, axes: DMat3, origin: DVec3) -> Camera {
+        let c2w = DMat4::from_cols(
+            axes.x_axis.extend(0.0),
+            axes.y_axis.extend(0.0),
+            axes.z_axis.extend(0.0),
+            origin.extend(1.0),
+        );
+        Camera::new(self.intrinsics(), c2w, CameraConvention::OpenCV)
+    }
+
     /// Rotation whose columns are the OpenCV camera axes (right, down, forward) in world coordinates.
     pub fn rotation_opencv(&self) -> DMat3 {
         let r = DMat3::from_mat4(self.c2w);

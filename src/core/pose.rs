@@ -10,10 +10,10 @@
 //! pixel rays also follow the camera, and are not differentiated (second order for corrections of
 //! a fraction of a degree).
 
-use glam::{DMat3, DMat4, DQuat, DVec3};
+use glam::{DMat3, DQuat, DVec3};
 use serde::{Deserialize, Serialize};
 
-use crate::core::camera::{Camera, CameraConvention};
+use crate::core::camera::Camera;
 
 /// A rigid correction of a camera: rotation vector `ω` (radians) and translation `τ` (scene
 /// units), both in the camera's OpenCV axes (x right, y down, z forward).
@@ -75,14 +75,7 @@ impl PoseCorrection {
         let t_new = e * t + DVec3::from_array(self.translation);
         // Camera-to-world in OpenCV axes: rotation R'ᵀ, origin −R'ᵀ t'.
         let rt = r_new.transpose();
-        let origin = -(rt * t_new);
-        let c2w = DMat4::from_cols(
-            rt.x_axis.extend(0.0),
-            rt.y_axis.extend(0.0),
-            rt.z_axis.extend(0.0),
-            origin.extend(1.0),
-        );
-        Camera::new(camera.intrinsics(), c2w, CameraConvention::OpenCV)
+        camera.placed(rt, -(rt * t_new))
     }
 }
 

@@ -10,9 +10,9 @@
 //! eigenvector of a 4×4 symmetric matrix, by Jacobi rotations), with the scale taken from how
 //! far apart the cameras stand.
 
-use glam::{DMat3, DMat4, DQuat, DVec3};
+use glam::{DMat3, DQuat, DVec3};
 
-use crate::core::camera::{Camera, CameraConvention};
+use crate::core::camera::Camera;
 
 /// `x ↦ scale · rotation · x + translation`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -42,15 +42,8 @@ impl Similarity {
     /// `camera` moved with the scene: its centre goes where the point does, its axes turn by the
     /// rotation, and its intrinsics stay (the scale only changes every depth it sees).
     pub fn camera(&self, camera: &Camera) -> Camera {
-        let turn = DMat3::from_quat(self.rotation);
-        let axes = turn * camera.rotation_opencv();
-        let c2w = DMat4::from_cols(
-            axes.x_axis.extend(0.0),
-            axes.y_axis.extend(0.0),
-            axes.z_axis.extend(0.0),
-            self.apply(camera.origin()).extend(1.0),
-        );
-        Camera::new(camera.intrinsics(), c2w, CameraConvention::OpenCV)
+        let axes = DMat3::from_quat(self.rotation) * camera.rotation_opencv();
+        camera.placed(axes, self.apply(camera.origin()))
     }
 
     /// The similarity that carries the frame of the cameras `from` into the frame of the cameras

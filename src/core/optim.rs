@@ -25,6 +25,9 @@ use crate::core::surfels::Surfels;
 pub const ENVMAP_GROUP: &str = "envmap";
 /// Name of the optimizer group of the learned polarizer angles.
 pub const POLARIZER_GROUP: &str = "polarizer";
+/// Name of the optimizer group of the index of refraction the surfels share, or of its common
+/// part ([`crate::core::config::IorModel`]).
+pub const SHARED_IOR_GROUP: &str = "ior_shared";
 
 /// Groups shorter than this are updated on the calling thread.
 const PARALLEL_MIN_LEN: usize = 1 << 14;
@@ -227,6 +230,63 @@ impl Adam {
         Ok(())
     }
 
+    /// One Adam step on a single value that every entry of `params` holds (a tied parameter):
+    /// its gradient is the sum of the entries' `grads` (each entry is the value), its moments live
+    /// in `group` (one entry), and every entry is set to the stepped value. Entries that disagree
+    /// (a model written with one value per entry) start from their mean.
+    pub fn step_tied(
+        &mut self,
+        group: &str,
+        params: &mut [f64],
+        grads: &[f64],
+        lr: f64,
+    ) -> Result<(), OptimError> {
+        if grads.len() != params.len() {
+            return Err(OptimError::LengthMismatch {
+                group: group.to_owned(),
+                what: "gradient",
+                expected: params.len(),
+                got: grads.len(),
+            });
+        }
+        if params.is_empty() {
+            return Ok(());
+        }
+        let first = params[0];
+        let mut value = if params.iter().all(|&p| p == first) {
+            [first]
+        } else {
+            [params.iter().sum::<f64>() / params.len() as f64]
+        };
+        self.step(group, &mut value, &[grads.iter().sum()], lr)?;
+        params.fill(value[0]);
+        Ok(())
+    }
+
+    /// One Adam step on an offset every entry of `params` carries (the entries' common part):
+    /// its gradient is the sum of the entries' `grads`, its moments live in `group` (one entry),
+    /// and every entry moves by the offset's step, keeping its own difference from the others.
+    pub fn step_common_offset(
+        &mut self,
+        group: &str,
+        params: &mut [f64],
+        grads: &[f64],
+        lr: f64,
+    ) -> Result<(), OptimError> {
+        if grads.len() != params.len() {
+            return Err(OptimError::LengthMismatch {
+                group: group.to_owned(),
+                what: "gradient",
+                expected: params.len(),
+                got: grads.len(),
+            });
+        }
+        let mut offset = [0.0];
+        self.step(group, &mut offset, &[grads.iter().sum()], lr)?;
+        params.iter_mut().for_each(|p| *p += offset[0]);
+        Ok(())
+    }
+
     /// Keeps the entries of `group` whose flag is true, in order (as `Surfels::retain`). A group
     /// without state is left alone.
     pub fn retain(&mut self, group: &str, keep: &[bool]) -> Result<(), OptimError> {
@@ -409,6 +469,64 @@ mod tests {
     use super::*;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
+
+    #[test]
+    fn a_tied_step_is_a_step_of_the_one_value_with_the_summed_gradient() {
+        let config = AdamConfig::default();
+        let (mut tied, mut single) = (Adam::new(config), Adam::new(config));
+        let mut params = vec![0.25; 5];
+        let mut value = [0.25];
+        let mut rng = ChaCha8Rng::seed_from_u64(4);
+        for _ in 0..20 {
+            let grads: Vec<f64> = (0..5).map(|_| rng.random_range(-1.0..1.5)).collect();
+            tied.step_tied("tied", &mut params, &grads, 0.01).unwrap();
+            single
+                .step("tied", &mut value, &[grads.iter().sum()], 0.01)
+                .unwrap();
+            assert!(
+                params.iter().all(|&p| p == value[0]),
+                "{params:?} {value:?}"
+            );
+        }
+        assert!(
+            (value[0] - 0.25).abs() > 0.05,
+            "the value moved: {}",
+            value[0]
+        );
+        // Entries that disagree start from their mean.
+        let mut spread = vec![0.0, 1.0];
+        Adam::new(config)
+            .step_tied("spread", &mut spread, &[0.0, 0.0], 0.01)
+            .unwrap();
+        assert_eq!(spread, vec![0.5, 0.5]);
+        assert!(tied.step_tied("tied", &mut params, &[1.0], 0.01).is_err());
+    }
+
+    #[test]
+    fn a_common_offset_step_moves_every_entry_by_the_step_of_the_summed_gradient() {
+        let config = AdamConfig::default();
+        let (mut offset, mut single) = (Adam::new(config), Adam::new(config));
+        let start = vec![0.1, -0.4, 0.9];
+        let mut params = start.clone();
+        let mut value = [0.0];
+        let mut rng = ChaCha8Rng::seed_from_u64(5);
+        for _ in 0..20 {
+            let grads: Vec<f64> = (0..3).map(|_| rng.random_range(-1.0..1.5)).collect();
+            offset
+                .step_common_offset("offset", &mut params, &grads, 0.01)
+                .unwrap();
+            single
+                .step("offset", &mut value, &[grads.iter().sum()], 0.01)
+                .unwrap();
+        }
+        assert!(value[0].abs() > 0.05, "the offset moved: {}", value[0]);
+        for (p, s) in params.iter().zip(&start) {
+            assert!((p - s - value[0]).abs() < 1e-12, "{p} = {s} + {}", value[0]);
+        }
+        assert!(offset
+            .step_common_offset("offset", &mut params, &[1.0], 0.01)
+            .is_err());
+    }
 
     #[test]
     fn converges_on_a_quadratic() {

@@ -18,11 +18,12 @@ use super::{colour, Run, TrainError};
 use crate::core::step::StepPlan;
 use std::sync::Arc;
 
+use crate::core::config::IorModel;
 use crate::core::envmap::{CubeMap, EnvGrad, PrefilterPlan, PreparedEnv};
 use crate::core::events::Stage;
 use crate::core::gridmap::GridMap;
 use crate::core::light::LightProbe;
-use crate::core::optim::AdamConfig;
+use crate::core::optim::{AdamConfig, SHARED_IOR_GROUP};
 use crate::gpu::{DeviceStep, DeviceTrainer, GpuError};
 
 /// The light's gradient waiting for the next environment update.
@@ -214,8 +215,18 @@ impl<'r> StepEngine<'r> {
                 for (((name, params), (_, grad)), lr) in
                     state.surfels.groups_mut().into_iter().zip(grads).zip(rates)
                 {
-                    if let Some(lr) = lr {
-                        state.adam.step(name, params, grad, lr)?;
+                    let Some(lr) = lr else { continue };
+                    match (name, run.config.ior_model) {
+                        ("ior", IorModel::Shared) => {
+                            state.adam.step_tied(SHARED_IOR_GROUP, params, grad, lr)?
+                        }
+                        ("ior", IorModel::Anchored) => {
+                            state.adam.step(name, params, grad, lr)?;
+                            state
+                                .adam
+                                .step_common_offset(SHARED_IOR_GROUP, params, grad, lr)?
+                        }
+                        _ => state.adam.step(name, params, grad, lr)?,
                     }
                 }
                 let shaded = result.env.is_some();

@@ -44,7 +44,7 @@ use rand_chacha::ChaCha8Rng;
 use thiserror::Error;
 
 use crate::core::brdf_lut::BrdfLut;
-use crate::core::config::{ConfigError, Mode, TrainConfig};
+use crate::core::config::{ConfigError, IorModel, Mode, TrainConfig};
 use crate::core::densify::{self, DensifyRules, DensifyStats};
 use crate::core::envmap::{EnvMapError, PrefilterPlan, PreparedEnv, WorldUp};
 use crate::core::events::{Stage, TrainEvent};
@@ -196,7 +196,9 @@ fn fingerprint(config: &TrainConfig) -> String {
 /// Whether a checkpoint's fingerprint was written with `config`: read back as a config, so
 /// that a checkpoint written before a setting existed matches a config holding that setting's
 /// default (the setting behaves as it did then, except `prune_hidden`, on by default since it
-/// was added: a run checkpointed before it prunes at the resets still ahead of it).
+/// was added: a run checkpointed before it prunes at the resets still ahead of it; and
+/// `ior_model`, `anchored` since it was added: such a run learns its surfels' common IoR from
+/// then on).
 fn same_config(saved: &str, config: &TrainConfig) -> bool {
     match serde_json::from_str::<TrainConfig>(saved) {
         Ok(saved) => saved == *config,
@@ -819,15 +821,20 @@ impl Run<'_> {
     }
 
     /// How the steps run, for the start event: the device engine trains on the capture's poses
-    /// and colours (pose and colour refinement are host steps).
+    /// and colours (pose and colour refinement are host steps) and learns the IoR per surfel.
     fn describe(&self, engine: &StepEngine) -> String {
-        let refines = self.poses.enabled() || self.config.colour_refinement;
-        match engine {
-            StepEngine::Device(_) if refines => {
-                format!("the capture's poses and colours; {}", engine.describe())
-            }
-            _ => engine.describe().to_owned(),
+        let StepEngine::Device(_) = engine else {
+            return engine.describe().to_owned();
+        };
+        let mut differences = Vec::new();
+        if self.poses.enabled() || self.config.colour_refinement {
+            differences.push("the capture's poses and colours");
         }
+        if self.config.ior_model != IorModel::PerSurfel {
+            differences.push("an IoR per surfel");
+        }
+        differences.push(engine.describe());
+        differences.join("; ")
     }
 
     /// Whether the step of iteration `it` updates its view's colour ([`colour`]).
@@ -1152,6 +1159,7 @@ mod tests {
     use super::*;
     use crate::core::camera::Camera;
     use crate::core::config::{AutoSwitch, Iterations};
+    use crate::core::optim::SHARED_IOR_GROUP;
     use crate::core::pose::PoseCorrection;
     use crate::core::similarity::Similarity;
     use crate::pipeline::synth::{synth, Shape, SynthOptions};
@@ -1205,6 +1213,43 @@ mod tests {
             ..TrainConfig::default()
         };
         (crate::io::capture::load(&capture_dir).unwrap(), config)
+    }
+
+    #[test]
+    fn a_shared_ior_is_one_learned_value_and_the_other_models_keep_one_per_surfel() {
+        let dir = tempfile::tempdir().unwrap();
+        let (capture, config) = torus_run(dir.path());
+        let never = AtomicBool::new(false);
+        let run = |ior_model: IorModel| {
+            let out = dir.path().join(format!("{ior_model:?}"));
+            let config = TrainConfig {
+                ior_model,
+                checkpoint_interval: 0,
+                ..config.clone()
+            };
+            train(&capture, &out, &config, false, &never, &mut |_| {}).unwrap();
+            let state = TrainState::load(&out.join(CHECKPOINT_FILE)).unwrap().0;
+            let iors: Vec<f64> = (0..state.surfels.len())
+                .map(|i| state.surfels.get(i).ior)
+                .collect();
+            let common_steps = state.adam.group(SHARED_IOR_GROUP).map(|g| g.step);
+            (iors, common_steps)
+        };
+        let moved = |iors: &[f64]| {
+            iors.iter()
+                .fold(0.0f64, |m, &eta| m.max((eta - init::INITIAL_IOR).abs()))
+        };
+        let (shared, shared_steps) = run(IorModel::Shared);
+        assert!(shared.iter().all(|&eta| eta == shared[0]), "one value");
+        assert!(moved(&shared) > 1e-3, "learned: {}", shared[0]);
+        assert!(shared_steps > Some(0));
+        for model in [IorModel::PerSurfel, IorModel::Anchored] {
+            let (iors, common_steps) = run(model);
+            assert!(iors.iter().any(|&eta| eta != iors[0]), "{model:?}");
+            assert!(moved(&iors) > 1e-3, "{model:?}");
+            let anchored = model == IorModel::Anchored;
+            assert_eq!(common_steps.is_some(), anchored, "{model:?}");
+        }
     }
 
     /// Events of a 200-step torus run whose opacity reset (after 110 steps) falls on a remesh

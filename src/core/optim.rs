@@ -241,26 +241,13 @@ impl Adam {
         grads: &[f64],
         lr: f64,
     ) -> Result<(), OptimError> {
-        if grads.len() != params.len() {
-            return Err(OptimError::LengthMismatch {
-                group: group.to_owned(),
-                what: "gradient",
-                expected: params.len(),
-                got: grads.len(),
-            });
+        if let Some(&first) = params.first() {
+            if params.iter().any(|&p| p != first) {
+                let mean = params.iter().sum::<f64>() / params.len() as f64;
+                params.fill(mean);
+            }
         }
-        if params.is_empty() {
-            return Ok(());
-        }
-        let first = params[0];
-        let mut value = if params.iter().all(|&p| p == first) {
-            [first]
-        } else {
-            [params.iter().sum::<f64>() / params.len() as f64]
-        };
-        self.step(group, &mut value, &[grads.iter().sum()], lr)?;
-        params.fill(value[0]);
-        Ok(())
+        self.step_common_offset(group, params, grads, lr)
     }
 
     /// One Adam step on an offset every entry of `params` carries (the entries' common part):

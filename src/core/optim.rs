@@ -184,9 +184,7 @@ impl Adam {
             expected,
             got,
         };
-        if grads.len() != params.len() {
-            return Err(mismatch("gradient", params.len(), grads.len()));
-        }
+        check_gradient_length(group, params, grads)?;
         if !self.groups.contains_key(group) {
             let width = surfel_group_widths()
                 .into_iter()
@@ -260,14 +258,7 @@ impl Adam {
         grads: &[f64],
         lr: f64,
     ) -> Result<(), OptimError> {
-        if grads.len() != params.len() {
-            return Err(OptimError::LengthMismatch {
-                group: group.to_owned(),
-                what: "gradient",
-                expected: params.len(),
-                got: grads.len(),
-            });
-        }
+        check_gradient_length(group, params, grads)?;
         let mut offset = [0.0];
         self.step(group, &mut offset, &[grads.iter().sum()], lr)?;
         params.iter_mut().for_each(|p| *p += offset[0]);
@@ -369,6 +360,19 @@ impl Adam {
             .iter()
             .try_for_each(|(name, _)| self.extend_from_indices(name, indices))
     }
+}
+
+/// An error naming `group` unless `grads` holds one value per parameter of `params`.
+fn check_gradient_length(group: &str, params: &[f64], grads: &[f64]) -> Result<(), OptimError> {
+    if grads.len() == params.len() {
+        return Ok(());
+    }
+    Err(OptimError::LengthMismatch {
+        group: group.to_owned(),
+        what: "gradient",
+        expected: params.len(),
+        got: grads.len(),
+    })
 }
 
 /// Log-linear decay from `init` at step 0 to `final_` at step `steps` (held after), as 3DGS's

@@ -109,6 +109,10 @@ pub fn run(args: &CheckShadingArgs) -> Result<()> {
             check.aolp_agreement
         );
         println!("DoLP MAE        {:.4}", check.dolp_mae);
+        println!(
+            "best fit        {:.3} × specular + {:.3} × diffuse (least squares over S0, S1, S2)",
+            check.part_scales.specular, check.part_scales.diffuse
+        );
     }
     Ok(())
 }

@@ -58,6 +58,63 @@ pub struct ShadingCheck {
     pub aolp_agreement: f64,
     /// Mean |DoLP̂ − DoLP| over the mask.
     pub dolp_mae: f64,
+    /// The factors (specular, diffuse) by which the model's two parts best fit the captured
+    /// Stokes vectors (least squares over S0, S1 and S2 of every masked pixel and channel): 1
+    /// where a part is as bright as the renderer's, above 1 where the model's is too dim.
+    pub part_scales: PartScales,
+}
+
+/// Least-squares factors of the specular and the diffuse Stokes parts against the captured ones.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct PartScales {
+    pub specular: f64,
+    pub diffuse: f64,
+}
+
+/// Sums of the 2×2 normal equations of `captured ≈ a·specular + b·diffuse`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct PartFit {
+    ss: f64,
+    sd: f64,
+    dd: f64,
+    sg: f64,
+    dg: f64,
+}
+
+impl PartFit {
+    fn of(specular: [DVec3; 3], diffuse: [DVec3; 3], captured: [DVec3; 3]) -> PartFit {
+        let mut f = PartFit::default();
+        for k in 0..3 {
+            f.ss += specular[k].dot(specular[k]);
+            f.sd += specular[k].dot(diffuse[k]);
+            f.dd += diffuse[k].dot(diffuse[k]);
+            f.sg += specular[k].dot(captured[k]);
+            f.dg += diffuse[k].dot(captured[k]);
+        }
+        f
+    }
+
+    fn add(self, o: PartFit) -> PartFit {
+        PartFit {
+            ss: self.ss + o.ss,
+            sd: self.sd + o.sd,
+            dd: self.dd + o.dd,
+            sg: self.sg + o.sg,
+            dg: self.dg + o.dg,
+        }
+    }
+
+    /// The solution of the normal equations (zeros where they are singular).
+    fn solve(&self) -> PartScales {
+        let det = self.ss * self.dd - self.sd * self.sd;
+        if det.abs() <= 1e-12 * (self.ss * self.dd).max(1e-300) {
+            return PartScales::default();
+        }
+        PartScales {
+            specular: (self.sg * self.dd - self.dg * self.sd) / det,
+            diffuse: (self.dg * self.ss - self.sg * self.sd) / det,
+        }
+    }
 }
 
 fn rgb(img: &Image, p: usize) -> DVec3 {
@@ -113,6 +170,7 @@ struct Sums {
     aolp_ok: usize,
     dolp_err: f64,
     gt_max: f64,
+    parts: PartFit,
 }
 
 impl Sums {
@@ -129,6 +187,7 @@ impl Sums {
         self.aolp_ok += o.aolp_ok;
         self.dolp_err += o.dolp_err;
         self.gt_max = self.gt_max.max(o.gt_max);
+        self.parts = self.parts.add(o.parts);
         self
     }
 }
@@ -180,6 +239,14 @@ pub fn physics_check(
                 ior: view.ior.data[p * view.ior.channels] as f64,
             };
             let s = shade(&input, light, lut);
+            let specular = shade(
+                &PixelInput {
+                    albedo: DVec3::ZERO,
+                    ..input
+                },
+                light,
+                lut,
+            );
             let (g0, g1, g2) = (rgb(view.s0, p), rgb(view.s1, p), rgb(view.s2, p));
             let e0 = s.s0 - g0;
             let grey = |v: DVec3| v.x + v.y + v.z;
@@ -202,6 +269,11 @@ pub fn physics_check(
                 aolp_ok: agree as usize,
                 dolp_err: (pred_dolp - gt_dolp).abs(),
                 gt_max: g0.max_element(),
+                parts: PartFit::of(
+                    [specular.s0, specular.s1, specular.s2],
+                    [s.s0 - specular.s0, s.s1 - specular.s1, s.s2 - specular.s2],
+                    [g0, g1, g2],
+                ),
             }
         })
         .reduce(Sums::default, Sums::add);
@@ -219,5 +291,44 @@ pub fn physics_check(
         s2_rel_l1: sums.s2_err / sums.s2_abs.max(1e-30),
         aolp_agreement: sums.aolp_ok as f64 / sums.polarized.max(1) as f64,
         dolp_mae: sums.dolp_err / n,
+        part_scales: sums.parts.solve(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    use super::*;
+
+    fn random_stokes(rng: &mut ChaCha8Rng) -> [DVec3; 3] {
+        std::array::from_fn(|_| {
+            DVec3::from_array(std::array::from_fn(|_| rng.random_range(-1.0..1.0)))
+        })
+    }
+
+    #[test]
+    fn the_part_fit_recovers_the_scales_that_made_the_capture() {
+        let mut rng = ChaCha8Rng::seed_from_u64(5);
+        let fit = (0..50)
+            .map(|_| {
+                let (specular, diffuse) = (random_stokes(&mut rng), random_stokes(&mut rng));
+                let captured = std::array::from_fn(|k| 1.8 * specular[k] + 0.6 * diffuse[k]);
+                PartFit::of(specular, diffuse, captured)
+            })
+            .fold(PartFit::default(), PartFit::add);
+        let scales = fit.solve();
+        assert!((scales.specular - 1.8).abs() < 1e-9, "{scales:?}");
+        assert!((scales.diffuse - 0.6).abs() < 1e-9, "{scales:?}");
+    }
+
+    #[test]
+    fn parts_that_cannot_be_told_apart_give_no_scales() {
+        let mut rng = ChaCha8Rng::seed_from_u64(6);
+        let part = random_stokes(&mut rng);
+        let doubled = part.map(|v| 2.0 * v);
+        let fit = PartFit::of(part, doubled, part);
+        assert_eq!(fit.solve(), PartScales::default());
+    }
 }

@@ -231,7 +231,8 @@ impl Adam {
     /// One Adam step on a single value that every entry of `params` holds (a tied parameter):
     /// its gradient is the sum of the entries' `grads` (each entry is the value), its moments live
     /// in `group` (one entry), and every entry is set to the stepped value. Entries that disagree
-    /// (a model written with one value per entry) start from their mean.
+    /// (a model written with one value per entry) start from their mean. No entries hold no value
+    /// to learn: the group is left as it is.
     pub fn step_tied(
         &mut self,
         group: &str,
@@ -239,11 +240,12 @@ impl Adam {
         grads: &[f64],
         lr: f64,
     ) -> Result<(), OptimError> {
-        if let Some(&first) = params.first() {
-            if params.iter().any(|&p| p != first) {
-                let mean = params.iter().sum::<f64>() / params.len() as f64;
-                params.fill(mean);
-            }
+        let Some(&first) = params.first() else {
+            return check_gradient_length(group, params, grads);
+        };
+        if params.iter().any(|&p| p != first) {
+            let mean = params.iter().sum::<f64>() / params.len() as f64;
+            params.fill(mean);
         }
         self.step_common_offset(group, params, grads, lr)
     }
@@ -491,6 +493,11 @@ mod tests {
             .unwrap();
         assert_eq!(spread, vec![0.5, 0.5]);
         assert!(tied.step_tied("tied", &mut params, &[1.0], 0.01).is_err());
+        // No entries: nothing is stepped, and a gradient for them is still an error.
+        let mut none = Adam::new(config);
+        none.step_tied("empty", &mut [], &[], 0.01).unwrap();
+        assert!(none.group("empty").is_none());
+        assert!(none.step_tied("empty", &mut [], &[1.0], 0.01).is_err());
     }
 
     #[test]
